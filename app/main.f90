@@ -1,0 +1,4 @@
+program fricon
+    implicit none
+    print '(a)', 'fricon: under construction'
+end program fricon

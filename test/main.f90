@@ -1,0 +1,69 @@
+!> Single test driver: `fpm test [-- suite [test]]`. Ends with `N passed, N failed`;
+!! exits 1 if anything failed.
+program tester
+    use gsl_wrappers, only: gsl_start
+    use harness, only: unittest_t, run_suite
+    use test_shape_functions, only: collect_shape_functions
+    use test_gsl_wrappers, only: collect_gsl_wrappers
+    use test_halfspace_plate, only: collect_halfspace_plate
+    use test_halfspace_beam, only: collect_halfspace_beam
+    use test_structure, only: collect_structure
+    use test_deck_reader, only: collect_deck_reader
+    use test_contact_solver, only: collect_contact_solver
+    use test_report_writer, only: collect_report_writer
+    implicit none
+    type(unittest_t), allocatable :: tests(:)
+    character(len=64) :: want_suite, want_test
+    integer :: n_pass, n_fail
+
+    want_suite = ''
+    want_test = ''
+    if (command_argument_count() >= 1) call get_command_argument(1, want_suite)
+    if (command_argument_count() >= 2) call get_command_argument(2, want_test)
+    call gsl_start()
+    n_pass = 0
+    n_fail = 0
+
+    if (wanted('shape_functions')) then
+        call collect_shape_functions(tests)
+        call run_suite('shape_functions', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('gsl_wrappers')) then
+        call collect_gsl_wrappers(tests)
+        call run_suite('gsl_wrappers', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('halfspace_plate')) then
+        call collect_halfspace_plate(tests)
+        call run_suite('halfspace_plate', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('halfspace_beam')) then
+        call collect_halfspace_beam(tests)
+        call run_suite('halfspace_beam', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('structure')) then
+        call collect_structure(tests)
+        call run_suite('structure', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('deck_reader')) then
+        call collect_deck_reader(tests)
+        call run_suite('deck_reader', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('contact_solver')) then
+        call collect_contact_solver(tests)
+        call run_suite('contact_solver', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('report_writer')) then
+        call collect_report_writer(tests)
+        call run_suite('report_writer', tests, want_test, n_pass, n_fail)
+    end if
+
+    write (*, '(i0," passed, ",i0," failed")') n_pass, n_fail
+    if (n_fail > 0) stop 1
+
+contains
+
+    logical function wanted(suite)
+        character(len=*), intent(in) :: suite
+        wanted = len_trim(want_suite) == 0 .or. trim(want_suite) == suite
+    end function wanted
+end program tester
