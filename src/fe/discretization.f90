@@ -1,0 +1,79 @@
+!> The discrete unknowns of one case: the mesh, one basis per field, and where each field's
+!! coefficients sit in the global vector z = [v; r] = [u_s, w, psi, sigma_x, sigma_z].
+module discretization
+    use kinds, only: dp
+    use errors, only: error_t
+    use mesh, only: mesh_t, new_mesh
+    use shape_functions, only: basis_t, new_basis
+    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
+    implicit none
+    private
+
+    !> Mesh, bases and global numbering.
+    type, public :: discretization_t
+        type(mesh_t) :: msh
+        type(basis_t) :: basis(5)          !! per field FIELD_U .. FIELD_SZ
+        integer :: offset(5) = 0           !! global index of a field's coefficient 1 is offset+1
+        integer :: nv = 0                  !! displacement unknowns
+        integer :: nr = 0                  !! traction unknowns
+        integer :: n = 0                   !! nv + nr
+        integer, allocatable :: fixed(:)   !! constrained global unknowns (plate: u_s(0), psi(0))
+    end type discretization_t
+
+    public :: new_discretization, locate_element
+
+contains
+
+    !> Mesh and bases from the MESH card; plate symmetry u_s(0) = psi(0) = 0.
+    subroutine new_discretization(m, d, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(out) :: d
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: x_left, x_right
+        integer :: field
+
+        if (m%kind == MODEL_BEAM) then
+            x_left = -0.5_dp*m%length
+            x_right = 0.5_dp*m%length
+        else
+            x_left = 0.0_dp
+            x_right = m%length
+        end if
+        call new_mesh(d%msh, x_left, x_right, m%ne, m%grading, err)
+        if (allocated(err)) return
+        do field = FIELD_U, FIELD_SZ
+            call new_basis(d%basis(field), d%msh, m%interp(field))
+            if (field > FIELD_U) d%offset(field) = d%offset(field - 1) + d%basis(field - 1)%n_dof
+        end do
+        d%nv = d%offset(FIELD_SX)
+        d%n = d%offset(FIELD_SZ) + d%basis(FIELD_SZ)%n_dof
+        d%nr = d%n - d%nv
+        if (m%kind == MODEL_BEAM) then
+            allocate (d%fixed(0))
+        else
+            d%fixed = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1]
+        end if
+    end subroutine new_discretization
+
+    !> Element containing x and the local coordinate there (x clipped to the mesh).
+    pure subroutine locate_element(msh, x, e, xi)
+        type(mesh_t), intent(in) :: msh
+        real(dp), intent(in) :: x
+        integer, intent(out) :: e
+        real(dp), intent(out) :: xi
+        integer :: lo, hi, mid
+        lo = 1
+        hi = msh%ne
+        bisection: do while (lo < hi)
+            mid = (lo + hi)/2
+            if (x > msh%x(mid)) then
+                lo = mid + 1
+            else
+                hi = mid
+            end if
+        end do bisection
+        e = lo
+        xi = 2.0_dp*(x - msh%x(e - 1))/(msh%x(e) - msh%x(e - 1)) - 1.0_dp
+        xi = max(-1.0_dp, min(1.0_dp, xi))
+    end subroutine locate_element
+end module discretization

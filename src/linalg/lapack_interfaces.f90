@@ -1,0 +1,46 @@
+!> Explicit interfaces to the LAPACK routines fricon calls (the only place with assumed size).
+module lapack_interfaces
+    use kinds, only: dp
+    implicit none
+    private
+    public :: dsytrf, dsytrs, dpotrf, dlansy
+
+    interface
+        subroutine dsytrf(uplo, n, a, lda, ipiv, work, lwork, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, lda, lwork
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: ipiv(*)
+            real(dp), intent(inout) :: work(*)
+            integer, intent(out) :: info
+        end subroutine dsytrf
+
+        subroutine dsytrs(uplo, n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(in) :: a(lda, *)
+            integer, intent(in) :: ipiv(*)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine dsytrs
+
+        subroutine dpotrf(uplo, n, a, lda, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, lda
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: info
+        end subroutine dpotrf
+
+        function dlansy(norm, uplo, n, a, lda, work)
+            import :: dp
+            character(len=1), intent(in) :: norm, uplo
+            integer, intent(in) :: n, lda
+            real(dp), intent(in) :: a(lda, *)
+            real(dp), intent(inout) :: work(*)
+            real(dp) :: dlansy
+        end function dlansy
+    end interface
+end module lapack_interfaces
