@@ -1,20 +1,19 @@
 #!/usr/bin/env bash
-# Idempotent set-up of everything fricon needs on a Debian 12 machine (as root):
-# gfortran, OpenBLAS (BLAS/LAPACK provider), LAPACK, GSL, gnuplot-nox, fpm.
+# Idempotent set-up of everything fricon needs on a Debian 12 machine (as root, or with sudo):
+# gfortran, OpenBLAS (the BLAS/LAPACK provider), LAPACK, GSL, gnuplot-nox, and fpm from PyPI.
 set -euo pipefail
-
-need_apt=0
-for cmd in gfortran gnuplot gsl-config; do
-  command -v "$cmd" >/dev/null 2>&1 || need_apt=1
-done
-for lib in libopenblas.so liblapack.so; do
-  ldconfig -p 2>/dev/null | grep -q "$lib" || need_apt=1
-done
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
-if [ "$need_apt" -eq 1 ]; then
+missing=0
+for cmd in gfortran gnuplot gsl-config; do
+  command -v "$cmd" >/dev/null 2>&1 || missing=1
+done
+for pkg in libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox gfortran; do
+  dpkg -s "$pkg" >/dev/null 2>&1 || missing=1
+done
+if [ "$missing" -eq 1 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends \
@@ -22,8 +21,13 @@ if [ "$need_apt" -eq 1 ]; then
 fi
 
 if ! command -v fpm >/dev/null 2>&1; then
-  python3 -m pip install --quiet --disable-pip-version-check fpm
+  # Debian's own python3 refuses system-wide pip installs (PEP 668) unless told otherwise.
+  python3 -m pip install --quiet --disable-pip-version-check fpm 2>/dev/null \
+    || python3 -m pip install --quiet --disable-pip-version-check --break-system-packages fpm
 fi
 hash -r
-command -v fpm >/dev/null 2>&1 || { echo "setup: fpm not on PATH after pip install" >&2; exit 1; }
-echo "setup: gfortran $(gfortran -dumpversion), fpm $(fpm --version 2>/dev/null | head -n1), gnuplot $(gnuplot --version)"
+if ! command -v fpm >/dev/null 2>&1; then
+  echo "setup: fpm was installed but is not on PATH (add $(python3 -m site --user-base)/bin)" >&2
+  exit 1
+fi
+echo "setup: gfortran $(gfortran -dumpversion), $(fpm --version 2>/dev/null | head -n1 | tr -s ' '), $(gnuplot --version)"

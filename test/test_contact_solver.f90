@@ -1,12 +1,278 @@
-!> Placeholder suite: replaced by the real tests of contact_solver.
+!> Contact solver against closed forms and physical laws (issue 2, part 4).
 module test_contact_solver
-    use harness, only: unittest_t
+    use kinds, only: dp, pi
+    use harness, only: unittest_t, new_unittest, error_t, check, check_close
+    use errors, only: EXIT_ANALYSIS
+    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
+                     complete_model, relative_stiffness
+    use discretization, only: discretization_t, new_discretization
+    use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF
+    use station_results, only: station_table_t, tabulate, contact_extent
     implicit none
     private
     public :: collect_contact_solver
+
 contains
+
     subroutine collect_contact_solver(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
-        allocate (tests(0))
+        tests = [new_unittest('rigid_punch_frictionless', test_rigid_punch), &
+                 new_unittest('equilibrium_beam_and_plate', test_equilibrium), &
+                 new_unittest('frictionless_has_no_shear', test_frictionless_shear), &
+                 new_unittest('bonded_punch_mossakovskii', test_bonded_punch), &
+                 new_unittest('bonded_equals_frictionless_nu_half', test_bonded_nu_half), &
+                 new_unittest('flexible_plate_lifts_off', test_lift_off), &
+                 new_unittest('friction_admissible_everywhere', test_admissibility), &
+                 new_unittest('table1_eps_trend', test_table1_trend), &
+                 new_unittest('beam_sliding_status_2', test_sliding), &
+                 new_unittest('uplift_status_2', test_uplift)]
     end subroutine collect_contact_solver
+
+    !> NONDIM plate (a = 1, F = 1): central point load, nu = 0.3.
+    function nondim_plate(rho, zeta, nu_f, f, ne) result(m)
+        real(dp), intent(in) :: rho, zeta, nu_f, f
+        integer, intent(in) :: ne
+        type(model_t) :: m
+        m%kind = MODEL_PLATE
+        m%nondim = .true.
+        m%rho_in = rho
+        m%zeta_in = zeta
+        m%nu = 0.3_dp
+        m%nu_f = nu_f
+        m%f = f
+        m%ne = ne
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+        call complete_model(m)
+    end function nondim_plate
+
+    !> NONDIM beam (l = 1, F = 1): central point load V = 1 with horizontal H.
+    function nondim_beam(rho, zeta, beta, f, h_load, ne) result(m)
+        real(dp), intent(in) :: rho, zeta, beta, f, h_load
+        integer, intent(in) :: ne
+        type(model_t) :: m
+        m%kind = MODEL_BEAM
+        m%nondim = .true.
+        m%rho_in = rho
+        m%zeta_in = zeta
+        m%beta_in = beta
+        m%nu = 0.3_dp
+        m%nu_f = 0.1_dp
+        m%f = f
+        m%ne = ne
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=h_load, x1=0.0_dp)]
+        call complete_model(m)
+    end function nondim_beam
+
+    subroutine run(m, sol, tab, err)
+        type(model_t), intent(in) :: m
+        type(solution_t), intent(out) :: sol
+        type(station_table_t), intent(out) :: tab
+        type(error_t), allocatable, intent(out) :: err
+        type(discretization_t) :: d
+        call new_discretization(m, d, err)
+        if (allocated(err)) return
+        call solve_contact(m, d, sol, err)
+        if (allocated(err)) return
+        call tabulate(m, d, sol, tab, err)
+    end subroutine run
+
+    !> Rigid frictionless punch (Boussinesq 1885; Johnson 1985 §3.8): w = F(1-nu_f^2)/(2 E_f a),
+    !! i.e. W(0) = rho/4, and Sigma_z = 1/(2 sqrt(1 - t^2)).
+    subroutine test_rigid_punch(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        integer :: i
+        real(dp) :: t
+        m = nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, 0.0_dp, 40)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check_close(err, tab%field(2, 1)*tab%scale(2), relative_stiffness(m)/4.0_dp, &
+                         1.0e-2_dp, 0.0_dp, 'rigid punch W(0)')
+        if (allocated(err)) return
+        do i = 1, tab%n
+            t = tab%x(i)*tab%scale_x
+            if (t > 0.7_dp) exit
+            call check_close(err, tab%field(5, i)*tab%scale(5), 0.5_dp/sqrt(1.0_dp - t*t), &
+                             3.0e-2_dp, 0.0_dp, 'rigid punch Sigma_z')
+            if (allocated(err)) return
+        end do
+    end subroutine test_rigid_punch
+
+    !> Total reaction = load (to 1e-8 of F) for a beam with H, a moment-producing offset and a
+    !! plate with a patch.
+    subroutine test_equilibrium(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        integer :: k
+        m = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.2_dp, 30)
+        m%loads(1)%x1 = 0.1_dp
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        do k = 1, 3
+            call check(err, abs(sol%reaction(k) - sol%applied(k)) <= 1.0e-8_dp, &
+                       'beam equilibrium component violated')
+            if (allocated(err)) return
+        end do
+        m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 30)
+        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.3_dp)]
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, abs(sol%reaction(1) - 1.0_dp) <= 1.0e-8_dp .and. &
+                   abs(sol%reaction(2)) <= 1.0e-8_dp, 'plate equilibrium violated')
+    end subroutine test_equilibrium
+
+    !> f = 0: the regularised law leaves |Sigma_x| of order eps_bar (Coulomb: exactly 0).
+    subroutine test_frictionless_shear(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        m = nondim_plate(0.05_dp, 0.1_dp, 0.1_dp, 0.0_dp, 30)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, maxval(abs(tab%field(4, :)))*tab%scale(4) <= 1.0e-4_dp, &
+                   'f = 0 but Sigma_x is not ~ 0')
+    end subroutine test_frictionless_shear
+
+    !> Bonded rigid punch (Mossakovskii 1954; Spence 1968): F/delta = 4 G_f a ln(3-4nu_f)/(1-2nu_f),
+    !! W(0) = rho/(4 c), c = (1-nu_f) ln(3-4nu_f)/(1-2nu_f) = 1.07495 for nu_f = 0.1.
+    subroutine test_bonded_punch(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        real(dp) :: c, w_bonded, w_free
+        m = nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, 1.0e3_dp, 40)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        w_bonded = tab%field(2, 1)*tab%scale(2)
+        c = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
+        call check_close(err, w_bonded, relative_stiffness(m)/(4.0_dp*c), 2.0e-2_dp, 0.0_dp, &
+                         'bonded punch W(0)')
+        if (allocated(err)) return
+        w_free = relative_stiffness(m)/4.0_dp
+        call check(err, w_bonded < w_free, 'bonded punch is not stiffer than the frictionless one')
+    end subroutine test_bonded_punch
+
+    !> nu_f = 0.5: no normal/tangential coupling, so a rigid bonded punch settles as a smooth one.
+    subroutine test_bonded_nu_half(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        real(dp) :: w_bonded, w_free
+        m = nondim_plate(1.0e4_dp, 0.1_dp, 0.5_dp, 1.0e3_dp, 30)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        w_bonded = tab%field(2, 1)*tab%scale(2)
+        m = nondim_plate(1.0e4_dp, 0.1_dp, 0.5_dp, 0.0_dp, 30)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        w_free = tab%field(2, 1)*tab%scale(2)
+        call check_close(err, w_bonded, w_free, 1.0e-3_dp, 0.0_dp, 'nu_f = 0.5 bonded vs smooth')
+    end subroutine test_bonded_nu_half
+
+    !> A flexible plate under a central load lifts off at the rim; a stiff one stays in contact.
+    !! Complementarity: sigma_z * gap ~ 0 (penalty, O(eta_bar)).
+    subroutine test_lift_off(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        m = nondim_plate(1.0e-3_dp, 0.05_dp, 0.1_dp, 0.5_dp, 40)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, contact_extent(tab) < 0.9_dp .and. tab%state(tab%n) == STATE_LIFTOFF, &
+                   'flexible plate did not lift off')
+        if (allocated(err)) return
+        call check(err, sol%complementarity <= 1.0e-6_dp, 'complementarity violated')
+        if (allocated(err)) return
+        call check(err, minval(tab%field(6, :)) >= -1.0e-6_dp*maxval(tab%field(2, :)), &
+                   'negative gap (interpenetration)')
+        if (allocated(err)) return
+        m = nondim_plate(10.0_dp, 0.1_dp, 0.1_dp, 0.5_dp, 40)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, all(tab%state(1:tab%n - 1) /= STATE_LIFTOFF), 'stiff plate lifted off')
+    end subroutine test_lift_off
+
+    !> |Sigma_x| <= f Sigma_z + O(eps_bar) at every Gauss point (SPEC §4).
+    subroutine test_admissibility(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        m = nondim_plate(0.01_dp, 0.2_dp, 0.1_dp, 0.2_dp, 30)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
+                   'plate: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
+        if (allocated(err)) return
+        m = nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
+                   'beam: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
+    end subroutine test_admissibility
+
+    !> Paper Table 1 trend: eps_bar = 1e-4 and 1e-7 agree to 1e-4 (relative), 1e-1 differs.
+    subroutine test_table1_trend(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: val(3, 3), eps(3)
+        integer :: k, mid
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        eps = [1.0e-1_dp, 1.0e-4_dp, 1.0e-7_dp]
+        do k = 1, 3
+            m = nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20)
+            m%eps_bar = eps(k)
+            call run(m, sol, tab, err)
+            if (allocated(err)) return
+            mid = (tab%n + 1)/2
+            val(:, k) = [tab%field(2, mid)*tab%scale(2), tab%field(4, mid)*tab%scale(4), &
+                         tab%field(5, mid)*tab%scale(5)]
+        end do
+        do k = 1, 3
+            call check_close(err, val(k, 2), val(k, 3), 1.0e-4_dp, 0.0_dp, 'eps 1e-4 vs 1e-7')
+            if (allocated(err)) return
+        end do
+        call check(err, abs(val(1, 1) - val(1, 3)) > 1.0e-4_dp*abs(val(1, 3)), &
+                   'eps 1e-1 should differ from 1e-7')
+    end subroutine test_table1_trend
+
+    !> H > f V: no equilibrium, status 2 with a sliding message.
+    subroutine test_sliding(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: run_err
+        m = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.3_dp, 0.31_dp, 20)
+        call run(m, sol, tab, run_err)
+        call check(err, allocated(run_err), 'H > f V was solved')
+        if (allocated(err)) return
+        call check(err, run_err%code == EXIT_ANALYSIS .and. &
+                   index(run_err%message, 'sliding') > 0, 'H > f V: expected status 2 and a sliding message')
+    end subroutine test_sliding
+
+    !> An upward net load has no equilibrium on a tensionless soil: status 2.
+    subroutine test_uplift(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: run_err
+        m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 10)
+        m%loads(1)%fz = -1.0_dp
+        call run(m, sol, tab, run_err)
+        call check(err, allocated(run_err), 'uplift was solved')
+        if (allocated(err)) return
+        call check(err, run_err%code == EXIT_ANALYSIS .and. &
+                   index(run_err%message, 'uplift') > 0, 'uplift: expected status 2')
+    end subroutine test_uplift
 end module test_contact_solver

@@ -1,12 +1,180 @@
-!> Placeholder suite: replaced by the real tests of report_writer.
+!> Reports and files: data columns read back numerically, nothing written on input errors,
+!! a failed analysis leaves only its report (under a banner), atomic writes leave no .tmp.
 module test_report_writer
-    use harness, only: unittest_t
+    use iso_fortran_env, only: output_unit, error_unit
+    use kinds, only: dp
+    use harness, only: unittest_t, new_unittest, error_t, check, check_close
+    use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
+    use deck_reader, only: deck_t, parse_deck
+    use analysis_driver, only: run_analysis
     implicit none
     private
     public :: collect_report_writer
+
+    character(len=*), parameter :: dir = 'build/test_output'
+
 contains
+
     subroutine collect_report_writer(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
-        allocate (tests(0))
+        tests = [new_unittest('data_file_columns_and_equilibrium', test_data_file), &
+                 new_unittest('input_error_writes_nothing', test_input_error), &
+                 new_unittest('failed_case_report_only', test_failed_case), &
+                 new_unittest('sweep_summary', test_sweep)]
     end subroutine collect_report_writer
+
+    function card(name, fields) result(line)
+        character(len=*), intent(in) :: name
+        character(len=*), intent(in) :: fields(:)
+        character(len=80) :: line
+        integer :: i
+        line = name
+        do i = 1, size(fields)
+            line(11 + 10*(i - 1):20 + 10*(i - 1)) = adjustr(fields(i)(1:min(10, len(fields(i)))))
+        end do
+    end function card
+
+    !> A NONDIM plate deck; `extra` cards inserted before END.
+    function plate_deck(load_fx, extra) result(lines)
+        character(len=*), intent(in) :: load_fx
+        character(len=80), intent(in) :: extra(:)
+        character(len=80), allocatable :: lines(:)
+        lines = [character(len=80) :: 'TITLE     report test', card('MODEL', ['PLATE']), &
+                 card('NONDIM', ['0.01      ', '0.1       ', '0.3       ', '0.1       ']), &
+                 card('FRICTION', ['0.5']), &
+                 card('LOAD', ['POINT     ', '1.0       ', load_fx, '0.0       ']), &
+                 card('MESH', ['16']), extra, card('END', [' '])]
+    end function plate_deck
+
+    subroutine clean_dir()
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+    end subroutine clean_dir
+
+    logical function exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=exists)
+    end function exists
+
+    !> The data file has 14 numeric columns per row (plate); integrating Sigma_z over the disk
+    !! from the printed columns (trapezoid on 2 pi t dt / pi) gives ~1 (equilibrium, F = 1).
+    subroutine test_data_file(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u, ios, n
+        character(len=400) :: line
+        real(dp) :: row(14), t_prev, s_prev, total
+        call clean_dir()
+        call parse_deck('rt.dat', plate_deck(' ', [character(len=80) ::]), deck, err)
+        if (allocated(err)) return
+        deck%stem = 'rt'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_OK, 'report test case did not solve')
+        if (allocated(err)) return
+        call check(err, exists(dir//'/rt.txt') .and. exists(dir//'/rt.dat') .and. &
+                   exists(dir//'/rt.gp') .and. .not. exists(dir//'/rt.dat.tmp'), &
+                   'missing output file or leftover .tmp')
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/rt.dat', status='old', action='read')
+        n = 0
+        total = 0.0_dp
+        rows: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit rows
+            if (line(1:1) == '#') cycle rows
+            read (line, *, iostat=ios) row
+            if (ios /= 0) exit rows
+            n = n + 1
+            if (n > 1) total = total + 0.5_dp*(row(6)*row(1) + s_prev*t_prev)*2.0_dp*(row(1) - t_prev)
+            t_prev = row(1)
+            s_prev = row(6)
+        end do rows
+        close (u)
+        call check(err, ios <= 0 .and. n == 17, 'data file rows unreadable or wrong count')
+        if (allocated(err)) return
+        ! trapezoid on 16 elements: O(h^2) error, a few per cent near a lift-off edge
+        call check_close(err, total, 1.0_dp, 5.0e-2_dp, 0.0_dp, 'int Sigma_z 2t dt from .dat')
+    end subroutine test_data_file
+
+    !> A swept value out of range (nu = 0.7): status 1 before anything is solved, and the
+    !! output directory stays empty (not even the valid first case is written).
+    subroutine test_input_error(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(error_t), allocatable :: parse_err
+        integer :: status, n_files, u, ios
+        call clean_dir()
+        call parse_deck('bad.dat', plate_deck(' ', [card('SWEEP', ['NU  ', '0.2 ', '0.7 '])]), &
+                        deck, parse_err)
+        if (.not. allocated(parse_err)) then
+            call run_analysis(deck, dir, output_unit, error_unit, status)
+            call check(err, status == EXIT_INPUT, 'swept nu = 0.7 was not an input error')
+            if (allocated(err)) return
+        else
+            call check(err, parse_err%code == EXIT_INPUT, 'wrong exit code for a bad deck')
+            if (allocated(err)) return
+        end if
+        call execute_command_line('ls -A '//dir//' | wc -l > build/test_count.txt')
+        open (newunit=u, file='build/test_count.txt', status='old', action='read')
+        read (u, *, iostat=ios) n_files
+        close (u)
+        call check(err, ios == 0 .and. n_files == 0, 'output written for a bad deck')
+    end subroutine test_input_error
+
+    !> Sliding (H > f V): status 2, report with the banner, no data file or figure.
+    subroutine test_failed_case(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u, ios
+        character(len=200) :: line
+        logical :: banner
+        call clean_dir()
+        call parse_deck('slide.dat', [character(len=80) :: 'TITLE     sliding beam', &
+            card('MODEL', ['BEAM']), card('NONDIM', ['0.01 ', '0.1  ', '0.3  ', '0.1  ', '0.05 ']), &
+            card('FRICTION', ['0.3']), card('LOAD', ['POINT', '1.0  ', '0.5  ', '0.0  ']), &
+            card('END', [' '])], deck, err)
+        if (allocated(err)) return
+        deck%stem = 'slide'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_ANALYSIS, 'sliding case did not end with status 2')
+        if (allocated(err)) return
+        call check(err, exists(dir//'/slide.txt') .and. .not. exists(dir//'/slide.dat') .and. &
+                   .not. exists(dir//'/slide.png'), 'failed case: wrong set of files')
+        if (allocated(err)) return
+        banner = .false.
+        open (newunit=u, file=dir//'/slide.txt', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, 'ANALYSIS FAILED') > 0) banner = .true.
+        end do
+        close (u)
+        call check(err, banner, 'failed report lacks the ANALYSIS FAILED banner')
+    end subroutine test_failed_case
+
+    !> SWEEP F 0.0 0.5 x SWEEP RHO: 4 cases, 4 reports and a summary with 4 rows.
+    subroutine test_sweep(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u, ios, n
+        character(len=400) :: line
+        call clean_dir()
+        call parse_deck('sw.dat', plate_deck(' ', [card('SWEEP', ['F  ', '0.0', '0.5']), &
+                                                   card('SWEEP', ['RHO ', '0.01', '1.0 '])]), &
+                        deck, err)
+        if (allocated(err)) return
+        deck%stem = 'sw'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_OK .and. exists(dir//'/sw_004.txt') .and. &
+                   exists(dir//'/sw_summary.csv'), 'sweep outputs missing')
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/sw_summary.csv', status='old', action='read')
+        n = 0
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            n = n + 1
+        end do
+        close (u)
+        call check(err, n == 5, 'summary should have a header and 4 rows')
+    end subroutine test_sweep
 end module test_report_writer

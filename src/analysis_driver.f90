@@ -1,0 +1,187 @@
+!> Runs a whole deck: validates every case first, then solves each case on its own (a failed
+!! case does not stop the others) and writes its report, data, gnuplot script and PNG.
+module analysis_driver
+    use kinds, only: dp
+    use errors, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
+    use model, only: model_t, MODEL_BEAM, relative_stiffness
+    use deck_reader, only: deck_t, case_count, case_model
+    use discretization, only: discretization_t, new_discretization
+    use contact_solver, only: solution_t, solve_contact
+    use station_results, only: station_table_t, tabulate, contact_extent
+    use report_writer, only: write_data_file, write_plot_script, write_report
+    use atomic_files, only: open_temporary, commit_file
+    implicit none
+    private
+
+    !> Key results of one case, for the console and the sweep summary.
+    type, public :: case_result_t
+        character(len=:), allocatable :: name, label, message
+        integer :: status = EXIT_OK
+        real(dp) :: w_max = 0.0_dp, sigma_z_max = 0.0_dp, extent = 0.0_dp, rho = 0.0_dp
+        integer :: n_outer = 0, n_inner = 0
+    end type case_result_t
+
+    public :: run_analysis, solve_case
+
+contains
+
+    !> Solve every case of the deck; `status` is the worst exit status of all cases.
+    subroutine run_analysis(deck, out_dir, log_unit, err_unit, status)
+        type(deck_t), intent(in) :: deck
+        character(len=*), intent(in) :: out_dir    !! e.g. 'output'
+        integer, intent(in) :: log_unit            !! where progress is written
+        integer, intent(in) :: err_unit            !! where errors and warnings are written
+        integer, intent(out) :: status
+        type(model_t), allocatable :: cases(:)
+        character(len=200), allocatable :: labels(:)
+        type(case_result_t), allocatable :: results(:)
+        type(error_t), allocatable :: err
+        integer :: i, n
+        character(len=:), allocatable :: name, label
+
+        n = case_count(deck)
+        allocate (cases(n), labels(n), results(n))
+        status = EXIT_OK
+        validate: do i = 1, n
+            call case_model(deck, i, cases(i), label, err)
+            labels(i) = 'case '//case_number(i)//' of '//case_number(n)
+            if (len(label) > 0) labels(i) = trim(labels(i))//': '//label
+            if (allocated(err)) then
+                write (err_unit, '(a)') 'ERROR: '//err%message
+                status = EXIT_INPUT
+                deallocate (err)
+            end if
+        end do validate
+        if (status /= EXIT_OK) return
+        call execute_command_line('mkdir -p '//out_dir)
+        cases_loop: do i = 1, n
+            name = deck%stem
+            if (n > 1) name = name//'_'//case_number(i)
+            call solve_case(deck, cases(i), trim(labels(i)), out_dir, name, results(i))
+            if (results(i)%status == EXIT_OK) then
+                write (log_unit, '(a,es12.5,a,es12.5,a,f8.5,a)') name//': solved  W_max =', &
+                    results(i)%w_max, '  Sigma_z max =', results(i)%sigma_z_max, &
+                    '  contact extent t =', results(i)%extent, '  -> '//out_dir//'/'//name//'.txt'
+            else
+                write (err_unit, '(a)') 'ERROR: '//name//' ('//deck%path//'): '// &
+                    results(i)%message
+            end if
+            if (len(results(i)%message) > 0 .and. results(i)%status == EXIT_OK) &
+                write (err_unit, '(a)') 'WARNING: '//name//': '//results(i)%message
+            status = max(status, results(i)%status)
+        end do cases_loop
+        if (n > 1) call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', results, err)
+        if (allocated(err)) then
+            write (err_unit, '(a)') 'ERROR: '//err%message
+            status = max(status, err%code)
+        end if
+    end subroutine run_analysis
+
+    pure function case_number(i) result(text)
+        integer, intent(in) :: i
+        character(len=3) :: text
+        write (text, '(i3.3)') i
+    end function case_number
+
+    !> One case: solve, tabulate, write report, data file, gnuplot script and PNG.
+    subroutine solve_case(deck, m, label, out_dir, name, result)
+        type(deck_t), intent(in) :: deck
+        type(model_t), intent(inout) :: m
+        character(len=*), intent(in) :: label, out_dir, name
+        type(case_result_t), intent(out) :: result
+        type(discretization_t) :: d
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: err, err_report
+        character(len=:), allocatable :: base, note
+
+        base = out_dir//'/'//name
+        result%name = name
+        result%label = label
+        result%message = ''
+        result%rho = relative_stiffness(m)
+        call new_discretization(m, d, err)
+        if (.not. allocated(err)) call solve_contact(m, d, sol, err)
+        result%n_outer = sol%n_outer
+        result%n_inner = sol%n_inner
+        if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
+        if (allocated(err)) then
+            result%status = err%code
+            result%message = err%message
+            call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, &
+                              err%message, '', err_report)
+            return
+        end if
+        result%w_max = maxval(tab%field(2, :))*tab%scale(2)
+        result%sigma_z_max = maxval(tab%field(5, :))*tab%scale(5)
+        result%extent = contact_extent(tab)
+        call write_data_file(base//'.dat', m, tab, err)
+        if (.not. allocated(err)) call write_plot_script(base//'.gp', base//'.dat', &
+                                                         base//'.png', m, err)
+        if (allocated(err)) then
+            result%status = err%code
+            result%message = err%message
+            return
+        end if
+        call render_png(base, m, note)
+        result%message = note
+        call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, '', &
+                          note, err)
+        if (allocated(err)) then
+            result%status = err%code
+            result%message = err%message
+        end if
+    end subroutine solve_case
+
+    !> gnuplot renders the PNG to a temporary name, moved into place on success.
+    subroutine render_png(base, m, note)
+        character(len=*), intent(in) :: base
+        type(model_t), intent(in) :: m
+        character(len=:), allocatable, intent(out) :: note
+        integer :: exit_status, cmd_status
+        note = ''
+        if (index(base, "'") > 0) then
+            note = 'figure not rendered: the output path contains a quote'
+            return
+        end if
+        call execute_command_line("gnuplot -c scripts/gnuplot/fricon_panels.gp '"//base// &
+            ".dat' '"//base//".png.tmp' 'fricon: "//trim(clean(m%title))//"' '"// &
+            trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"' && mv -f '"//base//".png.tmp' '"// &
+            base//".png'", exitstat=exit_status, cmdstat=cmd_status)
+        if (cmd_status /= 0 .or. exit_status /= 0) then
+            note = 'figure '//base//'.png not rendered: gnuplot failed or is not installed '// &
+                   '(run scripts/setup.sh; run fricon from the project root)'
+            call execute_command_line("rm -f '"//base//".png.tmp'")
+        end if
+    end subroutine render_png
+
+    pure function clean(text) result(out)
+        character(len=*), intent(in) :: text
+        character(len=len(text)) :: out
+        integer :: i
+        out = text
+        do i = 1, len(out)
+            if (index("'""`$\", out(i:i)) > 0) out(i:i) = ' '
+        end do
+    end function clean
+
+    !> output/STEM_summary.csv: one row per case.
+    subroutine write_summary_csv(path, results, err)
+        character(len=*), intent(in) :: path
+        type(case_result_t), intent(in) :: results(:)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: u, i
+        call open_temporary(path, u, err)
+        if (allocated(err)) return
+        write (u, '(a)') 'case,parameters,status,rho,W_max,Sigma_z_max,contact_extent,'// &
+            'outer_iterations,inner_iterations,message'
+        do i = 1, size(results)
+            associate (r => results(i))
+                write (u, '(a,",",a,",",i0,4(",",es15.7),2(",",i0),",",a)') r%name, &
+                    '"'//r%label//'"', r%status, r%rho, r%w_max, r%sigma_z_max, r%extent, &
+                    r%n_outer, r%n_inner, '"'//r%message//'"'
+            end associate
+        end do
+        call commit_file(path, u, err)
+    end subroutine write_summary_csv
+end module analysis_driver

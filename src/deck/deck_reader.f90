@@ -1,0 +1,1328 @@
+!> Input decks (SPEC §8): card images -> the problem (`model_t`, physical units) and its SWEEP
+!! cards. Every input error of the deck is collected and reported at once, in line order, as
+!! `deck:line:columns: what was expected, got what was found`, followed by the line and a caret
+!! marker (STYLE §4); the run is then refused (EXIT_INPUT). Library code: never prints or stops.
+!!
+!! Cards (columns 1-10 the name, fields f1..f7 in columns 11-20, 21-30, ..., 71-80; README and
+!! doc/deck_cards.md list every field, default, unit and message):
+!!
+!!     *...+....1....+....2....+....3....+....4....+....5....+....6....+....7....+....8
+!!     TITLE     Circular concrete raft, 8000 kN column load, elastic half-space
+!!     MODEL     PLATE
+!!     UNITS     kN        m
+!!     GEOMETRY  6.0       0.6
+!!     STRUCTURE 30.0E6    0.2
+!!     SOIL      40.0E3    0.3
+!!     FRICTION  0.5       1.0E-6
+!!     LOAD      PATCH     8000.0              0.0       0.4
+!!     MESH      40        UNIFORM   P1        P1        P1        P1        P1
+!!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9
+!!     OUTPUT
+!!     SWEEP     F         0.3       0.5       0.7
+!!     END
+!!
+!! A NONDIM deck replaces GEOMETRY/STRUCTURE/SOIL/UNITS by `NONDIM rho zeta nu nu_f beta`;
+!! its lengths are in units of l (beam) or a (plate), its forces in units of the total vertical
+!! load F. `complete_model` then picks l = a = 1, E = 1, F = 1, so the deck's numbers are used
+!! as they are; the reader checks that the vertical forces add up to 1.
+!!
+!! SWEEP cases are numbered 1..case_count with the last SWEEP card varying fastest.
+module deck_reader
+    use kinds, only: dp
+    use errors, only: error_t, new_error, EXIT_INPUT, EXIT_INTERNAL
+    use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
+                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+    use shape_functions, only: interp_code
+    use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
+                           FIELD_OK, FIELD_BAD, RULE_POSITIVE, RULE_NONNEGATIVE, &
+                           RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_OPEN_UNIT, RULE_COUNT, &
+                           RULE_ELEMENTS, RULE_STATIONS, diagnostics_t, field_first_column, &
+                           field_text, read_real_field, read_word_field, rule_ok, rule_text, &
+                           to_upper, format_real, int_text, add_diagnostic, render_diagnostics
+    implicit none
+    private
+
+    public :: read_deck, parse_deck, case_count, case_model, default_deck_lines
+
+    !> One SWEEP card: the parameter and its values (value k sits in field k+1, v_k).
+    type, public :: sweep_t
+        character(len=10) :: name = ''        !! parameter name, upper case (RHO, F, NE, ...)
+        real(dp), allocatable :: values(:)    !! v1, v2, ... in the deck's units
+        integer :: line = 0                   !! deck line of the card
+    end type sweep_t
+
+    !> A read deck: its text, the problem, and the sweeps.
+    type, public :: deck_t
+        character(len=:), allocatable :: path        !! as given (used in messages)
+        character(len=:), allocatable :: stem        !! file stem: 'default' for input/default.dat
+        character(len=80), allocatable :: lines(:)   !! raw lines, for the input echo (index = line)
+        type(model_t) :: base                        !! the problem, after complete_model
+        type(sweep_t), allocatable :: sweeps(:)      !! SWEEP cards in deck order
+    end type deck_t
+
+    ! Card identifiers: index into card_names.
+    integer, parameter :: C_TITLE = 1, C_MODEL = 2, C_UNITS = 3, C_GEOMETRY = 4, &
+                          C_STRUCTURE = 5, C_SOIL = 6, C_NONDIM = 7, C_FRICTION = 8, &
+                          C_LOAD = 9, C_MESH = 10, C_SOLVER = 11, C_OUTPUT = 12, C_SWEEP = 13, &
+                          C_END = 14
+    integer, parameter :: n_cards = 14
+    character(len=9), parameter :: card_names(n_cards) = [character(len=9) :: 'TITLE', &
+        'MODEL', 'UNITS', 'GEOMETRY', 'STRUCTURE', 'SOIL', 'NONDIM', 'FRICTION', 'LOAD', &
+        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END']
+    character(len=*), parameter :: card_list = 'TITLE, MODEL, UNITS, GEOMETRY, STRUCTURE, '// &
+        'SOIL, NONDIM, FRICTION, LOAD, MESH, SOLVER, OUTPUT, SWEEP or END'
+
+    ! Sweepable parameters: name, range rule, deck kind (0 any, 1 NONDIM, 2 physical), model
+    ! (0 any, MODEL_BEAM, MODEL_PLATE).
+    integer, parameter :: n_sweepable = 16
+    character(len=7), parameter :: sweep_names(n_sweepable) = [character(len=7) :: 'RHO', &
+        'ZETA', 'BETA', 'NU', 'NU_F', 'F', 'EPS_BAR', 'ETA_BAR', 'NE', 'K', 'E', 'E_F', 'H', &
+        'L', 'A', 'B']
+    integer, parameter :: sweep_rules(n_sweepable) = [RULE_POSITIVE, RULE_POSITIVE, &
+        RULE_POSITIVE, RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_NONNEGATIVE, RULE_OPEN_UNIT, &
+        RULE_POSITIVE, RULE_ELEMENTS, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, &
+        RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE]
+    integer, parameter :: sweep_decks(n_sweepable) = [1, 1, 1, 0, 0, 0, 0, 0, 0, 0, &
+                                                      2, 2, 2, 2, 2, 2]
+    integer, parameter :: sweep_models(n_sweepable) = [0, 0, MODEL_BEAM, 0, 0, 0, 0, 0, 0, &
+        0, 0, 0, 0, MODEL_BEAM, MODEL_PLATE, MODEL_BEAM]
+
+    integer, parameter :: max_cases = 100000        !! largest number of SWEEP combinations
+    integer, parameter :: max_line_kept = 1024      !! longer lines are cut (they are errors)
+    integer, parameter :: max_lines = 100000        !! longer files are not decks
+    real(dp), parameter :: unit_load_tol = 1.0e-6_dp  !! NONDIM: |sum F_z - 1| allowed
+
+    !> One significant card (not blank, not a comment).
+    type :: card_t
+        integer :: id = 0                        !! C_* identifier
+        integer :: line = 0                      !! deck line
+        character(len=card_width) :: text = ''   !! the 80 columns
+    end type card_t
+
+    !> A raw line read from a file.
+    type :: text_line_t
+        character(len=:), allocatable :: text
+    end type text_line_t
+
+    !> Everything gathered while reading one deck.
+    type :: state_t
+        type(card_t), allocatable :: cards(:)
+        integer :: n = 0                         !! cards(1:n) in use
+        integer :: first_line(n_cards) = 0       !! line of the first card of each kind
+        integer :: end_line = 0                  !! line of END (0: none yet)
+        integer :: last_line = 0                 !! number of lines of the deck
+        type(diagnostics_t) :: diag              !! the input errors
+        type(model_t) :: m                       !! the problem being filled
+        logical :: kind_known = .false.          !! MODEL read correctly
+        logical :: length_known = .false.        !! GEOMETRY l/a read correctly (or NONDIM)
+        logical :: loads_ok = .true.             !! every LOAD card read without error
+        integer, allocatable :: load_cards(:)    !! card index of each accepted load
+        type(sweep_t), allocatable :: sweeps(:)
+        integer, allocatable :: sweep_cards(:)   !! card index of each accepted sweep
+    end type state_t
+
+contains
+
+    ! ---------------------------------------------------------------------------------------
+    ! Public API
+    ! ---------------------------------------------------------------------------------------
+
+    !> Read a deck file. A file that cannot be opened or read, or any input error, gives
+    !! err%code = EXIT_INPUT with all errors listed in one message.
+    subroutine read_deck(path, deck, err)
+        character(len=*), intent(in) :: path       !! file name, as given by the user
+        type(deck_t), intent(out) :: deck          !! the deck (partial on error)
+        type(error_t), allocatable, intent(out) :: err
+        type(text_line_t), allocatable :: raw(:)
+        character(len=:), allocatable :: lines(:)
+        character(len=256) :: msg
+        integer :: u, ios, n, i, width
+
+        deck%path = path
+        deck%stem = stem_of(path)
+        allocate (deck%lines(0), deck%sweeps(0))
+        msg = ''
+        open (newunit=u, file=path, status='old', action='read', form='formatted', &
+              access='sequential', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call new_error(err, EXIT_INPUT, path//': cannot open the deck: '//trim(msg))
+            return
+        end if
+        call read_all_lines(u, raw, n, ios, msg)
+        close (u)
+        if (ios /= 0) then
+            call new_error(err, EXIT_INPUT, path//': cannot read the deck: '//trim(msg))
+            return
+        end if
+        width = card_width
+        do i = 1, n
+            width = max(width, len(raw(i)%text))
+        end do
+        allocate (character(len=width) :: lines(n))
+        do i = 1, n
+            lines(i) = raw(i)%text
+        end do
+        call parse_deck(path, lines, deck, err)
+    end subroutine read_deck
+
+    !> Parse a deck given as lines of text (line i of the deck is text_lines(i)).
+    subroutine parse_deck(name, text_lines, deck, err)
+        character(len=*), intent(in) :: name            !! deck name for messages and the stem
+        character(len=*), intent(in) :: text_lines(:)   !! the lines, any length
+        type(deck_t), intent(out) :: deck               !! the deck (partial on error)
+        type(error_t), allocatable, intent(out) :: err
+        type(state_t) :: st
+        integer :: i
+
+        deck%path = name
+        deck%stem = stem_of(name)
+        allocate (deck%lines(size(text_lines)))
+        do i = 1, size(text_lines)
+            deck%lines(i) = text_lines(i)
+        end do
+        allocate (st%cards(16), st%load_cards(0), st%sweeps(0), st%sweep_cards(0))
+        allocate (st%m%loads(0))
+        call scan_lines(st, text_lines)
+        call read_model_card(st)
+        call check_card_set(st)
+        call read_cards(st)
+        call check_loads(st)
+        call check_sweep_lengths(st)
+        call check_case_total(st)
+        if (st%diag%n == 0) call complete_model(st%m)
+        deck%base = st%m
+        deck%sweeps = st%sweeps
+        if (st%diag%n > 0) call new_error(err, EXIT_INPUT, &
+            render_diagnostics(st%diag, name, '; execution not attempted'))
+    end subroutine parse_deck
+
+    !> Number of cases: the product of the sizes of the SWEEP cards (1 without SWEEP).
+    pure integer function case_count(deck)
+        type(deck_t), intent(in) :: deck   !! a parsed deck
+        integer :: s
+        case_count = 1
+        if (.not. allocated(deck%sweeps)) return
+        do s = 1, size(deck%sweeps)
+            case_count = case_count*size(deck%sweeps(s)%values)
+        end do
+    end function case_count
+
+    !> The i-th combination of the sweeps applied to the base problem (last SWEEP fastest),
+    !! completed and re-validated; label lists the swept values ('RHO=0.0025 F=0.6', '' if no
+    !! SWEEP). A swept value out of range is an input error naming the SWEEP line and field.
+    subroutine case_model(deck, i, m, label, err)
+        type(deck_t), intent(in) :: deck                       !! a parsed deck
+        integer, intent(in) :: i                               !! case number 1..case_count
+        type(model_t), intent(out) :: m                        !! the problem of case i
+        character(len=:), allocatable, intent(out) :: label    !! e.g. 'RHO=0.0025 F=0.6'
+        type(error_t), allocatable, intent(out) :: err
+        type(diagnostics_t) :: diag
+        integer, allocatable :: pick(:)
+        integer :: s
+
+        label = ''
+        m = deck%base
+        if (i < 1 .or. i > case_count(deck)) then
+            call new_error(err, EXIT_INTERNAL, 'case_model: case '//int_text(i)// &
+                           ' outside 1..'//int_text(case_count(deck)))
+            return
+        end if
+        pick = case_indices(deck, i)
+        do s = 1, size(pick)
+            associate (sw => deck%sweeps(s))
+                call apply_sweep(m, sw%name, sw%values(pick(s)))
+                if (s > 1) label = label//' '
+                label = label//trim(sw%name)//'='//sweep_value_text(deck, sw, pick(s))
+                call check_swept_value(deck, m, sw, pick(s), diag)
+            end associate
+        end do
+        call complete_model(m)
+        if (diag%n > 0) call new_error(err, EXIT_INPUT, render_diagnostics(diag, deck%path, &
+            ', case '//int_text(i)//' ('//label//'); case not run'))
+    end subroutine case_model
+
+    !> The built-in default case (identical to input/default.dat): a circular concrete raft
+    !! under a column load on an elastic half-space, physical data in kN and m.
+    subroutine default_deck_lines(text_lines)
+        character(len=80), allocatable, intent(out) :: text_lines(:)  !! the deck's lines
+        text_lines = [character(len=80) :: &
+            '* fricon built-in default case (the same text as input/default.dat).', &
+            '* Circular concrete raft, radius 6 m, thickness 0.6 m, on a stiff soil; a', &
+            '* column load of 8000 kN spread over the column footprint r <= 0.4 m.', &
+            '*...+....1....+....2....+....3....+....4....+....5....+....6....+....7....+....8', &
+            'TITLE     Circular concrete raft, 8000 kN column load, elastic half-space', &
+            'MODEL     PLATE', &
+            'UNITS     kN        m', &
+            '*         a [m]     h [m]', &
+            'GEOMETRY  6.0       0.6', &
+            '*         E [kPa]   nu        k (blank: 5/6)', &
+            'STRUCTURE 30.0E6    0.2', &
+            '*         E_f [kPa] nu_f', &
+            'SOIL      40.0E3    0.3', &
+            '*         f         eps_bar', &
+            'FRICTION  0.5       1.0E-6', &
+            '*         kind      F_z [kN]  F_x [kN]  x1 [m]    x2 [m]', &
+            'LOAD      PATCH     8000.0              0.0       0.4', &
+            '*         N_e       grading   u_s       w         psi       sigma_x   sigma_z', &
+            'MESH      40        UNIFORM   P1        P1        P1        P1        P1', &
+            '*         stations (blank: every node of the mesh)', &
+            'OUTPUT', &
+            'END']
+    end subroutine default_deck_lines
+
+    ! ---------------------------------------------------------------------------------------
+    ! Lines -> cards
+    ! ---------------------------------------------------------------------------------------
+
+    !> First pass: reject bad lines, skip comments and blanks, identify the cards.
+    subroutine scan_lines(st, text_lines)
+        type(state_t), intent(inout) :: st
+        character(len=*), intent(in) :: text_lines(:)
+        integer :: i
+        st%last_line = size(text_lines)
+        lines: do i = 1, size(text_lines)
+            if (len_trim(text_lines(i)) == 0) cycle lines
+            if (.not. line_is_clean(st, i, text_lines(i))) cycle lines
+            if (is_comment(text_lines(i))) cycle lines
+            if (st%end_line > 0) then
+                call add_diagnostic(st%diag, i, 1, len_trim(text_lines(i)), 'card after END '// &
+                    '(line '//int_text(st%end_line)//'): one problem per deck, END is the '// &
+                    'last card', echo_text(text_lines(i)))
+                cycle lines
+            end if
+            call classify_card(st, i, text_lines(i))
+        end do lines
+    end subroutine scan_lines
+
+    !> A comment card: column 1 is '*' or '$', or 'C' (either case) followed by a blank.
+    pure logical function is_comment(text)
+        character(len=*), intent(in) :: text
+        is_comment = .false.
+        if (len(text) < 1) return
+        if (text(1:1) == '*' .or. text(1:1) == '$') then
+            is_comment = .true.
+        else if (text(1:1) == 'C' .or. text(1:1) == 'c') then
+            is_comment = .true.
+            if (len(text) >= 2) is_comment = text(2:2) == ' '
+        end if
+    end function is_comment
+
+    !> TAB, control characters and cards longer than 80 columns are errors of the line.
+    logical function line_is_clean(st, i, text)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: i                 !! line number
+        character(len=*), intent(in) :: text     !! the line
+        integer :: n, c, tab, ctrl
+        n = len_trim(text)
+        tab = index(text(1:n), achar(9))
+        ctrl = 0
+        chars: do c = 1, n
+            if (c == tab) cycle chars
+            if (iachar(text(c:c)) < 32 .or. iachar(text(c:c)) == 127) then
+                ctrl = c
+                exit chars
+            end if
+        end do chars
+        if (tab > 0) call add_diagnostic(st%diag, i, tab, tab, 'TAB character in column '// &
+            int_text(tab)//': cards have fixed columns, use blanks', echo_text(text))
+        if (ctrl > 0) call add_diagnostic(st%diag, i, ctrl, ctrl, 'control character (code '// &
+            int_text(iachar(text(ctrl:ctrl)))//') in column '//int_text(ctrl), echo_text(text))
+        if (n > card_width) call add_diagnostic(st%diag, i, card_width + 1, n, 'card is '// &
+            int_text(n)//' columns long; a card has at most 80 columns', echo_text(text))
+        line_is_clean = tab == 0 .and. ctrl == 0 .and. n <= card_width
+    end function line_is_clean
+
+    !> Identify the card name of a clean line (columns 1-10) and record the card.
+    subroutine classify_card(st, i, text)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: text
+        character(len=card_width) :: card
+        character(len=name_width) :: name
+        integer :: p, id
+        card = text
+        name = card(1:name_width)
+        if (name(1:1) == ' ') then
+            call name_not_left_justified(st, i, card)
+            return
+        end if
+        p = index(name, ' ')
+        if (p == 0) p = name_width + 1
+        id = card_id(to_upper(name(1:p - 1)))
+        if (id == 0) then
+            call add_diagnostic(st%diag, i, 1, len_trim(name), 'unknown card '''//trim(name)// &
+                ''' (expected '//card_list//')', echo_text(card))
+        else if (len_trim(name(p:)) > 0) then
+            p = p - 1 + verify(name(p:), ' ')
+            call add_diagnostic(st%diag, i, p, name_width, trim(card_names(id))//': text '''// &
+                trim(name(p:))//''' in columns '//int_text(p)//'-10 belongs in the fields, '// &
+                'which start in column 11', echo_text(card))
+        else if (st%first_line(id) > 0 .and. id /= C_LOAD .and. id /= C_SWEEP) then
+            call add_diagnostic(st%diag, i, 1, len_trim(name), 'duplicate '// &
+                trim(card_names(id))//' card (first given at line '// &
+                int_text(st%first_line(id))//'); only LOAD and SWEEP may repeat', &
+                echo_text(card))
+        else
+            call append_card(st, card_t(id=id, line=i, text=card))
+        end if
+    end subroutine classify_card
+
+    !> Columns 1-10 start with a blank: the name is missing or not left-justified.
+    subroutine name_not_left_justified(st, i, card)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: card
+        integer :: p
+        if (len_trim(card(1:name_width)) == 0) then
+            call add_diagnostic(st%diag, i, 1, name_width, 'card name missing: columns 1-10 '// &
+                'are blank but the card has fields', echo_text(card))
+        else
+            p = verify(card(1:name_width), ' ')
+            call add_diagnostic(st%diag, i, p, name_width, 'card name '''// &
+                trim(adjustl(card(1:name_width)))//''' starts in column '//int_text(p)// &
+                '; a card name is left-justified in columns 1-10', echo_text(card))
+        end if
+    end subroutine name_not_left_justified
+
+    !> C_* identifier of an upper-case card name; 0 when unknown.
+    pure integer function card_id(name)
+        character(len=*), intent(in) :: name
+        integer :: k
+        card_id = 0
+        do k = 1, n_cards
+            if (trim(name) == trim(card_names(k))) card_id = k
+        end do
+    end function card_id
+
+    !> Add a card to the list (growing it as needed).
+    subroutine append_card(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        type(card_t), allocatable :: grown(:)
+        if (st%n == size(st%cards)) then
+            allocate (grown(2*st%n))
+            grown(1:st%n) = st%cards(1:st%n)
+            call move_alloc(grown, st%cards)
+        end if
+        st%n = st%n + 1
+        st%cards(st%n) = cd
+        if (st%first_line(cd%id) == 0) st%first_line(cd%id) = cd%line
+        if (cd%id == C_END) st%end_line = cd%line
+    end subroutine append_card
+
+    ! ---------------------------------------------------------------------------------------
+    ! Card set: required, exclusive and missing cards
+    ! ---------------------------------------------------------------------------------------
+
+    !> MODEL first: the other cards depend on BEAM or PLATE.
+    subroutine read_model_card(st)
+        type(state_t), intent(inout) :: st
+        character(len=field_width) :: word
+        integer :: k, s
+        k = first_card(st, C_MODEL)
+        if (k == 0) then
+            call deck_error(st, 'missing MODEL card (expected MODEL BEAM or MODEL PLATE)')
+            return
+        end if
+        call take_word(st, st%cards(k), 1, 'MODEL kind', 'BEAM PLATE', .true., word, s)
+        if (s == FIELD_OK) then
+            st%kind_known = .true.
+            st%m%kind = MODEL_PLATE
+            if (word == 'BEAM') st%m%kind = MODEL_BEAM
+        end if
+        call check_unused(st, st%cards(k), 1)
+    end subroutine read_model_card
+
+    !> Either NONDIM or GEOMETRY + STRUCTURE + SOIL; FRICTION, a LOAD and END are required.
+    subroutine check_card_set(st)
+        type(state_t), intent(inout) :: st
+        integer, parameter :: physical(4) = [C_GEOMETRY, C_STRUCTURE, C_SOIL, C_UNITS]
+        integer :: k, id
+        st%m%nondim = st%first_line(C_NONDIM) > 0
+        if (st%m%nondim) then
+            st%length_known = .true.
+            do k = 1, size(physical)
+                id = physical(k)
+                if (st%first_line(id) > 0) call card_error(st, st%cards(first_card(st, id)), &
+                    trim(card_names(id))//' cannot be combined with NONDIM (line '// &
+                    int_text(st%first_line(C_NONDIM))//'): a deck gives either the '// &
+                    'nondimensional groups or physical GEOMETRY, STRUCTURE and SOIL')
+            end do
+        else if (all(st%first_line(physical(1:3)) == 0)) then
+            call deck_error(st, 'missing problem data: give NONDIM (nondimensional groups) '// &
+                            'or GEOMETRY, STRUCTURE and SOIL (physical data)')
+        else
+            do k = 1, 3
+                if (st%first_line(physical(k)) == 0) call deck_error(st, 'missing '// &
+                    trim(card_names(physical(k)))//' card (a physical deck needs GEOMETRY, '// &
+                    'STRUCTURE and SOIL)')
+            end do
+        end if
+        if (st%first_line(C_FRICTION) == 0) call deck_error(st, 'missing FRICTION card '// &
+            '(FRICTION f eps_bar; f = 0 for a frictionless interface)')
+        if (st%first_line(C_LOAD) == 0) call deck_error(st, 'missing LOAD card (at least '// &
+            'one load is required)')
+        if (st%end_line == 0) call deck_error(st, 'missing END card (the deck ends at line '// &
+            int_text(st%last_line)//' without END)')
+    end subroutine check_card_set
+
+    !> Second pass: read every card's fields.
+    subroutine read_cards(st)
+        type(state_t), intent(inout) :: st
+        integer :: k
+        cards: do k = 1, st%n
+            select case (st%cards(k)%id)
+            case (C_TITLE)
+                st%m%title = st%cards(k)%text(name_width + 1:)
+            case (C_UNITS)
+                if (.not. st%m%nondim) call read_units(st, st%cards(k))
+            case (C_GEOMETRY)
+                if (.not. st%m%nondim) call read_geometry(st, st%cards(k))
+            case (C_STRUCTURE)
+                if (.not. st%m%nondim) call read_structure(st, st%cards(k))
+            case (C_SOIL)
+                if (.not. st%m%nondim) call read_soil(st, st%cards(k))
+            case (C_NONDIM)
+                call read_nondim(st, st%cards(k))
+            case (C_FRICTION)
+                call read_friction(st, st%cards(k))
+            case (C_LOAD)
+                call read_load(st, k)
+            case (C_MESH)
+                call read_mesh(st, st%cards(k))
+            case (C_SOLVER)
+                call read_solver(st, st%cards(k))
+            case (C_OUTPUT)
+                call take_count(st, st%cards(k), 1, 'OUTPUT stations (number of equally '// &
+                                'spaced output stations)', RULE_STATIONS, .false., st%m%stations)
+                call check_unused(st, st%cards(k), 1)
+            case (C_SWEEP)
+                call read_sweep(st, k)
+            case (C_END)
+                call check_unused(st, st%cards(k), 0)
+            end select
+        end do cards
+    end subroutine read_cards
+
+    ! ---------------------------------------------------------------------------------------
+    ! The cards
+    ! ---------------------------------------------------------------------------------------
+
+    !> UNITS force-label length-label (labels only; default N and m).
+    subroutine read_units(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        call take_label(st, cd, 1, 'UNITS force label', st%m%force_unit)
+        call take_label(st, cd, 2, 'UNITS length label', st%m%length_unit)
+        call check_unused(st, cd, 2)
+    end subroutine read_units
+
+    !> GEOMETRY l|a h b: b required for BEAM, must be blank for PLATE.
+    subroutine read_geometry(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        character(len=:), allocatable :: what
+        integer :: s
+        what = 'GEOMETRY l or a (beam length or plate radius)'
+        if (st%kind_known .and. st%m%kind == MODEL_BEAM) what = 'GEOMETRY l (length of the beam)'
+        if (st%kind_known .and. st%m%kind == MODEL_PLATE) what = 'GEOMETRY a (radius of the plate)'
+        call take_real(st, cd, 1, what, RULE_POSITIVE, .true., st%m%length, s)
+        st%length_known = s == FIELD_OK
+        call take_real(st, cd, 2, 'GEOMETRY h (thickness of the structure)', RULE_POSITIVE, &
+                       .true., st%m%h)
+        if (st%kind_known .and. st%m%kind == MODEL_PLATE) then
+            call forbid_field(st, cd, 3, 'PLATE has no width: GEOMETRY b must be blank')
+        else
+            call take_real(st, cd, 3, 'GEOMETRY b (width of the beam)', RULE_POSITIVE, &
+                           st%kind_known, st%m%b)
+        end if
+        call check_unused(st, cd, 3)
+    end subroutine read_geometry
+
+    !> STRUCTURE E nu k.
+    subroutine read_structure(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        call take_real(st, cd, 1, 'STRUCTURE E (Young''s modulus of the structure)', &
+                       RULE_POSITIVE, .true., st%m%e)
+        call take_real(st, cd, 2, 'STRUCTURE nu (Poisson''s ratio of the structure)', &
+                       RULE_NU_STRUCTURE, .true., st%m%nu)
+        call take_real(st, cd, 3, 'STRUCTURE k (shear correction factor)', RULE_POSITIVE, &
+                       .false., st%m%k_shear)
+        call check_unused(st, cd, 3)
+    end subroutine read_structure
+
+    !> SOIL E_f nu_f.
+    subroutine read_soil(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        call take_real(st, cd, 1, 'SOIL E_f (Young''s modulus of the soil)', RULE_POSITIVE, &
+                       .true., st%m%e_f)
+        call take_real(st, cd, 2, 'SOIL nu_f (Poisson''s ratio of the soil)', RULE_NU_SOIL, &
+                       .true., st%m%nu_f)
+        call check_unused(st, cd, 2)
+    end subroutine read_soil
+
+    !> NONDIM rho zeta nu nu_f beta (nu, nu_f default to the paper's 0.3, 0.1).
+    subroutine read_nondim(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        call take_real(st, cd, 1, 'NONDIM rho (relative stiffness of structure and soil)', &
+                       RULE_POSITIVE, .true., st%m%rho_in)
+        call take_real(st, cd, 2, 'NONDIM zeta (thickness ratio h/l or h/a)', RULE_POSITIVE, &
+                       .true., st%m%zeta_in)
+        st%m%nu = 0.3_dp
+        st%m%nu_f = 0.1_dp
+        call take_real(st, cd, 3, 'NONDIM nu (Poisson''s ratio of the structure)', &
+                       RULE_NU_STRUCTURE, .false., st%m%nu)
+        call take_real(st, cd, 4, 'NONDIM nu_f (Poisson''s ratio of the soil)', RULE_NU_SOIL, &
+                       .false., st%m%nu_f)
+        if (st%kind_known .and. st%m%kind == MODEL_PLATE) then
+            call forbid_field(st, cd, 5, 'PLATE has no width: NONDIM beta must be blank')
+        else
+            call take_real(st, cd, 5, 'NONDIM beta (width ratio b/l of the beam)', &
+                           RULE_POSITIVE, st%kind_known, st%m%beta_in)
+        end if
+        call check_unused(st, cd, 5)
+    end subroutine read_nondim
+
+    !> FRICTION f eps_bar.
+    subroutine read_friction(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        call take_real(st, cd, 1, 'FRICTION f (friction coefficient)', RULE_NONNEGATIVE, &
+                       .true., st%m%f)
+        call take_real(st, cd, 2, 'FRICTION eps_bar (regularisation of the friction law)', &
+                       RULE_OPEN_UNIT, .false., st%m%eps_bar)
+        call check_unused(st, cd, 2)
+    end subroutine read_friction
+
+    !> MESH N_e grading interp(u_s) interp(w) interp(psi) interp(sigma_x) interp(sigma_z).
+    subroutine read_mesh(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        character(len=7), parameter :: field_label(5) = [character(len=7) :: 'u_s', 'w', &
+                                                         'psi', 'sigma_x', 'sigma_z']
+        character(len=field_width) :: word
+        integer :: s, j
+        call take_count(st, cd, 1, 'MESH N_e (number of elements)', RULE_ELEMENTS, .false., &
+                        st%m%ne)
+        ! grading words of mesh.f90 (new_mesh)
+        call take_word(st, cd, 2, 'MESH grading', 'UNIFORM EDGES', .false., word, s)
+        if (s == FIELD_OK) st%m%grading = word
+        do j = 1, 5
+            call take_word(st, cd, j + 2, 'MESH interpolation of '//trim(field_label(j)), &
+                           'P1 P2 S2', .false., word, s)
+            if (s == FIELD_OK) st%m%interp(j) = interp_code(word)
+        end do
+    end subroutine read_mesh
+
+    !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0.
+    subroutine read_solver(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        call take_real(st, cd, 1, 'SOLVER tol_outer (tolerance of the friction loop)', &
+                       RULE_POSITIVE, .false., st%m%tol_outer)
+        call take_real(st, cd, 2, 'SOLVER tol_inner (tolerance of the contact loop)', &
+                       RULE_POSITIVE, .false., st%m%tol_inner)
+        call take_count(st, cd, 3, 'SOLVER max_outer (iterations of the friction loop)', &
+                        RULE_COUNT, .false., st%m%max_outer)
+        call take_count(st, cd, 4, 'SOLVER max_inner (iterations of the contact loop)', &
+                        RULE_COUNT, .false., st%m%max_inner)
+        call take_real(st, cd, 5, 'SOLVER eta_bar (penalty of the tension zone)', &
+                       RULE_POSITIVE, .false., st%m%eta_bar)
+        call take_real(st, cd, 6, 'SOLVER tau0 (starting friction threshold, nondimensional)', &
+                       RULE_POSITIVE, .false., st%m%tau0_start)
+        call check_unused(st, cd, 6)
+    end subroutine read_solver
+
+    !> LOAD kind F_z F_x x1 x2; accepted (appended) only when the card has no error.
+    subroutine read_load(st, k)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: k               !! card index
+        character(len=field_width) :: word
+        type(load_t) :: ld
+        integer :: s, n_before
+        n_before = st%diag%n
+        associate (cd => st%cards(k))
+            ld%line = cd%line
+            call take_word(st, cd, 1, 'LOAD kind', 'POINT PATCH MOMENT RING RADIAL', .true., &
+                           word, s)
+            call read_load_numbers(st, cd, word, ld)
+            if (s == FIELD_OK .and. st%kind_known) call check_load_on_model(st, cd, word, ld)
+            call check_unused(st, cd, 5)
+        end associate
+        if (st%diag%n > n_before) then
+            st%loads_ok = .false.
+            return
+        end if
+        st%m%loads = [st%m%loads, ld]
+        st%load_cards = [st%load_cards, k]
+    end subroutine read_load
+
+    !> The numbers of a LOAD card; which are required depends on the kind.
+    subroutine read_load_numbers(st, cd, word, ld)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        character(len=*), intent(in) :: word    !! load kind ('' if unreadable)
+        type(load_t), intent(inout) :: ld
+        logical :: patch
+        patch = word == 'PATCH' .or. word == 'RADIAL'
+        select case (word)
+        case ('POINT', 'MOMENT')
+            ld%kind = merge(LOAD_MOMENT, LOAD_POINT, word == 'MOMENT')
+        case ('RING')
+            ld%kind = LOAD_RING
+        case default
+            ld%kind = LOAD_PATCH
+        end select
+        if (word == 'RADIAL') then
+            call take_real(st, cd, 2, 'LOAD F_z (total vertical force)', 0, .false., ld%fz)
+            call take_real(st, cd, 3, 'LOAD F_x (total radial traction of the annulus)', 0, &
+                           .true., ld%fx)
+        else
+            call take_real(st, cd, 2, 'LOAD F_z (total vertical force, or the moment)', 0, &
+                           .true., ld%fz)
+            call take_real(st, cd, 3, 'LOAD F_x (total horizontal force)', 0, .false., ld%fx)
+        end if
+        call take_real(st, cd, 4, 'LOAD x1 (position, or start of the patch)', 0, &
+                       patch .or. word == 'RING', ld%x1)
+        if (patch .or. len_trim(word) == 0) then
+            call take_real(st, cd, 5, 'LOAD x2 (end of the patch)', 0, patch, ld%x2)
+        else
+            call forbid_field(st, cd, 5, 'LOAD x2 is used only by PATCH and RADIAL; it must '// &
+                              'be blank for '//trim(word))
+        end if
+    end subroutine read_load_numbers
+
+    !> Loads the model cannot carry: horizontal force or moment on the plate, RING on a beam.
+    subroutine check_load_on_model(st, cd, word, ld)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        character(len=*), intent(in) :: word
+        type(load_t), intent(inout) :: ld
+        if (word == 'MOMENT' .and. ld%fx /= 0.0_dp) call field_error(st, cd, 3, 'a MOMENT has '// &
+            'no horizontal force: LOAD F_x must be blank or 0')
+        if (word == 'RADIAL' .and. ld%fz /= 0.0_dp) call field_error(st, cd, 2, 'a RADIAL load '// &
+            'is a radial top traction only: LOAD F_z must be blank or 0')
+        if (st%m%kind == MODEL_BEAM) then
+            if (word == 'RING' .or. word == 'RADIAL') call field_error(st, cd, 1, trim(word)// &
+                ' is a plate load; a beam takes POINT, PATCH or MOMENT')
+            return
+        end if
+        if (word == 'MOMENT') then
+            call field_error(st, cd, 1, 'an axisymmetric plate cannot carry an overturning '// &
+                             'moment (MOMENT is a beam load)')
+        else if (word /= 'RADIAL' .and. ld%fx /= 0.0_dp) then
+            call field_error(st, cd, 3, 'an axisymmetric plate cannot carry a horizontal '// &
+                'force: LOAD F_x must be blank or 0, got '//field_value(cd, 3)// &
+                ' (a radial top traction over an annulus is LOAD RADIAL)')
+        end if
+        if (word == 'POINT' .and. ld%x1 /= 0.0_dp) call field_error(st, cd, 4, 'a POINT load '// &
+            'on the plate acts at the axis only: LOAD x1 must be blank or 0, got '// &
+            field_value(cd, 4)//' (a load on the circle r = x1 is LOAD RING)')
+        if (word == 'RADIAL') ld%fz = 0.0_dp
+    end subroutine check_load_on_model
+
+    !> SWEEP name v1 .. v6: accepted (appended) only when the card has no error.
+    subroutine read_sweep(st, k)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: k                !! card index
+        character(len=field_width) :: word
+        type(sweep_t) :: sw
+        integer :: s, p, n_before
+        n_before = st%diag%n
+        associate (cd => st%cards(k))
+            sw%line = cd%line
+            call take_word(st, cd, 1, 'SWEEP parameter', sweepable_list(), .true., word, s)
+            p = 0
+            if (s == FIELD_OK) p = sweep_index(word)
+            if (p > 0) call check_sweep_name(st, cd, p)
+            sw%name = word
+            call read_sweep_values(st, cd, p, sw)
+        end associate
+        if (st%diag%n > n_before) return
+        st%sweeps = [st%sweeps, sw]
+        st%sweep_cards = [st%sweep_cards, k]
+    end subroutine read_sweep
+
+    !> A sweepable name must suit the deck (NONDIM or physical, BEAM or PLATE) and be new.
+    subroutine check_sweep_name(st, cd, p)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: p                !! index into sweep_names
+        character(len=:), allocatable :: name
+        integer :: s
+        name = trim(sweep_names(p))
+        if (sweep_decks(p) == 1 .and. .not. st%m%nondim) then
+            call field_error(st, cd, 1, 'SWEEP '//name//' needs a NONDIM deck; this deck '// &
+                             'gives physical data (sweep E, E_F, H, L, A or B instead)')
+        else if (sweep_decks(p) == 2 .and. st%m%nondim) then
+            call field_error(st, cd, 1, 'SWEEP '//name//' needs a physical deck; this deck '// &
+                             'gives NONDIM groups (sweep RHO, ZETA or BETA instead)')
+        else if (st%kind_known .and. sweep_models(p) /= 0 .and. &
+                 sweep_models(p) /= st%m%kind) then
+            call field_error(st, cd, 1, 'SWEEP '//name//' does not apply to a '// &
+                             trim(merge('BEAM ', 'PLATE', st%m%kind == MODEL_BEAM))// &
+                             ' deck'//sweep_hint(name))
+        end if
+        do s = 1, size(st%sweeps)
+            if (trim(st%sweeps(s)%name) == name) call field_error(st, cd, 1, 'SWEEP '//name// &
+                ' already given at line '//int_text(st%sweeps(s)%line))
+        end do
+    end subroutine check_sweep_name
+
+    !> Suggestion for a sweep name of the other model.
+    pure function sweep_hint(name) result(hint)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: hint
+        select case (name)
+        case ('L')
+            hint = ' (the plate radius is A)'
+        case ('A')
+            hint = ' (the beam length is L)'
+        case default
+            hint = ' (a plate has no width)'
+        end select
+    end function sweep_hint
+
+    !> Values v1.. of a SWEEP card: contiguous fields from f2, at least one, each in range.
+    subroutine read_sweep_values(st, cd, p, sw)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: p                 !! index into sweep_names (0 if unknown)
+        type(sweep_t), intent(inout) :: sw
+        character(len=:), allocatable :: what
+        real(dp) :: x
+        integer :: j, s, first_blank, rule
+        allocate (sw%values(0))
+        first_blank = 0
+        rule = 0
+        if (p > 0) rule = sweep_rules(p)
+        fields: do j = 2, max_fields
+            what = 'SWEEP '//trim(sw%name)//' value v'//int_text(j - 1)
+            call read_real_field(field_text(cd%text, j), x, s)
+            if (s == FIELD_BLANK) then
+                if (first_blank == 0) first_blank = j
+                cycle fields
+            end if
+            if (first_blank > 0) then
+                call field_error(st, cd, first_blank, 'SWEEP values fill v1, v2, ... without '// &
+                                 'gaps; v'//int_text(first_blank - 1)//' is blank')
+                first_blank = -1
+            end if
+            call take_real(st, cd, j, what, rule, .true., x, s)
+            if (s == FIELD_OK) sw%values = [sw%values, x]
+        end do fields
+        if (first_blank == 2) call field_error(st, cd, 2, 'SWEEP needs at least one value: '// &
+                                               'v1 is blank')
+    end subroutine read_sweep_values
+
+    ! ---------------------------------------------------------------------------------------
+    ! Checks across cards
+    ! ---------------------------------------------------------------------------------------
+
+    !> Loads on the structure; in a NONDIM deck the vertical forces add up to 1.
+    subroutine check_loads(st)
+        type(state_t), intent(inout) :: st
+        character(len=:), allocatable :: why
+        real(dp) :: total
+        integer :: k, field
+        if (.not. (st%kind_known .and. st%length_known)) return
+        do k = 1, size(st%m%loads)
+            call load_position_problem(st%m, structure_length(st%m), st%m%loads(k), field, why)
+            if (len(why) > 0) call field_error(st, st%cards(st%load_cards(k)), field, why)
+        end do
+        if (.not. (st%m%nondim .and. st%loads_ok .and. size(st%m%loads) > 0)) return
+        total = sum(st%m%loads%fz, mask=st%m%loads%kind /= LOAD_MOMENT)
+        if (abs(total - 1.0_dp) > unit_load_tol) call field_error(st, &
+            st%cards(st%load_cards(1)), 2, 'in a NONDIM deck forces are in units of the '// &
+            'total vertical load F, so the LOAD F_z must add up to 1; they add up to '// &
+            format_real(total))
+    end subroutine check_loads
+
+    !> Physical sweeps of the length (L, A) must keep every load on the structure.
+    subroutine check_sweep_lengths(st)
+        type(state_t), intent(inout) :: st
+        character(len=:), allocatable :: why
+        integer :: s, v, k, field
+        if (.not. st%kind_known .or. st%m%nondim) return
+        sweeps: do s = 1, size(st%sweeps)
+            if (trim(st%sweeps(s)%name) /= 'L' .and. trim(st%sweeps(s)%name) /= 'A') cycle sweeps
+            do v = 1, size(st%sweeps(s)%values)
+                loads: do k = 1, size(st%m%loads)
+                    call load_position_problem(st%m, st%sweeps(s)%values(v), st%m%loads(k), &
+                                               field, why)
+                    if (len(why) == 0) cycle loads
+                    call field_error(st, st%cards(st%sweep_cards(s)), v + 1, 'with '// &
+                        trim(st%sweeps(s)%name)//' = '//format_real(st%sweeps(s)%values(v))// &
+                        ' the LOAD of line '//int_text(st%m%loads(k)%line)//' is off the '// &
+                        'structure: '//why)
+                end do loads
+            end do
+        end do sweeps
+    end subroutine check_sweep_lengths
+
+    !> The number of SWEEP combinations stays below max_cases.
+    subroutine check_case_total(st)
+        type(state_t), intent(inout) :: st
+        integer :: s, total
+        total = 1
+        do s = 1, size(st%sweeps)
+            total = total*size(st%sweeps(s)%values)
+            if (total > max_cases) then
+                call field_error(st, st%cards(st%sweep_cards(s)), 1, 'too many SWEEP '// &
+                    'combinations (more than '//int_text(max_cases)//' cases)')
+                return
+            end if
+        end do
+    end subroutine check_case_total
+
+    !> Length in the units of the load positions: l or a, 1 in a NONDIM deck.
+    pure real(dp) function structure_length(m)
+        type(model_t), intent(in) :: m
+        structure_length = m%length
+        if (m%nondim) structure_length = 1.0_dp
+    end function structure_length
+
+    !> Why a load is not on the structure of the given length ('' if it is); field 4 or 5.
+    pure subroutine load_position_problem(m, length, ld, field, why)
+        type(model_t), intent(in) :: m               !! kind, nondim
+        real(dp), intent(in) :: length               !! l (beam) or a (plate)
+        type(load_t), intent(in) :: ld
+        integer, intent(out) :: field                !! 4 (x1) or 5 (x2)
+        character(len=:), allocatable, intent(out) :: why
+        character(len=:), allocatable :: range, where
+        real(dp) :: lo, hi
+        if (m%kind == MODEL_BEAM) then
+            lo = -0.5_dp*length
+            hi = 0.5_dp*length
+            where = 'the beam'
+            range = '[-l/2, l/2] = ['//format_real(lo)//', '//format_real(hi)//']'
+        else
+            lo = 0.0_dp
+            hi = length
+            where = 'the plate'
+            range = '[0, a] = [0, '//format_real(hi)//']'
+        end if
+        if (m%nondim) range = range//' (NONDIM: in units of '// &
+                              trim(merge('l', 'a', m%kind == MODEL_BEAM))//')'
+        why = ''
+        field = 4
+        if (.not. (ld%x1 >= lo .and. ld%x1 <= hi)) then
+            why = 'LOAD x1 lies outside '//where//': must be in '//range//', got '// &
+                  format_real(ld%x1)
+        else if (ld%kind == LOAD_PATCH) then
+            field = 5
+            if (.not. (ld%x2 >= lo .and. ld%x2 <= hi)) then
+                why = 'LOAD x2 lies outside '//where//': must be in '//range//', got '// &
+                      format_real(ld%x2)
+            else if (.not. ld%x2 > ld%x1) then
+                why = 'LOAD x2 (end of the patch) must be greater than x1 = '// &
+                      format_real(ld%x1)//', got '//format_real(ld%x2)
+            end if
+        end if
+    end subroutine load_position_problem
+
+    ! ---------------------------------------------------------------------------------------
+    ! Sweeps
+    ! ---------------------------------------------------------------------------------------
+
+    !> Index of each sweep's value in case i (1-based; last sweep fastest).
+    pure function case_indices(deck, i) result(pick)
+        type(deck_t), intent(in) :: deck
+        integer, intent(in) :: i
+        integer, allocatable :: pick(:)
+        integer :: s, rest, n
+        allocate (pick(size(deck%sweeps)))
+        rest = i - 1
+        do s = size(deck%sweeps), 1, -1
+            n = size(deck%sweeps(s)%values)
+            pick(s) = mod(rest, n) + 1
+            rest = rest/n
+        end do
+    end function case_indices
+
+    !> Set one swept parameter (complete_model is applied afterwards).
+    pure subroutine apply_sweep(m, name, v)
+        type(model_t), intent(inout) :: m
+        character(len=*), intent(in) :: name
+        real(dp), intent(in) :: v
+        select case (trim(name))
+        case ('RHO')
+            m%rho_in = v
+        case ('ZETA')
+            m%zeta_in = v
+        case ('BETA')
+            m%beta_in = v
+        case ('NU')
+            m%nu = v
+        case ('NU_F')
+            m%nu_f = v
+        case ('F')
+            m%f = v
+        case ('EPS_BAR')
+            m%eps_bar = v
+        case ('ETA_BAR')
+            m%eta_bar = v
+        case ('NE')
+            if (abs(v) < real(huge(1), dp)) m%ne = nint(v)
+        case ('K')
+            m%k_shear = v
+        case ('E')
+            m%e = v
+        case ('E_F')
+            m%e_f = v
+        case ('H')
+            m%h = v
+        case ('L', 'A')
+            m%length = v
+        case ('B')
+            m%b = v
+        end select
+    end subroutine apply_sweep
+
+    !> Re-validate a swept value: its range and, for L/A, the load positions.
+    subroutine check_swept_value(deck, m, sw, k, diag)
+        type(deck_t), intent(in) :: deck
+        type(model_t), intent(in) :: m           !! the case (kind, nondim, loads)
+        type(sweep_t), intent(in) :: sw
+        integer, intent(in) :: k                 !! value index
+        type(diagnostics_t), intent(inout) :: diag
+        character(len=:), allocatable :: why, echo
+        integer :: p, c1, field, l
+        p = sweep_index(sw%name)
+        c1 = field_first_column(k + 1)
+        echo = ''
+        if (sw%line >= 1 .and. sw%line <= size(deck%lines)) echo = echo_text(deck%lines(sw%line))
+        if (p == 0) then
+            call add_diagnostic(diag, sw%line, 11, 20, 'unknown SWEEP parameter '''// &
+                                trim(sw%name)//'''', echo)
+            return
+        end if
+        if (.not. rule_ok(sweep_rules(p), sw%values(k))) call add_diagnostic(diag, sw%line, &
+            c1, c1 + field_width - 1, 'SWEEP '//trim(sw%name)//' value v'//int_text(k)//' '// &
+            rule_text(sweep_rules(p))//', got '//format_real(sw%values(k)), echo)
+        if (m%nondim .or. (trim(sw%name) /= 'L' .and. trim(sw%name) /= 'A')) return
+        if (.not. allocated(m%loads)) return
+        do l = 1, size(m%loads)
+            call load_position_problem(m, sw%values(k), m%loads(l), field, why)
+            if (len(why) > 0) call add_diagnostic(diag, sw%line, c1, c1 + field_width - 1, &
+                'with '//trim(sw%name)//' = '//format_real(sw%values(k))//' the LOAD of line '// &
+                int_text(m%loads(l)%line)//' is off the structure: '//why, echo)
+        end do
+    end subroutine check_swept_value
+
+    !> The text of value k as written in the deck (formatted if the line is not available).
+    function sweep_value_text(deck, sw, k) result(text)
+        type(deck_t), intent(in) :: deck
+        type(sweep_t), intent(in) :: sw
+        integer, intent(in) :: k
+        character(len=:), allocatable :: text
+        real(dp) :: x
+        integer :: s
+        text = format_real(sw%values(k))
+        if (sw%line < 1 .or. sw%line > size(deck%lines) .or. k + 1 > max_fields) return
+        call read_real_field(field_text(deck%lines(sw%line), k + 1), x, s)
+        if (s == FIELD_OK .and. x == sw%values(k)) &
+            text = trim(adjustl(field_text(deck%lines(sw%line), k + 1)))
+    end function sweep_value_text
+
+    !> Index of a sweepable name; 0 if unknown.
+    pure integer function sweep_index(name)
+        character(len=*), intent(in) :: name
+        integer :: p
+        sweep_index = 0
+        do p = 1, n_sweepable
+            if (trim(name) == trim(sweep_names(p))) sweep_index = p
+        end do
+    end function sweep_index
+
+    !> The sweepable names, blank-separated.
+    pure function sweepable_list() result(list)
+        character(len=:), allocatable :: list
+        integer :: p
+        list = trim(sweep_names(1))
+        do p = 2, n_sweepable
+            list = list//' '//trim(sweep_names(p))
+        end do
+    end function sweepable_list
+
+    ! ---------------------------------------------------------------------------------------
+    ! Fields of a card
+    ! ---------------------------------------------------------------------------------------
+
+    !> A numeric field with a range rule: blank keeps `value` (the default) unless required.
+    !! status: FIELD_OK (value set), FIELD_BLANK (default kept) or FIELD_BAD (error recorded).
+    subroutine take_real(st, cd, j, what, rule, required, value, status)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j                 !! field number 1..7
+        character(len=*), intent(in) :: what     !! 'STRUCTURE nu (Poisson''s ratio ...)'
+        integer, intent(in) :: rule              !! RULE_*, 0 for any finite number
+        logical, intent(in) :: required          !! blank is an error
+        real(dp), intent(inout) :: value         !! default in, value out
+        integer, intent(out), optional :: status
+        real(dp) :: x
+        integer :: s
+        call read_real_field(field_text(cd%text, j), x, s)
+        if (s == FIELD_BAD) then
+            call field_error(st, cd, j, what//': expected a finite number such as 0.3, '// &
+                             '30.0E6 or 1.0D-6, got '''//field_value(cd, j)//'''')
+        else if (s == FIELD_BLANK .and. required) then
+            call field_error(st, cd, j, what//' is required but the field is blank '// &
+                             '(there is no default)')
+            s = FIELD_BAD
+        else if (s == FIELD_OK) then
+            if (rule_ok(rule, x)) then
+                value = x
+            else
+                call field_error(st, cd, j, what//' '//rule_text(rule)//', got '// &
+                                 field_value(cd, j))
+                s = FIELD_BAD
+            end if
+        end if
+        if (present(status)) status = s
+    end subroutine take_real
+
+    !> A whole-number field (read like F10.0, then required to be whole by the rule).
+    subroutine take_count(st, cd, j, what, rule, required, value)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j, rule
+        character(len=*), intent(in) :: what
+        logical, intent(in) :: required
+        integer, intent(inout) :: value          !! default in, value out
+        real(dp) :: x
+        integer :: s
+        x = real(value, dp)
+        call take_real(st, cd, j, what, rule, required, x, s)
+        if (s == FIELD_OK) value = nint(x)
+    end subroutine take_count
+
+    !> A one-word field, upper case, one of `allowed` (blank-separated; '' for any word).
+    subroutine take_word(st, cd, j, what, allowed, required, word, status)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: what, allowed
+        logical, intent(in) :: required
+        character(len=field_width), intent(out) :: word   !! '' unless FIELD_OK
+        integer, intent(out) :: status
+        call read_word_field(field_text(cd%text, j), word, status)
+        if (status == FIELD_BLANK .and. required) then
+            call field_error(st, cd, j, what//' is required but the field is blank '// &
+                             '(expected '//comma_list(allowed)//')')
+            status = FIELD_BAD
+        else if (status == FIELD_BAD) then
+            call field_error(st, cd, j, what//' must be one word, got '''// &
+                             field_value(cd, j)//'''')
+        else if (status == FIELD_OK .and. len(allowed) > 0) then
+            if (index(' '//allowed//' ', ' '//trim(word)//' ') == 0) then
+                call field_error(st, cd, j, what//' must be '//comma_list(allowed)//', got '''// &
+                                 field_value(cd, j)//'''')
+                status = FIELD_BAD
+            end if
+        end if
+        if (status /= FIELD_OK) word = ''
+    end subroutine take_word
+
+    !> A unit label (one word, case kept); blank keeps the default.
+    subroutine take_label(st, cd, j, what, label)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: what
+        character(len=*), intent(inout) :: label
+        character(len=field_width) :: word
+        integer :: s
+        call read_word_field(field_text(cd%text, j), word, s)
+        if (s == FIELD_BAD) then
+            call field_error(st, cd, j, what//' must be one word, got '''// &
+                             field_value(cd, j)//'''')
+        else if (s == FIELD_OK) then
+            label = adjustl(field_text(cd%text, j))
+        end if
+    end subroutine take_label
+
+    !> A field that must be blank for this card.
+    subroutine forbid_field(st, cd, j, why)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: why
+        if (len_trim(field_text(cd%text, j)) > 0) call field_error(st, cd, j, why// &
+            ', found '''//field_value(cd, j)//'''')
+    end subroutine forbid_field
+
+    !> Fields beyond the n_used of the card must be blank.
+    subroutine check_unused(st, cd, n_used)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: n_used
+        integer :: j, c1
+        do j = n_used + 1, max_fields
+            c1 = field_first_column(j)
+            if (len_trim(field_text(cd%text, j)) > 0) call field_error(st, cd, j, &
+                trim(card_names(cd%id))//' has '//int_text(n_used)//' field(s); columns '// &
+                int_text(c1)//'-'//int_text(c1 + field_width - 1)//' must be blank, found '''// &
+                field_value(cd, j)//'''')
+        end do
+    end subroutine check_unused
+
+    !> The text of field j, trimmed (for messages).
+    pure function field_value(cd, j) result(text)
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j
+        character(len=:), allocatable :: text
+        text = trim(adjustl(echo_text(field_text(cd%text, j))))
+    end function field_value
+
+    !> 'A B C' -> 'A, B or C'.
+    pure function comma_list(words) result(text)
+        character(len=*), intent(in) :: words
+        character(len=:), allocatable :: text, rest, word
+        integer :: p, n
+        text = ''
+        rest = trim(adjustl(words))
+        n = 0
+        split: do while (len(rest) > 0)
+            p = index(rest, ' ')
+            if (p == 0) p = len(rest) + 1
+            word = rest(1:p - 1)
+            rest = trim(adjustl(rest(min(p, len(rest)) + 1:)))
+            if (n == 0) then
+                text = word
+            else if (len(rest) == 0) then
+                text = text//' or '//word
+            else
+                text = text//', '//word
+            end if
+            n = n + 1
+        end do split
+        if (n == 0) text = 'any word'
+    end function comma_list
+
+    ! ---------------------------------------------------------------------------------------
+    ! Errors
+    ! ---------------------------------------------------------------------------------------
+
+    !> Error on field j of a card.
+    subroutine field_error(st, cd, j, text)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        integer, intent(in) :: j
+        character(len=*), intent(in) :: text
+        integer :: c1
+        c1 = field_first_column(j)
+        call add_diagnostic(st%diag, cd%line, c1, c1 + field_width - 1, text, echo_text(cd%text))
+    end subroutine field_error
+
+    !> Error on the name (columns 1-10) of a card.
+    subroutine card_error(st, cd, text)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        character(len=*), intent(in) :: text
+        call add_diagnostic(st%diag, cd%line, 1, name_width, text, echo_text(cd%text))
+    end subroutine card_error
+
+    !> Error of the deck as a whole (no line).
+    subroutine deck_error(st, text)
+        type(state_t), intent(inout) :: st
+        character(len=*), intent(in) :: text
+        call add_diagnostic(st%diag, 0, 0, 0, text, '')
+    end subroutine deck_error
+
+    !> Index of the first card of a kind; 0 if absent.
+    pure integer function first_card(st, id)
+        type(state_t), intent(in) :: st
+        integer, intent(in) :: id
+        integer :: k
+        first_card = 0
+        do k = st%n, 1, -1
+            if (st%cards(k)%id == id) first_card = k
+        end do
+    end function first_card
+
+    !> A line made safe to print: control characters shown as '?', trailing blanks removed.
+    pure function echo_text(text) result(echo)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: echo
+        integer :: c
+        echo = trim(text(1:min(len(text), max_line_kept)))
+        do c = 1, len(echo)
+            if (iachar(echo(c:c)) < 32 .or. iachar(echo(c:c)) == 127) echo(c:c) = '?'
+        end do
+    end function echo_text
+
+    ! ---------------------------------------------------------------------------------------
+    ! Files
+    ! ---------------------------------------------------------------------------------------
+
+    !> File stem: directory and last extension removed ('input/default.dat' -> 'default').
+    pure function stem_of(path) result(stem)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: stem
+        integer :: p
+        stem = trim(path(index(path, '/', back=.true.) + 1:))
+        p = index(stem, '.', back=.true.)
+        if (p > 1) stem = stem(1:p - 1)
+        if (len(stem) == 0) stem = 'deck'
+    end function stem_of
+
+    !> All lines of an open file (a DOS carriage return at the end of a line is dropped).
+    subroutine read_all_lines(u, raw, n, ios, msg)
+        integer, intent(in) :: u
+        type(text_line_t), allocatable, intent(out) :: raw(:)
+        integer, intent(out) :: n               !! lines read
+        integer, intent(out) :: ios             !! 0, or the failing iostat
+        character(len=*), intent(inout) :: msg  !! iomsg on failure
+        type(text_line_t), allocatable :: grown(:)
+        character(len=:), allocatable :: line
+        logical :: at_end
+        n = 0
+        allocate (raw(64))
+        lines: do
+            call read_one_line(u, line, at_end, ios, msg)
+            if (ios /= 0 .or. (at_end .and. len(line) == 0)) exit lines
+            if (n == max_lines) then
+                ios = 1
+                msg = 'more than '//int_text(max_lines)//' lines: not a deck'
+                exit lines
+            end if
+            if (n == size(raw)) then
+                allocate (grown(2*n))
+                grown(1:n) = raw(1:n)
+                call move_alloc(grown, raw)
+            end if
+            n = n + 1
+            raw(n)%text = line
+            if (at_end) exit lines
+        end do lines
+    end subroutine read_all_lines
+
+    !> One line of any length (kept up to max_line_kept characters).
+    subroutine read_one_line(u, line, at_end, ios, msg)
+        integer, intent(in) :: u
+        character(len=:), allocatable, intent(out) :: line
+        logical, intent(out) :: at_end          !! end of file reached
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: msg
+        character(len=256) :: chunk
+        integer :: got
+        line = ''
+        at_end = .false.
+        chunks: do
+            got = 0
+            read (u, '(a)', advance='no', iostat=ios, iomsg=msg, size=got) chunk
+            if (len(line) < max_line_kept) &
+                line = line//chunk(1:min(got, max_line_kept - len(line)))
+            if (ios /= 0) exit chunks
+        end do chunks
+        if (is_iostat_end(ios)) at_end = .true.
+        if (is_iostat_eor(ios) .or. is_iostat_end(ios)) ios = 0
+        if (len(line) > 0) then
+            if (line(len(line):len(line)) == achar(13)) line = line(1:len(line) - 1)
+        end if
+    end subroutine read_one_line
+end module deck_reader

@@ -1,0 +1,49 @@
+!> The half-space flexibility of a case, whichever the structure: dispatches to
+!! `halfspace_plate` (axisymmetric rings) or `halfspace_beam` (centre-line strip kernels).
+module halfspace_operator
+    use kinds, only: dp
+    use errors, only: error_t
+    use model, only: model_t, MODEL_BEAM, FIELD_SX, FIELD_SZ, soil_shear_modulus
+    use discretization, only: discretization_t
+    use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement
+    use halfspace_beam, only: assemble_beam_flexibility, beam_surface_displacement
+    implicit none
+    private
+    public :: assemble_flexibility, surface_displacement
+
+contains
+
+    !> T (nr x nr), blocks [T_xx T_xz; T_zx T_zz] in the traction numbering of d.
+    subroutine assemble_flexibility(m, d, t_mat, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        real(dp), allocatable, intent(out) :: t_mat(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        if (m%kind == MODEL_BEAM) then
+            call assemble_beam_flexibility(d%basis(FIELD_SX), d%basis(FIELD_SZ), &
+                                           soil_shear_modulus(m), m%nu_f, m%b, t_mat, err)
+        else
+            call assemble_plate_flexibility(d%basis(FIELD_SX), d%basis(FIELD_SZ), &
+                                            soil_shear_modulus(m), m%nu_f, t_mat, err)
+        end if
+    end subroutine assemble_flexibility
+
+    !> Surface displacements (u_x or u_r, w) of the half-space at x_eval under the tractions r.
+    subroutine surface_displacement(m, d, r, x_eval, u_f, w_f, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        real(dp), intent(in) :: r(:)          !! traction coefficients [r_x; r_z]
+        real(dp), intent(in) :: x_eval(:)
+        real(dp), intent(out) :: u_f(:), w_f(:)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: nx
+        nx = d%basis(FIELD_SX)%n_dof
+        if (m%kind == MODEL_BEAM) then
+            call beam_surface_displacement(d%basis(FIELD_SX), d%basis(FIELD_SZ), r(1:nx), &
+                 r(nx + 1:), soil_shear_modulus(m), m%nu_f, m%b, x_eval, u_f, w_f, err)
+        else
+            call plate_surface_displacement(d%basis(FIELD_SX), d%basis(FIELD_SZ), r(1:nx), &
+                 r(nx + 1:), soil_shear_modulus(m), m%nu_f, x_eval, u_f, w_f, err)
+        end if
+    end subroutine surface_displacement
+end module halfspace_operator

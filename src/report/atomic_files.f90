@@ -1,0 +1,50 @@
+!> Output files are written completely or not at all: write to NAME.tmp, then rename (POSIX
+!! rename(2) is atomic within a file system).
+module atomic_files
+    use iso_c_binding, only: c_int, c_char, c_null_char
+    use errors, only: error_t, new_error, EXIT_INPUT
+    implicit none
+    private
+    public :: open_temporary, commit_file, discard_file
+
+    interface
+        ! int rename(const char *oldpath, const char *newpath);
+        function c_rename(oldpath, newpath) bind(c, name='rename')
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: oldpath(*), newpath(*)
+            integer(c_int) :: c_rename
+        end function c_rename
+    end interface
+
+contains
+
+    !> Open `path`.tmp for writing; the unit is returned.
+    subroutine open_temporary(path, unit, err)
+        character(len=*), intent(in) :: path
+        integer, intent(out) :: unit
+        type(error_t), allocatable, intent(out) :: err
+        integer :: ios
+        character(len=256) :: msg
+        open (newunit=unit, file=path//'.tmp', status='replace', action='write', &
+              iostat=ios, iomsg=msg)
+        if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))
+    end subroutine open_temporary
+
+    !> Close the unit and move `path`.tmp to `path`.
+    subroutine commit_file(path, unit, err)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: unit
+        type(error_t), allocatable, intent(out) :: err
+        integer :: ios
+        close (unit, iostat=ios)
+        if (ios == 0) ios = c_rename(path//'.tmp'//c_null_char, path//c_null_char)
+        if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path)
+    end subroutine commit_file
+
+    !> Close and delete a temporary file (after a failure).
+    subroutine discard_file(unit)
+        integer, intent(in) :: unit
+        integer :: ios
+        close (unit, status='delete', iostat=ios)
+    end subroutine discard_file
+end module atomic_files
