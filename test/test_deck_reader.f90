@@ -464,6 +464,7 @@ contains
 
     subroutine test_sweep_expansion(err)
         type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: cerr
         type(deck_t) :: deck
         type(model_t) :: m
         character(len=:), allocatable :: label
@@ -493,8 +494,8 @@ contains
             call check_close(err, m%f, f(mod(i - 1, 2) + 1), 0.0_dp, 0.0_dp, 'f of case '//itoa(i))
             if (allocated(err)) return
         end do cases
-        call case_model(deck, 7, m, label, err)
-        call check(err, allocated(err), 'case 7 of 6 must fail')
+        call case_model(deck, 7, m, label, cerr)
+        call check(err, allocated(cerr), 'case 7 of 6 must fail')
     end subroutine test_sweep_expansion
 
     !> case_model re-validates: a swept value out of range names the SWEEP line and field.
@@ -619,8 +620,10 @@ contains
     subroutine test_nan_inf(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=w), allocatable :: lines(:)
-        character(len=10), parameter :: odd(6) = [character(len=10) :: 'NaN', 'Inf', '-Infinity', &
-                                                  '1e999', '-1D400', 'nan(0x1)']
+        character(len=10), parameter :: odd(4) = [character(len=10) :: 'NaN', 'Inf', &
+                                                  '-Infinity', 'nan(0x1)']
+        character(len=10), parameter :: huge_or_tiny(4) = [character(len=10) :: '1e999', &
+                                                           '-1D400', '10.0E29', '0.1E-30']
         integer :: k
         lines = beam_physical()
         do k = 1, size(odd)
@@ -629,6 +632,15 @@ contains
                               'expected a finite number'], err)
             if (allocated(err)) return
         end do
+        do k = 1, size(huge_or_tiny)
+            lines(2) = card('GEOMETRY', '10.0', huge_or_tiny(k), '1.0')
+            call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:21-30: GEOMETRY h', &
+                              'a deck number is 0 or of magnitude 1E-30 to 1E+30'], err)
+            if (allocated(err)) return
+        end do
+        lines(2) = card('GEOMETRY', '10.0', '0.00000E99', '1.0')
+        call expect_error(lines, [character(len=120) :: 'GEOMETRY h (thickness of the '// &
+                          'structure) must be > 0, got 0.00000E99'], err)
     end subroutine test_nan_inf
 
     subroutine test_missing_model(err)
@@ -1069,7 +1081,7 @@ contains
                                                                '1e308')]
         lines: do k = 1, size(odd)
             call parse_deck(bad, [base(1:6), odd(k), base(7)], deck, perr)
-            if (k == 17 .or. k == 22 .or. k == 26) cycle lines   ! valid (tiny F_z, TITLE, *)
+            if (k == 22 .or. k == 26) cycle lines   ! valid: TITLE, comment
             call check(err, allocated(perr), 'odd line '//itoa(k)//' accepted: '// &
                        trim(odd(k)(1:80)))
             if (allocated(err)) return

@@ -37,12 +37,12 @@ contains
     !> A NONDIM plate deck; `extra` cards inserted before END.
     function plate_deck(load_fx, extra) result(lines)
         character(len=*), intent(in) :: load_fx
-        character(len=80), intent(in) :: extra(:)
+        character(len=*), intent(in) :: extra(:)
         character(len=80), allocatable :: lines(:)
         lines = [character(len=80) :: 'TITLE     report test', card('MODEL', ['PLATE']), &
                  card('NONDIM', ['0.01      ', '0.1       ', '0.3       ', '0.1       ']), &
                  card('FRICTION', ['0.5']), &
-                 card('LOAD', ['POINT     ', '1.0       ', load_fx, '0.0       ']), &
+                 card('LOAD', [character(len=10) :: 'POINT', '1.0', load_fx, '0.0']), &
                  card('MESH', ['16']), extra, card('END', [' '])]
     end function plate_deck
 

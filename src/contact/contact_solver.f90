@@ -58,7 +58,8 @@ module contact_solver
         real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)
         real(dp) :: applied(3) = 0.0_dp      !! the same of the loads
         real(dp) :: admissibility = 0.0_dp   !! max(|sigma_x| - f sigma_z) over contact points
-        real(dp) :: complementarity = 0.0_dp !! filled by the report (needs the gap)
+        real(dp) :: complementarity = 0.0_dp !! max |Sigma_z gap| at lift-off stations (report)
+        real(dp) :: compatibility = 0.0_dp   !! max |gap|/max|w| at contact stations (report)
         real(dp) :: min_sigma_z = 0.0_dp     !! most tensile sigma_z (penalty, O(eta_bar))
     end type solution_t
 
@@ -491,7 +492,9 @@ contains
             sol%reaction(3) = sol%reaction(3) - 0.5_dp*m%h*sol%reaction(2)
             sol%applied(3) = sol%applied(3) - 0.5_dp*m%h*sol%applied(2)
         else
-            sol%reaction(3) = 0.0_dp
+            ! radial shear is self-equilibrated by symmetry: no horizontal or moment balance
+            sol%reaction(2:3) = 0.0_dp
+            sol%applied(2:3) = 0.0_dp
         end if
         sol%admissibility = maxval(abs(sol%sigma(1, :)) - m%f*max(sol%sigma(2, :), 0.0_dp))
         sol%min_sigma_z = minval(sol%sigma(2, :))

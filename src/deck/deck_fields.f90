@@ -16,7 +16,8 @@
 !! A numeric field is the 10-column substring: an optional sign, digits with an optional
 !! decimal point, an optional exponent (E or D, optional sign, digits); blanks around it are
 !! ignored, blanks inside, NaN, Inf and anything else are rejected. Without a decimal point the
-!! number is an integer value (F10.0 has no implied decimals).
+!! number is an integer value (F10.0 has no implied decimals). A number is 0 or has a magnitude
+!! in [1E-30, 1E+30): nothing derived from the deck can then overflow.
 module deck_fields
     use kinds, only: dp
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -29,7 +30,8 @@ module deck_fields
     integer, parameter, public :: max_fields = 7      !! fields f1..f7
 
     !> Status of a field read.
-    integer, parameter, public :: FIELD_BLANK = 0, FIELD_OK = 1, FIELD_BAD = 2
+    integer, parameter, public :: FIELD_BLANK = 0, FIELD_OK = 1, FIELD_BAD = 2, FIELD_RANGE = 3
+    integer, parameter, public :: max_decade = 30   !! numbers are 0 or 1E-30 <= |x| < 1E+30
 
     !> Range rules of numeric fields (and SWEEP values).
     integer, parameter, public :: RULE_ANY = 0, RULE_POSITIVE = 1, RULE_NONNEGATIVE = 2, &
@@ -80,13 +82,16 @@ contains
         if (c2 >= c1) text = card(c1:c2)
     end function field_text
 
-    !> Read a numeric field like F10.0 (see the module header); finite values only.
+    !> Read a numeric field like F10.0 (see the module header). Numbers are 0 or of magnitude
+    !! 1E-30 <= |x| < 1E+30 (FIELD_RANGE otherwise), so that nothing the model derives from
+    !! them (h^3, l^4, products of moduli) can overflow.
     subroutine read_real_field(text, value, status)
         character(len=*), intent(in) :: text   !! the field's columns
         real(dp), intent(out) :: value         !! the number (0 unless FIELD_OK)
-        integer, intent(out) :: status         !! FIELD_OK, FIELD_BLANK or FIELD_BAD
+        integer, intent(out) :: status         !! FIELD_OK, FIELD_BLANK, FIELD_BAD, FIELD_RANGE
         character(len=len(text)) :: s
-        integer :: ios
+        logical :: ok, zero
+        integer :: ios, decade
         value = 0.0_dp
         s = adjustl(text)
         if (len_trim(s) == 0) then
@@ -94,50 +99,96 @@ contains
             return
         end if
         status = FIELD_BAD
-        if (.not. is_number_text(trim(s))) return
-        read (s, '(f'//int_text(len(s))//'.0)', iostat=ios) value
-        if (ios /= 0) then
-            value = 0.0_dp
+        call scan_number(trim(s), ok, zero, decade)
+        if (.not. ok) return
+        if (.not. zero .and. (decade >= max_decade .or. decade < -max_decade)) then
+            status = FIELD_RANGE
             return
         end if
-        if (.not. ieee_is_finite(value)) then
+        read (s, '(f'//int_text(len(s))//'.0)', iostat=ios) value
+        if (ios /= 0 .or. .not. ieee_is_finite(value)) then
             value = 0.0_dp
             return
         end if
         status = FIELD_OK
     end subroutine read_real_field
 
-    !> True if s is [sign] digits [. digits] [(E|D) [sign] digits], at least one mantissa digit.
-    pure logical function is_number_text(s)
+    !> Check s = [sign] digits [. digits] [(E|D) [sign] digits] (one mantissa digit at least);
+    !! decade is the power of ten of the leading nonzero digit (0 and zero = .true. for 0).
+    pure subroutine scan_number(s, ok, zero, decade)
         character(len=*), intent(in) :: s   !! trimmed text, no leading blank
-        integer :: i, n_mantissa, n_exponent
-        is_number_text = .false.
+        logical, intent(out) :: ok          !! s is a number
+        logical, intent(out) :: zero        !! all mantissa digits are 0
+        integer, intent(out) :: decade      !! floor(log10 |x|)
+        integer :: i, start, n_int, n_frac, n_exp, k, e
+        logical :: negative
+        ok = .false.
+        zero = .true.
+        decade = 0
         i = 1
-        if (i <= len(s)) then
-            if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
-        end if
-        n_mantissa = 0
-        call skip_digits(s, i, n_mantissa)
+        call skip_sign(s, i, negative)
+        start = i
+        n_int = 0
+        call skip_digits(s, i, n_int)
+        call first_nonzero(s, start, n_int, n_int - 1, zero, decade)
+        n_frac = 0
         if (i <= len(s)) then
             if (s(i:i) == '.') then
                 i = i + 1
-                call skip_digits(s, i, n_mantissa)
+                start = i
+                call skip_digits(s, i, n_frac)
+                call first_nonzero(s, start, n_frac, -1, zero, decade)
             end if
         end if
-        if (n_mantissa == 0) return
+        if (n_int + n_frac == 0) return
         if (i > len(s)) then
-            is_number_text = .true.
+            ok = .true.
             return
         end if
         if (index('EeDd', s(i:i)) == 0) return
         i = i + 1
-        if (i <= len(s)) then
-            if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
-        end if
-        n_exponent = 0
-        call skip_digits(s, i, n_exponent)
-        is_number_text = n_exponent > 0 .and. i > len(s)
-    end function is_number_text
+        call skip_sign(s, i, negative)
+        start = i
+        n_exp = 0
+        call skip_digits(s, i, n_exp)
+        if (n_exp == 0 .or. i <= len(s)) return
+        ok = .true.
+        e = 0
+        do k = start, start + n_exp - 1
+            e = min(10*e + iachar(s(k:k)) - iachar('0'), 100000)
+        end do
+        if (negative) e = -e
+        decade = decade + e
+    end subroutine scan_number
+
+    !> Decade of the first nonzero digit of s(start:start+n-1), whose first digit has decade
+    !! top; nothing changes if an earlier digit was nonzero already (zero = .false.).
+    pure subroutine first_nonzero(s, start, n, top, zero, decade)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: start, n, top
+        logical, intent(inout) :: zero       !! no nonzero digit yet
+        integer, intent(inout) :: decade     !! set at the first nonzero digit
+        integer :: k
+        if (.not. zero) return
+        digits: do k = start, start + n - 1
+            if (s(k:k) /= '0') then
+                decade = top - (k - start)
+                zero = .false.
+                exit digits
+            end if
+        end do digits
+    end subroutine first_nonzero
+
+    !> Skip an optional sign at position i.
+    pure subroutine skip_sign(s, i, negative)
+        character(len=*), intent(in) :: s
+        integer, intent(inout) :: i
+        logical, intent(out) :: negative
+        negative = .false.
+        if (i > len(s)) return
+        negative = s(i:i) == '-'
+        if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+    end subroutine skip_sign
 
     !> Skip the decimal digits from position i on, counting them into n.
     pure subroutine skip_digits(s, i, n)

@@ -34,7 +34,7 @@ module deck_reader
                      LOAD_PATCH, LOAD_MOMENT, LOAD_RING
     use shape_functions, only: interp_code
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
-                           FIELD_OK, FIELD_BAD, RULE_POSITIVE, RULE_NONNEGATIVE, &
+                           FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
                            RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_OPEN_UNIT, RULE_COUNT, &
                            RULE_ELEMENTS, RULE_STATIONS, diagnostics_t, field_first_column, &
                            field_text, read_real_field, read_word_field, rule_ok, rule_text, &
@@ -152,6 +152,10 @@ contains
         close (u)
         if (ios /= 0) then
             call new_error(err, EXIT_INPUT, path//': cannot read the deck: '//trim(msg))
+            return
+        end if
+        if (n == 0) then
+            call new_error(err, EXIT_INPUT, path//': the deck is empty (or not a text file)')
             return
         end if
         width = card_width
@@ -327,8 +331,14 @@ contains
             int_text(tab)//': cards have fixed columns, use blanks', echo_text(text))
         if (ctrl > 0) call add_diagnostic(st%diag, i, ctrl, ctrl, 'control character (code '// &
             int_text(iachar(text(ctrl:ctrl)))//') in column '//int_text(ctrl), echo_text(text))
-        if (n > card_width) call add_diagnostic(st%diag, i, card_width + 1, n, 'card is '// &
-            int_text(n)//' columns long; a card has at most 80 columns', echo_text(text))
+        if (n > max_line_kept) then
+            call add_diagnostic(st%diag, i, card_width + 1, max_line_kept, 'card is more '// &
+                'than '//int_text(max_line_kept)//' columns long; a card has at most 80 '// &
+                'columns', echo_text(text))
+        else if (n > card_width) then
+            call add_diagnostic(st%diag, i, card_width + 1, n, 'card is '//int_text(n)// &
+                ' columns long; a card has at most 80 columns', echo_text(text))
+        end if
         line_is_clean = tab == 0 .and. ctrl == 0 .and. n <= card_width
     end function line_is_clean
 
@@ -462,8 +472,12 @@ contains
             '(FRICTION f eps_bar; f = 0 for a frictionless interface)')
         if (st%first_line(C_LOAD) == 0) call deck_error(st, 'missing LOAD card (at least '// &
             'one load is required)')
-        if (st%end_line == 0) call deck_error(st, 'missing END card (the deck ends at line '// &
-            int_text(st%last_line)//' without END)')
+        if (st%end_line == 0 .and. st%last_line == 0) then
+            call deck_error(st, 'missing END card (the deck is empty)')
+        else if (st%end_line == 0) then
+            call deck_error(st, 'missing END card (the deck ends at line '// &
+                            int_text(st%last_line)//' without END)')
+        end if
     end subroutine check_card_set
 
     !> Second pass: read every card's fields.
@@ -1069,6 +1083,10 @@ contains
         if (s == FIELD_BAD) then
             call field_error(st, cd, j, what//': expected a finite number such as 0.3, '// &
                              '30.0E6 or 1.0D-6, got '''//field_value(cd, j)//'''')
+        else if (s == FIELD_RANGE) then
+            call field_error(st, cd, j, what//': a deck number is 0 or of magnitude 1E-30 '// &
+                             'to 1E+30, got '''//field_value(cd, j)//'''')
+            s = FIELD_BAD
         else if (s == FIELD_BLANK .and. required) then
             call field_error(st, cd, j, what//' is required but the field is blank '// &
                              '(there is no default)')
@@ -1244,14 +1262,15 @@ contains
         end do
     end function first_card
 
-    !> A line made safe to print: control characters shown as '?', trailing blanks removed.
+    !> A line made safe to print, one character a column: control characters and non-ASCII
+    !! bytes shown as '?', trailing blanks removed.
     pure function echo_text(text) result(echo)
         character(len=*), intent(in) :: text
         character(len=:), allocatable :: echo
         integer :: c
         echo = trim(text(1:min(len(text), max_line_kept)))
         do c = 1, len(echo)
-            if (iachar(echo(c:c)) < 32 .or. iachar(echo(c:c)) == 127) echo(c:c) = '?'
+            if (iachar(echo(c:c)) < 32 .or. iachar(echo(c:c)) > 126) echo(c:c) = '?'
         end do
     end function echo_text
 
@@ -1301,7 +1320,7 @@ contains
         end do lines
     end subroutine read_all_lines
 
-    !> One line of any length (kept up to max_line_kept characters).
+    !> One line of any length (kept up to max_line_kept + 1 characters: longer is an error).
     subroutine read_one_line(u, line, at_end, ios, msg)
         integer, intent(in) :: u
         character(len=:), allocatable, intent(out) :: line
@@ -1315,8 +1334,8 @@ contains
         chunks: do
             got = 0
             read (u, '(a)', advance='no', iostat=ios, iomsg=msg, size=got) chunk
-            if (len(line) < max_line_kept) &
-                line = line//chunk(1:min(got, max_line_kept - len(line)))
+            if (len(line) <= max_line_kept) &
+                line = line//chunk(1:min(got, max_line_kept + 1 - len(line)))
             if (ios /= 0) exit chunks
         end do chunks
         if (is_iostat_end(ios)) at_end = .true.

@@ -1,7 +1,7 @@
 !> Raw bind(C) interfaces to the GSL functions fricon uses. Nothing else lives here; the
 !! physics calls `gsl_wrappers`, never these.
 module gsl_bindings
-    use iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_char
+    use iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_char, c_size_t
     implicit none
     private
 
@@ -14,8 +14,16 @@ module gsl_bindings
         real(c_double) :: err
     end type gsl_sf_result
 
+    !> struct gsl_function { double (* function) (double x, void * params); void * params; }
+    type, bind(c), public :: gsl_function
+        type(c_funptr) :: function
+        type(c_ptr) :: params
+    end type gsl_function
+
     public :: gsl_set_error_handler_off, gsl_strerror
     public :: gsl_sf_ellint_rf_e, gsl_sf_ellint_rd_e
+    public :: gsl_integration_workspace_alloc, gsl_integration_workspace_free
+    public :: gsl_integration_qags
 
     interface
         ! gsl_error_handler_t * gsl_set_error_handler_off (void);
@@ -48,6 +56,34 @@ module gsl_bindings
             type(gsl_sf_result), intent(out) :: result
             integer(c_int) :: gsl_sf_ellint_rd_e
         end function gsl_sf_ellint_rd_e
+
+        ! gsl_integration_workspace * gsl_integration_workspace_alloc (size_t n);
+        function gsl_integration_workspace_alloc(n) &
+            bind(c, name='gsl_integration_workspace_alloc')
+            import :: c_size_t, c_ptr
+            integer(c_size_t), value :: n
+            type(c_ptr) :: gsl_integration_workspace_alloc
+        end function gsl_integration_workspace_alloc
+
+        ! void gsl_integration_workspace_free (gsl_integration_workspace * w);
+        subroutine gsl_integration_workspace_free(w) bind(c, name='gsl_integration_workspace_free')
+            import :: c_ptr
+            type(c_ptr), value :: w
+        end subroutine gsl_integration_workspace_free
+
+        ! int gsl_integration_qags (const gsl_function * f, double a, double b, double epsabs,
+        !     double epsrel, size_t limit, gsl_integration_workspace * workspace,
+        !     double * result, double * abserr);
+        function gsl_integration_qags(f, a, b, epsabs, epsrel, limit, workspace, result, &
+                                      abserr) bind(c, name='gsl_integration_qags')
+            import :: gsl_function, c_double, c_size_t, c_ptr, c_int
+            type(gsl_function), intent(in) :: f
+            real(c_double), value :: a, b, epsabs, epsrel
+            integer(c_size_t), value :: limit
+            type(c_ptr), value :: workspace
+            real(c_double), intent(out) :: result, abserr
+            integer(c_int) :: gsl_integration_qags
+        end function gsl_integration_qags
     end interface
 
     ! keep c_char referenced for the wrappers that copy C strings

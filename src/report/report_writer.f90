@@ -289,9 +289,11 @@ contains
         if (m%kind == MODEL_BEAM) write (u, '(3x,a,2es16.8,a,es9.2)') &
             'moment:     reaction, load ', sol%reaction(3), sol%applied(3), '  rel.diff ', &
             rel_diff(sol%reaction(3), sol%applied(3), v*m%length)
-        write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z * gap| (nondim) ', &
-            sol%complementarity, '  (penalty: O(eta_bar))'
-        write (u, '(3x,a,es10.2)') 'most tensile Sigma_z (penalised lift-off zone) ', &
+        write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z * gap| over lift-off '// &
+            'stations (nondim) ', sol%complementarity, '  (penalty: O(eta_bar))'
+        write (u, '(3x,a,es10.2,a)') 'compatibility max |gap|/max W over contact stations ', &
+            sol%compatibility, '  (pointwise error of the weak (Galerkin) contact condition)'
+        write (u, '(3x,a,es10.2)') 'minimum Sigma_z (negative only where lifted off) ', &
             sol%min_sigma_z*tab%scale(5)
         tol_adm = 10.0_dp*m%eps_bar*max(1.0_dp, p_max*tab%scale(5))
         write (u, '(3x,a,es10.2,a,es9.2,a)') 'friction admissibility max(|Sigma_x| - f Sigma_z) ', &

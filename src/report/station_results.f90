@@ -53,8 +53,14 @@ contains
             tab%field(8, i) = m%f*max(tab%field(5, i), 0.0_dp)
         end do stations
         call set_scales(m, tab)
-        sol%complementarity = maxval(abs(tab%field(5, :)*tab%field(6, :))) &
-                              *tab%scale(5)*tab%scale(2)
+        ! complementarity proper: where the structure has lifted off, sigma_z * gap ~ 0
+        sol%complementarity = maxval(abs(tab%field(5, :)*tab%field(6, :)), &
+                                     mask=tab%state == STATE_LIFTOFF)*tab%scale(5)*tab%scale(2)
+        if (count(tab%state == STATE_LIFTOFF) == 0) sol%complementarity = 0.0_dp
+        ! where in contact, the pointwise gap is the error of the weak (Galerkin) compatibility
+        sol%compatibility = maxval(abs(tab%field(6, :)), mask=tab%state /= STATE_LIFTOFF) &
+                            /max(maxval(abs(tab%field(2, :))), tiny(1.0_dp))
+        if (count(tab%state /= STATE_LIFTOFF) == 0) sol%compatibility = 0.0_dp
     end subroutine tabulate
 
     !> Nodes of the mesh, or `stations` equally spaced points.

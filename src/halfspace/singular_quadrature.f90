@@ -1,0 +1,588 @@
+!> Quadrature of the half-space surface kernels (logarithmic singularity, step discontinuity)
+!! in 1-D Galerkin double integrals and in displacement (collocation) integrals, to full double
+!! precision; and the Galerkin assembly / displacement evaluation shared by the BEAM and PLATE
+!! operators.
+!!
+!! A kernel is handed over in split form (kernel reference §A.3, §B.3, §C.1): its value F and
+!! the coefficient P of its logarithmic singularity,
+!!     F(x, xi) = P(x, xi) ln|x - xi| + Q(x, xi),      P, Q analytic next to x = xi,
+!! plus at most a jump across x = xi (coupling kernels A2/A4, B11, C2/C3). Every rule built here
+!! is a list of points with two weights (w, wc) such that
+!!     integral of F  ~=  sum_i ( w_i F_i + wc_i P_i ),
+!! with wc_i = 0 away from the singularity, so that P is only evaluated next to it.
+!!
+!! Building blocks:
+!!  * Gauss–Legendre (GL) pieces graded geometrically away from the singular point, each piece
+!!    no longer than its distance from the singular point; the number of points follows from the
+!!    Bernstein-ellipse parameter rho of that ratio (error ~ rho^(-2n), target 1e-17).
+!!  * a product-integration rule on the GL nodes of [0,1] for ln(v) A(v): A is interpolated in
+!!    shifted Legendre polynomials and integrated exactly with the moments
+!!    int_0^1 P_j(2v-1) ln v dv = -1 (j = 0), (-1)^(j+1)/(j(j+1)) (j >= 1); exact for degree < n,
+!!    spectrally convergent for analytic A.
+!!  * element pairs that touch or nearly touch: relative coordinates u = x - xi (the square is cut
+!!    along its diagonal and at the kinks of the inner range, so step kernels are integrated
+!!    exactly too), product-log rule in u next to u = 0, inner GL in x;
+!!  * the element at the origin of a kernel homogeneous of degree 0 about x = 0 (axisymmetric ring
+!!    kernels, G(r, s) = F(s/r), nothing analytic at the corner (0,0)): ratio coordinates
+!!    xi = x t and x = xi t on the two triangles, polynomial in the outer variable, product-log
+!!    rule in t next to t = 1;
+!!  * well separated pairs: tensor GL with the number of points set by distance/size.
+module singular_quadrature
+    use kinds, only: dp
+    use errors, only: error_t, new_error, add_context, EXIT_INTERNAL
+    use quadrature, only: gauss_legendre
+    use shape_functions, only: basis_t, eval_basis, max_local
+    implicit none
+    private
+
+    public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
+    public :: new_gauss_tables, build_pair_rule, build_line_rule
+    public :: assemble_split_kernel, displacement_split_kernel
+
+    integer, parameter :: n_max = 32        !! largest GL rule tabulated
+    integer, parameter :: n_log = 24        !! points of the product-log rule
+    integer, parameter :: n_inner = 12      !! inner GL points of the pair rules
+    real(dp), parameter :: target_digits = 8.5_dp  !! log10(1/error) per direction, error rho^-2n
+    real(dp), parameter :: near_ratio = 0.5_dp     !! gap/size below which the pair rule is used
+
+    !> A 2x2 surface kernel in split form. Index 1 = tangential (sigma_x, u), 2 = normal
+    !! (sigma_z, w): f(i, j) = displacement i due to a unit traction j.
+    type, abstract :: split_kernel_t
+        logical :: homogeneous = .false.   !! homogeneous of degree 0 about x = 0 (ring kernels)
+    contains
+        procedure(kernel_values_i), deferred :: values
+        procedure(field_weight_i), deferred :: field_weight
+        procedure(log_length_i), deferred :: log_length
+    end type split_kernel_t
+
+    abstract interface
+        !> F and P of the four kernels at the points (x(k), xi(k)); P only where with_log(k).
+        subroutine kernel_values_i(self, x, xi, with_log, f, p, err)
+            import :: split_kernel_t, dp, error_t
+            class(split_kernel_t), intent(in) :: self
+            real(dp), intent(in) :: x(:)           !! field points
+            real(dp), intent(in) :: xi(:)          !! source points
+            logical, intent(in) :: with_log(:)     !! P wanted at this point
+            real(dp), intent(out) :: f(:, :, :)    !! f(i, j, k) kernel values
+            real(dp), intent(out) :: p(:, :, :)    !! p(i, j, k) coefficient of ln|x - xi|
+            type(error_t), allocatable, intent(out) :: err
+        end subroutine kernel_values_i
+
+        !> Measure of the field integral: 1 (beam) or 2 pi r (plate).
+        pure real(dp) function field_weight_i(self, x)
+            import :: split_kernel_t, dp
+            class(split_kernel_t), intent(in) :: self
+            real(dp), intent(in) :: x
+        end function field_weight_i
+
+        !> Longest distance from a singular point at x_sing over which the split (P, Q) stays
+        !! analytic; 0 when the kernel is regular there.
+        pure real(dp) function log_length_i(self, x_sing)
+            import :: split_kernel_t, dp
+            class(split_kernel_t), intent(in) :: self
+            real(dp), intent(in) :: x_sing
+        end function log_length_i
+    end interface
+
+    !> GL rules on [0, 1] for n = 1..n_max and the product-log weights of the n_log rule.
+    type :: gauss_tables_t
+        real(dp) :: v(n_max, n_max) = 0.0_dp   !! v(i, n): node i of the n-point rule
+        real(dp) :: w(n_max, n_max) = 0.0_dp   !! w(i, n): its weight
+        real(dp) :: wl(n_log) = 0.0_dp         !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n_log))
+    end type gauss_tables_t
+
+    !> Points of a double integral over (x, xi) with weights for F (w) and for P (wc).
+    type :: point_rule_t
+        integer :: n = 0
+        real(dp), allocatable :: x(:), xi(:), w(:), wc(:)
+    end type point_rule_t
+
+    !> Points of a single integral over s with weights for F (w) and for P (wc).
+    type :: line_rule_t
+        integer :: n = 0
+        real(dp), allocatable :: s(:), w(:), wc(:)
+    end type line_rule_t
+
+contains
+
+    !> Tabulate GL rules on [0, 1] and the product-log weights (see module header).
+    pure subroutine new_gauss_tables(tab)
+        type(gauss_tables_t), intent(out) :: tab
+        real(dp) :: xi(n_max), wt(n_max), leg(0:n_log - 1), mom(0:n_log - 1)
+        integer :: n, i, j
+        rules: do n = 1, n_max
+            call gauss_legendre(n, xi(1:n), wt(1:n))
+            tab%v(1:n, n) = 0.5_dp*(xi(1:n) + 1.0_dp)
+            tab%w(1:n, n) = 0.5_dp*wt(1:n)
+        end do rules
+        mom(0) = -1.0_dp
+        moments: do j = 1, n_log - 1
+            mom(j) = real((-1)**(j + 1), dp)/real(j*(j + 1), dp)
+        end do moments
+        nodes: do i = 1, n_log
+            call shifted_legendre(n_log - 1, tab%v(i, n_log), leg)
+            tab%wl(i) = 0.0_dp
+            do j = 0, n_log - 1
+                tab%wl(i) = tab%wl(i) + real(2*j + 1, dp)*leg(j)*mom(j)
+            end do
+            tab%wl(i) = tab%wl(i)*tab%w(i, n_log)
+        end do nodes
+    end subroutine new_gauss_tables
+
+    !> P_j(2v - 1), j = 0..n, by the three-term recurrence.
+    pure subroutine shifted_legendre(n, v, leg)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: v
+        real(dp), intent(out) :: leg(0:n)
+        real(dp) :: y
+        integer :: j
+        y = 2.0_dp*v - 1.0_dp
+        leg(0) = 1.0_dp
+        if (n >= 1) leg(1) = y
+        recurrence: do j = 2, n
+            leg(j) = (real(2*j - 1, dp)*y*leg(j - 1) - real(j - 1, dp)*leg(j - 2))/real(j, dp)
+        end do recurrence
+    end subroutine shifted_legendre
+
+    !> GL points for a piece whose distance from the nearest singularity is `ratio` times its
+    !! length: rho = 1 + 2 ratio + sqrt((1 + 2 ratio)^2 - 1), n = target_digits / log10(rho).
+    pure integer function points_for_ratio(ratio) result(n)
+        real(dp), intent(in) :: ratio
+        real(dp) :: c, rho
+        c = 1.0_dp + 2.0_dp*max(ratio, 0.0_dp)
+        rho = c + sqrt(c*c - 1.0_dp)
+        if (rho <= 1.0_dp + 1.0e-3_dp) then
+            n = n_max
+        else
+            n = min(n_max, max(4, ceiling(target_digits/log10(rho))))
+        end if
+    end function points_for_ratio
+
+    ! ---------------------------------------------------------------- one-dimensional rules
+
+    !> Rule for int_a^b F(s) ds with F = P ln|s - x0| + Q: log pieces of length <= u0 next to
+    !! x0 (u0 <= 0: F regular at x0), GL pieces graded geometrically away from x0 elsewhere.
+    pure subroutine build_line_rule(tab, a, b, x0, u0, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: a, b          !! interval, a < b
+        real(dp), intent(in) :: x0            !! singular point (anywhere)
+        real(dp), intent(in) :: u0            !! longest log piece
+        type(line_rule_t), intent(inout) :: line
+        line%n = 0
+        if (x0 <= a) then
+            call add_ray(tab, x0, 1.0_dp, a - x0, b - x0, u0, line)
+        else if (x0 >= b) then
+            call add_ray(tab, x0, -1.0_dp, x0 - b, x0 - a, u0, line)
+        else
+            call add_ray(tab, x0, -1.0_dp, 0.0_dp, x0 - a, u0, line)
+            call add_ray(tab, x0, 1.0_dp, 0.0_dp, b - x0, u0, line)
+        end if
+    end subroutine build_line_rule
+
+    !> Append the rule for s = x0 + dir u, u in [d_start, d_end], singular at u = 0.
+    pure subroutine add_ray(tab, x0, dir, d_start, d_end, u0, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: x0, dir, d_start, d_end, u0
+        type(line_rule_t), intent(inout) :: line
+        real(dp) :: lo, hi
+        if (.not. d_end > d_start) return
+        lo = d_start
+        if (lo <= 8.0_dp*epsilon(1.0_dp)*max(abs(x0), d_end)) then
+            ! the piece touches the singular point (up to rounding of the node coordinates)
+            if (u0 <= 0.0_dp) then
+                call add_gauss_piece(tab, x0, dir, 0.0_dp, d_end, points_for_ratio(1.0_dp), line)
+                return
+            end if
+            hi = min(u0, d_end)
+            call add_log_piece(tab, x0, dir, hi, line)
+            lo = hi
+        end if
+        geometric: do while (lo < d_end)
+            hi = 2.0_dp*lo
+            if (d_end <= 2.5_dp*lo) hi = d_end
+            call add_gauss_piece(tab, x0, dir, lo, hi, points_for_ratio(lo/(hi - lo)), line)
+            lo = hi
+        end do geometric
+    end subroutine add_ray
+
+    !> Product-log piece u in [0, len]:
+    !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i.
+    pure subroutine add_log_piece(tab, x0, dir, len, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: x0, dir, len
+        type(line_rule_t), intent(inout) :: line
+        integer :: i
+        nodes: do i = 1, n_log
+            call push_line(line, x0 + dir*len*tab%v(i, n_log), len*tab%w(i, n_log), &
+                           len*(tab%wl(i) - tab%w(i, n_log)*log(tab%v(i, n_log))))
+        end do nodes
+    end subroutine add_log_piece
+
+    !> Plain n-point GL piece u in [lo, hi].
+    pure subroutine add_gauss_piece(tab, x0, dir, lo, hi, n, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: x0, dir, lo, hi
+        integer, intent(in) :: n
+        type(line_rule_t), intent(inout) :: line
+        integer :: i
+        nodes: do i = 1, n
+            call push_line(line, x0 + dir*(lo + (hi - lo)*tab%v(i, n)), (hi - lo)*tab%w(i, n), &
+                           0.0_dp)
+        end do nodes
+    end subroutine add_gauss_piece
+
+    pure subroutine push_line(line, s, w, wc)
+        type(line_rule_t), intent(inout) :: line
+        real(dp), intent(in) :: s, w, wc
+        real(dp), allocatable :: tmp(:)
+        integer :: cap
+        if (.not. allocated(line%s)) then
+            allocate (line%s(256), line%w(256), line%wc(256))
+        else if (line%n == size(line%s)) then
+            cap = 2*size(line%s)
+            allocate (tmp(cap))
+            tmp(1:line%n) = line%s(1:line%n)
+            call move_alloc(tmp, line%s)
+            allocate (tmp(cap))
+            tmp(1:line%n) = line%w(1:line%n)
+            call move_alloc(tmp, line%w)
+            allocate (tmp(cap))
+            tmp(1:line%n) = line%wc(1:line%n)
+            call move_alloc(tmp, line%wc)
+        end if
+        line%n = line%n + 1
+        line%s(line%n) = s
+        line%w(line%n) = w
+        line%wc(line%n) = wc
+    end subroutine push_line
+
+    pure subroutine push_point(rule, x, xi, w, wc)
+        type(point_rule_t), intent(inout) :: rule
+        real(dp), intent(in) :: x, xi, w, wc
+        real(dp), allocatable :: tmp(:)
+        integer :: cap
+        if (.not. allocated(rule%x)) then
+            allocate (rule%x(1024), rule%xi(1024), rule%w(1024), rule%wc(1024))
+        else if (rule%n == size(rule%x)) then
+            cap = 2*size(rule%x)
+            allocate (tmp(cap))
+            tmp(1:rule%n) = rule%x(1:rule%n)
+            call move_alloc(tmp, rule%x)
+            allocate (tmp(cap))
+            tmp(1:rule%n) = rule%xi(1:rule%n)
+            call move_alloc(tmp, rule%xi)
+            allocate (tmp(cap))
+            tmp(1:rule%n) = rule%w(1:rule%n)
+            call move_alloc(tmp, rule%w)
+            allocate (tmp(cap))
+            tmp(1:rule%n) = rule%wc(1:rule%n)
+            call move_alloc(tmp, rule%wc)
+        end if
+        rule%n = rule%n + 1
+        rule%x(rule%n) = x
+        rule%xi(rule%n) = xi
+        rule%w(rule%n) = w
+        rule%wc(rule%n) = wc
+    end subroutine push_point
+
+    ! ---------------------------------------------------------------- element-pair rules
+
+    !> Rule for int_{a1}^{b1} int_{a2}^{b2} F(x, xi) dxi dx (x field, xi source).
+    !! u0: longest log piece next to the diagonal; ratio_rule: use ratio coordinates (coincident
+    !! elements at the origin of a kernel homogeneous of degree 0).
+    pure subroutine build_pair_rule(tab, a1, b1, a2, b2, u0, ratio_rule, rule, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: a1, b1          !! field element
+        real(dp), intent(in) :: a2, b2          !! source element
+        real(dp), intent(in) :: u0              !! longest log piece
+        logical, intent(in) :: ratio_rule       !! ratio coordinates (see module header)
+        type(point_rule_t), intent(inout) :: rule
+        type(line_rule_t), intent(inout) :: line   !! work space
+        real(dp) :: gap
+        rule%n = 0
+        gap = max(a2 - b1, a1 - b2)
+        if (gap >= near_ratio*max(b1 - a1, b2 - a2)) then
+            call add_tensor(tab, a1, b1, a2, b2, points_for_ratio(gap/(b1 - a1)), &
+                            points_for_ratio(gap/(b2 - a2)), rule)
+        else if (ratio_rule) then
+            call add_ratio(tab, b1, rule, line)
+        else
+            call add_relative(tab, a1, b1, a2, b2, u0, rule, line)
+        end if
+    end subroutine build_pair_rule
+
+    pure subroutine add_tensor(tab, a1, b1, a2, b2, n1, n2, rule)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: a1, b1, a2, b2
+        integer, intent(in) :: n1, n2
+        type(point_rule_t), intent(inout) :: rule
+        integer :: i, j
+        field: do i = 1, n1
+            source: do j = 1, n2
+                call push_point(rule, a1 + (b1 - a1)*tab%v(i, n1), a2 + (b2 - a2)*tab%v(j, n2), &
+                                (b1 - a1)*tab%w(i, n1)*(b2 - a2)*tab%w(j, n2), 0.0_dp)
+            end do source
+        end do field
+    end subroutine add_tensor
+
+    !> Relative coordinates u = x - xi over pieces of u between the kinks of the inner range
+    !! x in [max(a1, a2 + u), min(b1, b2 + u)] and the diagonal u = 0.
+    pure subroutine add_relative(tab, a1, b1, a2, b2, u0, rule, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: a1, b1, a2, b2, u0
+        type(point_rule_t), intent(inout) :: rule
+        type(line_rule_t), intent(inout) :: line
+        real(dp) :: cuts(5), tiny_len, lo, hi, x_lo, x_hi, len, x
+        integer :: n_cut, i, k, j
+        tiny_len = 1.0e-14_dp*((b1 - a1) + (b2 - a2))
+        cuts = [a1 - b2, a1 - a2, b1 - b2, 0.0_dp, b1 - a2]
+        call sort_small(cuts)
+        n_cut = 5
+        pieces: do i = 1, n_cut - 1
+            lo = max(cuts(i), a1 - b2)
+            hi = min(cuts(i + 1), b1 - a2)
+            if (hi - lo <= tiny_len) cycle pieces
+            line%n = 0
+            if (lo >= 0.0_dp) then
+                call add_ray(tab, 0.0_dp, 1.0_dp, lo, hi, u0, line)
+            else
+                call add_ray(tab, 0.0_dp, -1.0_dp, -hi, -lo, u0, line)
+            end if
+            u_nodes: do k = 1, line%n
+                x_lo = max(a1, a2 + line%s(k))
+                x_hi = min(b1, b2 + line%s(k))
+                len = x_hi - x_lo
+                if (len <= 0.0_dp) cycle u_nodes
+                x_nodes: do j = 1, n_inner
+                    x = x_lo + len*tab%v(j, n_inner)
+                    call push_point(rule, x, x - line%s(k), line%w(k)*len*tab%w(j, n_inner), &
+                                    line%wc(k)*len*tab%w(j, n_inner))
+                end do x_nodes
+            end do u_nodes
+        end do pieces
+    end subroutine add_relative
+
+    !> Ratio coordinates on [0, h]^2: xi = x t (xi < x) and x = xi t (x < xi), t in [0, 1],
+    !! ln|x - xi| = ln(outer) + ln(1 - t); product-log rule next to t = 1.
+    pure subroutine add_ratio(tab, h, rule, line)
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: h
+        type(point_rule_t), intent(inout) :: rule
+        type(line_rule_t), intent(inout) :: line
+        real(dp) :: outer, w_outer
+        integer :: i, k
+        call build_line_rule(tab, 0.0_dp, 1.0_dp, 1.0_dp, 0.5_dp, line)
+        outer_nodes: do i = 1, n_inner
+            outer = h*tab%v(i, n_inner)
+            w_outer = h*tab%w(i, n_inner)*outer
+            t_nodes: do k = 1, line%n
+                call push_point(rule, outer, outer*line%s(k), w_outer*line%w(k), &
+                                w_outer*line%wc(k))
+                call push_point(rule, outer*line%s(k), outer, w_outer*line%w(k), &
+                                w_outer*line%wc(k))
+            end do t_nodes
+        end do outer_nodes
+    end subroutine add_ratio
+
+    !> Insertion sort of a short array.
+    pure subroutine sort_small(a)
+        real(dp), intent(inout) :: a(:)
+        real(dp) :: key
+        integer :: i, j
+        outer: do i = 2, size(a)
+            key = a(i)
+            j = i - 1
+            shift: do while (j >= 1)
+                if (a(j) <= key) exit shift
+                a(j + 1) = a(j)
+                j = j - 1
+            end do shift
+            a(j + 1) = key
+        end do outer
+    end subroutine sort_small
+
+    ! ---------------------------------------------------------------- assembly and evaluation
+
+    !> Check that the two bases live on the same mesh.
+    pure subroutine check_bases(bx, bz, err)
+        type(basis_t), intent(in) :: bx, bz
+        type(error_t), allocatable, intent(out) :: err
+        if (.not. (allocated(bx%x) .and. allocated(bz%x))) then
+            call new_error(err, EXIT_INTERNAL, 'traction bases are not built')
+        else if (bx%ne < 1 .or. bx%ne /= bz%ne) then
+            call new_error(err, EXIT_INTERNAL, 'traction bases have different meshes')
+        else if (any(bx%x /= bz%x)) then
+            call new_error(err, EXIT_INTERNAL, 'traction bases have different meshes')
+        else if (bx%n_local > max_local .or. bz%n_local > max_local) then
+            call new_error(err, EXIT_INTERNAL, 'traction basis with too many local functions')
+        end if
+    end subroutine check_bases
+
+    !> T_ab = int int g_a(x) W(x) K(x, xi) g_b(xi) dxi dx, blocks [T_xx T_xz; T_zx T_zz] with all
+    !! bx coefficients first. Both triangles are integrated (no symmetrisation).
+    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx            !! basis of sigma_x
+        type(basis_t), intent(in) :: bz            !! basis of sigma_z
+        real(dp), allocatable, intent(out) :: t_mat(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        type(gauss_tables_t) :: tab
+        type(point_rule_t) :: rule
+        type(line_rule_t) :: line
+        real(dp), allocatable :: f(:, :, :), p(:, :, :)
+        real(dp) :: a1, b1, a2, b2
+        integer :: e1, e2, nx, nz
+        character(len=60) :: where
+
+        call check_bases(bx, bz, err)
+        if (allocated(err)) return
+        nx = bx%n_dof
+        nz = bz%n_dof
+        allocate (t_mat(nx + nz, nx + nz), source=0.0_dp)
+        call new_gauss_tables(tab)
+        field_elements: do e1 = 1, bx%ne
+            a1 = bx%x(e1 - 1)
+            b1 = bx%x(e1)
+            source_elements: do e2 = 1, bx%ne
+                a2 = bx%x(e2 - 1)
+                b2 = bx%x(e2)
+                call build_pair_rule(tab, a1, b1, a2, b2, kernel%log_length(max(a1, a2)), &
+                                     kernel%homogeneous .and. e1 == e2 .and. &
+                                     .not. kernel%log_length(a1) > 0.0_dp, rule, line)
+                call grow(f, p, rule%n)
+                call kernel%values(rule%x(1:rule%n), rule%xi(1:rule%n), rule%wc(1:rule%n) /= 0.0_dp, &
+                                   f, p, err)
+                if (allocated(err)) then
+                    write (where, '("half-space operator, elements ",i0," and ",i0)') e1, e2
+                    call add_context(err, trim(where))
+                    return
+                end if
+                call add_pair(kernel, bx, bz, e1, e2, rule, f, p, t_mat)
+            end do source_elements
+        end do field_elements
+    end subroutine assemble_split_kernel
+
+    !> Make sure the kernel work arrays hold n points.
+    pure subroutine grow(f, p, n)
+        real(dp), allocatable, intent(inout) :: f(:, :, :), p(:, :, :)
+        integer, intent(in) :: n
+        if (allocated(f)) then
+            if (size(f, 3) >= n) return
+            deallocate (f, p)
+        end if
+        allocate (f(2, 2, max(n, 256)), p(2, 2, max(n, 256)))
+    end subroutine grow
+
+    !> Add the contribution of one element pair.
+    pure subroutine add_pair(kernel, bx, bz, e1, e2, rule, f, p, t_mat)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2
+        type(point_rule_t), intent(in) :: rule
+        real(dp), intent(in) :: f(:, :, :), p(:, :, :)
+        real(dp), intent(inout) :: t_mat(:, :)
+        integer :: idx_f(max_local, 2), idx_s(max_local, 2), nl(2), off(2), k, i, j, a, b
+        real(dp) :: val_f(max_local, 2), val_s(max_local, 2), c(2, 2), wx
+        nl = [bx%n_local, bz%n_local]
+        off = [0, bx%n_dof]
+        points: do k = 1, rule%n
+            call basis_at(bx, e1, rule%x(k), idx_f(:, 1), val_f(:, 1))
+            call basis_at(bz, e1, rule%x(k), idx_f(:, 2), val_f(:, 2))
+            call basis_at(bx, e2, rule%xi(k), idx_s(:, 1), val_s(:, 1))
+            call basis_at(bz, e2, rule%xi(k), idx_s(:, 2), val_s(:, 2))
+            wx = kernel%field_weight(rule%x(k))
+            c = wx*(rule%w(k)*f(:, :, k))
+            if (rule%wc(k) /= 0.0_dp) c = c + wx*rule%wc(k)*p(:, :, k)
+            blocks_i: do i = 1, 2
+                blocks_j: do j = 1, 2
+                    rows: do a = 1, nl(i)
+                        cols: do b = 1, nl(j)
+                            t_mat(off(i) + idx_f(a, i), off(j) + idx_s(b, j)) = &
+                                t_mat(off(i) + idx_f(a, i), off(j) + idx_s(b, j)) + &
+                                val_f(a, i)*c(i, j)*val_s(b, j)
+                        end do cols
+                    end do rows
+                end do blocks_j
+            end do blocks_i
+        end do points
+    end subroutine add_pair
+
+    !> Basis functions of element e at the physical point x.
+    pure subroutine basis_at(basis, e, x, idx, val)
+        type(basis_t), intent(in) :: basis
+        integer, intent(in) :: e
+        real(dp), intent(in) :: x
+        integer, intent(out) :: idx(max_local)
+        real(dp), intent(out) :: val(max_local)
+        real(dp) :: der(max_local), x_out, xi
+        xi = (2.0_dp*x - (basis%x(e - 1) + basis%x(e)))/(basis%x(e) - basis%x(e - 1))
+        call eval_basis(basis, e, xi, idx, val, der, x_out)
+    end subroutine basis_at
+
+    !> Surface displacements u (tangential) and w (normal) at the points x_eval produced by the
+    !! tractions sigma_x = sum rx_b g_b, sigma_z = sum rz_b g_b: u_i(x) = int K_ij(x, s) sigma_j ds.
+    subroutine displacement_split_kernel(kernel, bx, bz, rx, rz, x_eval, u, w, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
+        real(dp), intent(in) :: rz(:)         !! sigma_z coefficients (bz)
+        real(dp), intent(in) :: x_eval(:)     !! evaluation points
+        real(dp), intent(out) :: u(:)         !! tangential displacement
+        real(dp), intent(out) :: w(:)         !! normal displacement (down positive)
+        type(error_t), allocatable, intent(out) :: err
+        type(gauss_tables_t) :: tab
+        type(line_rule_t) :: line
+        real(dp), allocatable :: f(:, :, :), p(:, :, :), x_rep(:)
+        integer :: i, e
+        character(len=60) :: where
+
+        call check_bases(bx, bz, err)
+        if (allocated(err)) return
+        if (size(rx) /= bx%n_dof .or. size(rz) /= bz%n_dof .or. size(u) /= size(x_eval) &
+            .or. size(w) /= size(x_eval)) then
+            call new_error(err, EXIT_INTERNAL, 'surface displacement: array sizes do not match')
+            return
+        end if
+        call new_gauss_tables(tab)
+        u = 0.0_dp
+        w = 0.0_dp
+        points: do i = 1, size(x_eval)
+            elements: do e = 1, bx%ne
+                call build_line_rule(tab, bx%x(e - 1), bx%x(e), x_eval(i), &
+                                     kernel%log_length(x_eval(i)), line)
+                call grow(f, p, line%n)
+                if (allocated(x_rep)) deallocate (x_rep)
+                allocate (x_rep(line%n), source=x_eval(i))
+                call kernel%values(x_rep, line%s(1:line%n), line%wc(1:line%n) /= 0.0_dp, f, p, err)
+                if (allocated(err)) then
+                    write (where, '("surface displacement at point ",i0)') i
+                    call add_context(err, trim(where))
+                    return
+                end if
+                call add_line(bx, bz, rx, rz, e, line, f, p, u(i), w(i))
+            end do elements
+        end do points
+    end subroutine displacement_split_kernel
+
+    !> Add one element's contribution to the displacements at one point.
+    pure subroutine add_line(bx, bz, rx, rz, e, line, f, p, u, w)
+        type(basis_t), intent(in) :: bx, bz
+        real(dp), intent(in) :: rx(:), rz(:)
+        integer, intent(in) :: e
+        type(line_rule_t), intent(in) :: line
+        real(dp), intent(in) :: f(:, :, :), p(:, :, :)
+        real(dp), intent(inout) :: u, w
+        integer :: idx(max_local), k
+        real(dp) :: val(max_local), sig_x, sig_z, c(2, 2)
+        points: do k = 1, line%n
+            call basis_at(bx, e, line%s(k), idx, val)
+            sig_x = sum(val(1:bx%n_local)*rx(idx(1:bx%n_local)))
+            call basis_at(bz, e, line%s(k), idx, val)
+            sig_z = sum(val(1:bz%n_local)*rz(idx(1:bz%n_local)))
+            c = line%w(k)*f(:, :, k)
+            if (line%wc(k) /= 0.0_dp) c = c + line%wc(k)*p(:, :, k)
+            u = u + c(1, 1)*sig_x + c(1, 2)*sig_z
+            w = w + c(2, 1)*sig_x + c(2, 2)*sig_z
+        end do points
+    end subroutine add_line
+end module singular_quadrature
