@@ -10,7 +10,9 @@ set terminal pngcairo size 1400,1000 font 'Sans,11' noenhanced
 set output png
 set multiplot layout 2,2 title title font 'Sans,14'
 set grid
-set key box opaque
+set key box opaque font ',9' samplen 2
+set autoscale fix
+set offsets 0, 0, graph 0.08, graph 0.08
 xlab = (model eq 'BEAM') ? 't = x/l' : 't = r/a'
 set xlabel xlab
 
@@ -22,6 +24,9 @@ plot data u 1:3 w lp pt 7 ps 0.5 lw 2 lc rgb '#1f77b4' t 'W (structure)', \
 set yrange [*:*] noreverse
 
 set title 'Contact tractions on the soil'
+set autoscale y
+set key outside bottom center horizontal
+set bmargin 6
 set ylabel 'Sigma'
 plot data u 1:6 w lp pt 7 ps 0.5 lw 2 lc rgb '#d62728' t 'Sigma_z (pressure)', \
      data u 1:5 w lp pt 5 ps 0.5 lw 2 lc rgb '#2ca02c' t 'Sigma_x (shear)', \
@@ -29,6 +34,9 @@ plot data u 1:6 w lp pt 7 ps 0.5 lw 2 lc rgb '#d62728' t 'Sigma_z (pressure)', \
      data u 1:(($9==2)?$5:1/0) w p pt 4 ps 1.2 lc rgb '#ff7f0e' t 'slip'
 
 set title 'Bending moment'
+unset bmargin
+set autoscale y
+set key inside top right vertical
 if (model eq 'BEAM') {
     set ylabel 'M/(F l)   (> 0 hogging)'
     plot data u 1:11 w lp pt 7 ps 0.5 lw 2 lc rgb '#9467bd' t 'M/(F l)'
@@ -39,6 +47,7 @@ if (model eq 'BEAM') {
 }
 
 set title 'Horizontal displacement and slip'
+set autoscale y
 set ylabel 'U, slip'
 plot data u 1:2 w lp pt 7 ps 0.5 lw 2 lc rgb '#17becf' t 'U (mid-plane)', \
      data u 1:8 w l lw 2 dt 2 lc rgb '#bcbd22' t 'slip = u_b - u_f'

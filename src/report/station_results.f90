@@ -54,13 +54,15 @@ contains
         end do stations
         call set_scales(m, tab)
         ! complementarity proper: where the structure has lifted off, sigma_z * gap ~ 0
-        sol%complementarity = maxval(abs(tab%field(5, :)*tab%field(6, :)), &
-                                     mask=tab%state == STATE_LIFTOFF)*tab%scale(5)*tab%scale(2)
-        if (count(tab%state == STATE_LIFTOFF) == 0) sol%complementarity = 0.0_dp
+        sol%complementarity = 0.0_dp
+        if (any(tab%state == STATE_LIFTOFF)) sol%complementarity = &
+            maxval(abs(tab%field(5, :)*tab%field(6, :)), mask=tab%state == STATE_LIFTOFF) &
+            *tab%scale(5)*tab%scale(2)
         ! where in contact, the pointwise gap is the error of the weak (Galerkin) compatibility
-        sol%compatibility = maxval(abs(tab%field(6, :)), mask=tab%state /= STATE_LIFTOFF) &
-                            /max(maxval(abs(tab%field(2, :))), tiny(1.0_dp))
-        if (count(tab%state /= STATE_LIFTOFF) == 0) sol%compatibility = 0.0_dp
+        sol%compatibility = 0.0_dp
+        if (any(tab%state /= STATE_LIFTOFF)) sol%compatibility = &
+            maxval(abs(tab%field(6, :)), mask=tab%state /= STATE_LIFTOFF) &
+            /max(maxval(abs(tab%field(2, :))), tiny(1.0_dp))
     end subroutine tabulate
 
     !> Nodes of the mesh, or `stations` equally spaced points.
