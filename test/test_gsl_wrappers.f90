@@ -31,6 +31,7 @@ contains
                  new_unittest('elliptic_lemniscatic', test_lemniscatic), &
                  new_unittest('elliptic_tiny_m1', test_tiny_m1), &
                  new_unittest('elliptic_legendre_relation', test_legendre_relation), &
+                 new_unittest('elliptic_domain_error', test_elliptic_domain), &
                  new_unittest('qags_singular_integrals', test_qags), &
                  new_unittest('qags_divergent_is_error', test_qags_divergent)]
     end subroutine collect_gsl_wrappers
@@ -65,14 +66,15 @@ contains
 
     !> m1 -> 0 (k -> 1, ring at the field radius): DLMF 19.12.1–2 to first order in m1,
     !! K = L + (m1/4)(L - 1), E = 1 + (m1/2)(L - 1/2), L = ln(4/k'), k' = sqrt(m1); the omitted
-    !! terms are O(m1^2 L), below 1e-19 for m1 <= 1e-9. A code forming 1 - k^2 from k^2 would
+    !! terms are O(m1^2 L), below 1e-16 relative for m1 <= 1e-9. A code forming 1 - k^2 from k^2 would
     !! lose 9 of 16 digits here (and E = R_F - (k^2/3) R_D would cancel to an error ~ eps K).
     subroutine test_tiny_m1(err)
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: k_val, e_val, m1, big_l
         integer :: i
-        cases: do i = 1, 3
-            m1 = 10.0_dp**(-9 - 4*(i - 1))
+        real(dp), parameter :: m1_list(4) = [1.0e-9_dp, 1.0e-13_dp, 1.0e-17_dp, 1.0e-250_dp]
+        cases: do i = 1, size(m1_list)
+            m1 = m1_list(i)
             big_l = log(4.0_dp/sqrt(m1))
             call elliptic_ke_m1(m1, k_val, e_val, err)
             if (allocated(err)) return
@@ -102,6 +104,19 @@ contains
             if (allocated(err)) return
         end do cases
     end subroutine test_legendre_relation
+
+    !> m1 = 0 (k = 1, K infinite) and m1 > 1 are reported as errors, never returned as numbers.
+    subroutine test_elliptic_domain(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: call_err
+        real(dp) :: k_val, e_val
+        call elliptic_ke_m1(0.0_dp, k_val, e_val, call_err)
+        call check(err, allocated(call_err), 'K(k = 1) returned a number')
+        if (allocated(err)) return
+        call elliptic_ke_m1(1.5_dp, k_val, e_val, call_err)
+        call check(err, allocated(call_err), 'm1 > 1 returned a number')
+        if (allocated(err)) return
+    end subroutine test_elliptic_domain
 
     !> int_0^1 ln x dx = -1, int_0^1 x^(-1/2) dx = 2 (elementary antiderivatives).
     subroutine test_qags(err)

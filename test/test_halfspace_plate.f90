@@ -1,12 +1,537 @@
-!> Placeholder suite: replaced by the real tests of halfspace_plate.
+!> Tests of halfspace_plate: ring kernels, surface displacements and the Galerkin flexibility of
+!! the half-space under axisymmetric tractions on a disk of radius a.
+!!
+!! Closed forms used (kernel reference §C, Johnson 1985 ch. 3), uniform pressure p on the disk,
+!! E = 2G(1+nu): w(0) = 2(1-nu^2) p a/E, w(a) = 4(1-nu^2) p a/(pi E),
+!! w(r) = 4(1-nu^2) p a/(pi E) E(r/a), u_r(r) = -(1-2nu)(1+nu) p r/(2E) (r <= a);
+!! uniform outward radial shear q: u_z(r) = -(1-2nu) q (a-r)/(2G) (r <= a).
 module test_halfspace_plate
-    use harness, only: unittest_t
+    use kinds, only: dp, pi
+    use harness, only: unittest_t, new_unittest, check, check_close, error_t
+    use errors, only: new_error, EXIT_INTERNAL
+    use quadrature, only: gauss_legendre
+    use gsl_wrappers, only: elliptic_ke_m1, integrand_t, integrate_qags
+    use mesh, only: mesh_t, new_mesh
+    use shape_functions, only: basis_t, new_basis, eval_basis, max_local, INTERP_P1, &
+                               INTERP_P2, INTERP_S2
+    use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement, &
+                               ring_kernels
     implicit none
     private
     public :: collect_halfspace_plate
+
+    interface
+        !> LAPACK Cholesky factorisation (local interface, see the brief of this suite).
+        subroutine dpotrf(uplo, n, a, lda, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, lda
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: info
+        end subroutine dpotrf
+    end interface
+
+    integer, parameter :: closed_w_pressure = 1   !! w(r) under uniform p = 1
+    integer, parameter :: closed_u_pressure = 2   !! u_r(r) under uniform p = 1
+    integer, parameter :: closed_w_shear = 3      !! u_z(r) under uniform q = 1
+
+    !> g_a(r) 2 pi r f(r) on one element, f one of the closed forms above.
+    type, extends(integrand_t) :: row_integrand_t
+        type(basis_t) :: basis
+        integer :: element = 1, dof = 1, kind = closed_w_pressure
+        real(dp) :: g = 1.0_dp, nu = 0.3_dp, a = 1.0_dp
+        logical :: failed = .false.
+    contains
+        procedure :: value => row_value
+    end type row_integrand_t
+
+    !> Boussinesq/Cerruti (B1), (B2) integrand around a ring, theta in [0, pi] (doubled).
+    type, extends(integrand_t) :: ring_theta_t
+        real(dp) :: r = 1.0_dp, s = 1.0_dp, g = 1.0_dp, nu = 0.3_dp
+        integer :: component = 1       !! 1 zz, 2 rz, 3 zr, 4 rr
+    contains
+        procedure :: value => ring_theta_value
+    end type ring_theta_t
+
 contains
+
     subroutine collect_halfspace_plate(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
-        allocate (tests(0))
+        tests = [new_unittest('ring_kernels_vs_boussinesq_cerruti', test_ring_kernels), &
+                 new_unittest('ring_kernel_axis_limits', test_axis_limits), &
+                 new_unittest('uniform_pressure_displacements', test_uniform_pressure), &
+                 new_unittest('galerkin_row_sums_vs_closed_forms', test_row_sums), &
+                 new_unittest('galerkin_vs_nested_displacement', test_nested), &
+                 new_unittest('symmetric', test_symmetric), &
+                 new_unittest('positive_definite', test_positive_definite), &
+                 new_unittest('incompressible_no_coupling', test_incompressible), &
+                 new_unittest('rigid_punch_convergence', test_punch)]
     end subroutine collect_halfspace_plate
+
+    ! ------------------------------------------------------------------ helpers
+
+    subroutine make_bases(ne, grading, fam_x, fam_z, bx, bz, err)
+        integer, intent(in) :: ne, fam_x, fam_z
+        character(len=*), intent(in) :: grading
+        type(basis_t), intent(out) :: bx, bz
+        type(error_t), allocatable, intent(out) :: err
+        type(mesh_t) :: msh
+        call new_mesh(msh, 0.0_dp, 1.3_dp, ne, grading, err)
+        if (allocated(err)) return
+        call new_basis(bx, msh, fam_x)
+        call new_basis(bz, msh, fam_z)
+    end subroutine make_bases
+
+    !> Value of basis function `dof` at r on element e (0 if not supported there).
+    pure real(dp) function basis_value(basis, e, dof, r)
+        type(basis_t), intent(in) :: basis
+        integer, intent(in) :: e, dof
+        real(dp), intent(in) :: r
+        integer :: idx(max_local), i
+        real(dp) :: val(max_local), der(max_local), x
+        call eval_basis(basis, e, (2.0_dp*r - basis%x(e - 1) - basis%x(e))/ &
+                        (basis%x(e) - basis%x(e - 1)), idx, val, der, x)
+        basis_value = 0.0_dp
+        do i = 1, basis%n_local
+            if (idx(i) == dof) basis_value = val(i)
+        end do
+    end function basis_value
+
+    function row_value(self, x) result(f)
+        class(row_integrand_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: f
+        real(dp) :: k_val, e_val, closed
+        type(error_t), allocatable :: err
+        select case (self%kind)
+        case (closed_w_pressure)
+            ! w = 2(1-nu) a/(pi G) E(r/a), 1 - (r/a)^2 formed as (a-r)(a+r)/a^2
+            call elliptic_ke_m1(max((self%a - x)*(self%a + x)/self%a**2, tiny(1.0_dp)), &
+                                k_val, e_val, err)
+            if (allocated(err)) self%failed = .true.
+            closed = 2.0_dp*(1.0_dp - self%nu)*self%a/(pi*self%g)*e_val
+        case (closed_u_pressure)
+            closed = -(1.0_dp - 2.0_dp*self%nu)*x/(4.0_dp*self%g)
+        case default
+            closed = -(1.0_dp - 2.0_dp*self%nu)*(self%a - x)/(2.0_dp*self%g)
+        end select
+        f = basis_value(self%basis, self%element, self%dof, x)*2.0_dp*pi*x*closed
+    end function row_value
+
+    !> Displacement component at (r, 0) of a unit line density on the ring of radius s, point
+    !! (s cos t, s sin t), from (B1) (normal) or (B2) (radial force (cos t, sin t)).
+    function ring_theta_value(self, x) result(f)
+        class(ring_theta_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: f
+        real(dp) :: dx, dy, rho2, rho, g, nu
+        g = self%g
+        nu = self%nu
+        dx = self%r - self%s*cos(x)
+        dy = -self%s*sin(x)
+        rho2 = dx*dx + dy*dy
+        rho = sqrt(rho2)
+        select case (self%component)
+        case (1)
+            f = (1.0_dp - nu)/(2.0_dp*pi*g*rho)
+        case (2)
+            f = -(1.0_dp - 2.0_dp*nu)*dx/(4.0_dp*pi*g*rho2)
+        case (3)
+            f = (1.0_dp - 2.0_dp*nu)*(dx*cos(x) + dy*sin(x))/(4.0_dp*pi*g*rho2)
+        case default
+            f = ((1.0_dp - nu)*cos(x) + nu*dx*(dx*cos(x) + dy*sin(x))/rho2)/(2.0_dp*pi*g*rho)
+        end select
+        f = 2.0_dp*f*self%s
+    end function ring_theta_value
+
+    !> sum over the points of a composite GL rule graded geometrically towards both ends of
+    !! [a, b] (ratio 0.2, 12 levels, 20 points a piece): nodes and weights.
+    subroutine graded_rule(a, b, nodes, weights)
+        real(dp), intent(in) :: a, b
+        real(dp), allocatable, intent(out) :: nodes(:), weights(:)
+        integer, parameter :: levels = 12, n_gl = 20
+        real(dp) :: xi(n_gl), wt(n_gl), half, lo, hi
+        integer :: side, k, n
+        call gauss_legendre(n_gl, xi, wt)
+        allocate (nodes(2*(levels + 1)*n_gl), weights(2*(levels + 1)*n_gl))
+        half = 0.5_dp*(b - a)
+        n = 0
+        sides: do side = 1, 2
+            levels_loop: do k = 0, levels
+                hi = half*0.2_dp**k
+                lo = merge(0.0_dp, half*0.2_dp**(k + 1), k == levels)
+                if (side == 1) then
+                    nodes(n + 1:n + n_gl) = a + lo + 0.5_dp*(xi + 1.0_dp)*(hi - lo)
+                else
+                    nodes(n + 1:n + n_gl) = b - lo - 0.5_dp*(xi + 1.0_dp)*(hi - lo)
+                end if
+                weights(n + 1:n + n_gl) = 0.5_dp*(hi - lo)*wt
+                n = n + n_gl
+            end do levels_loop
+        end do sides
+    end subroutine graded_rule
+
+    !> max |T - T^T| / max |T|.
+    pure real(dp) function asymmetry(t)
+        real(dp), intent(in) :: t(:, :)
+        asymmetry = maxval(abs(t - transpose(t)))/maxval(abs(t))
+    end function asymmetry
+
+    ! ------------------------------------------------------------------ tests
+
+    !> (C1)–(C4) against QAGS theta-integration of Boussinesq/Cerruti (B1), (B2) around the
+    !! ring (an independent computation), including r/s = 0.99 and 1/16.
+    subroutine test_ring_kernels(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(ring_theta_t) :: f
+        real(dp) :: g(4), expected, abserr
+        real(dp), parameter :: rs(2, 5) = reshape([0.3_dp, 1.0_dp, 1.0_dp, 0.3_dp, &
+            0.99_dp, 1.0_dp, 1.0_dp, 0.99_dp, 0.0625_dp, 1.0_dp], [2, 5])
+        integer :: i, c
+        character(len=80) :: what
+        f%g = 7.5_dp
+        f%nu = 0.27_dp
+        pairs: do i = 1, size(rs, 2)
+            call ring_kernels(rs(1, i), rs(2, i), f%g, f%nu, g(1), g(4), g(2), g(3), err)
+            if (allocated(err)) return
+            components: do c = 1, 4
+                f%r = rs(1, i)
+                f%s = rs(2, i)
+                f%component = c
+                call integrate_qags(f, 0.0_dp, pi, 1.0e-15_dp, 1.0e-13_dp, expected, abserr, err)
+                if (allocated(err)) return
+                write (what, '("ring kernel ",i0," at r = ",f6.4,", s = ",f6.4)') c, rs(:, i)
+                call check_close(err, g(c), expected, 1.0e-11_dp, 1.0e-13_dp, trim(what))
+                if (allocated(err)) return
+            end do components
+        end do pairs
+    end subroutine test_ring_kernels
+
+    !> Limits of the kernel reference: G_zz(0,s) = (1-nu)/G, G_rr ~ (1-nu) r/(2Gs) (r -> 0),
+    !! G_rr ~ (1-nu) s^2/(2G r^2) (s -> 0), G_rz(0,s) = 0.
+    subroutine test_axis_limits(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: g_zz, g_rr, g_rz, g_zr
+        real(dp), parameter :: g = 2.0_dp, nu = 0.2_dp, eta = 1.0e-9_dp
+        call ring_kernels(0.0_dp, 0.7_dp, g, nu, g_zz, g_rr, g_rz, g_zr, err)
+        if (allocated(err)) return
+        call check_close(err, g_zz, (1.0_dp - nu)/g, 1.0e-15_dp, 0.0_dp, 'G_zz(0, s)')
+        if (allocated(err)) return
+        call check(err, g_rr == 0.0_dp .and. g_rz == 0.0_dp, 'G_rr(0,s), G_rz(0,s) /= 0')
+        if (allocated(err)) return
+        call ring_kernels(eta*0.7_dp, 0.7_dp, g, nu, g_zz, g_rr, g_rz, g_zr, err)
+        if (allocated(err)) return
+        call check_close(err, g_rr, (1.0_dp - nu)*eta/(2.0_dp*g), 1.0e-8_dp, 0.0_dp, &
+                         'G_rr, r -> 0')
+        if (allocated(err)) return
+        call ring_kernels(0.7_dp, eta*0.7_dp, g, nu, g_zz, g_rr, g_rz, g_zr, err)
+        if (allocated(err)) return
+        call check_close(err, g_rr, (1.0_dp - nu)*eta**2/(2.0_dp*g), 1.0e-8_dp, 0.0_dp, &
+                         'G_rr, s -> 0')
+        if (allocated(err)) return
+    end subroutine test_axis_limits
+
+    !> Uniform pressure on the whole disk, all bases, uniform and graded meshes, several nu:
+    !! w(0), w(a), w(r), u_r(r) against the closed forms of the module header, 1e-10.
+    subroutine test_uniform_pressure(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: rx(:), rz(:), u(:), w(:), r(:)
+        real(dp) :: g, e_f, nu, a, p, k_val, e_val, w_ref
+        integer :: fam, ig, inu, i
+        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
+        real(dp), parameter :: nus(3) = [0.0_dp, 0.3_dp, 0.49_dp]
+        character(len=80) :: what
+        a = 1.3_dp
+        p = 2.5e3_dp
+        e_f = 3.0e7_dp
+        families: do fam = INTERP_P1, INTERP_S2
+            meshes: do ig = 1, 2
+                call make_bases(7, trim(gradings(ig)), fam, fam, bx, bz, err)
+                if (allocated(err)) return
+                r = [0.0_dp, bz%x(1), 0.37_dp*a, 0.5_dp*a, bz%x(5), 0.999_dp*a, a]
+                allocate (rx(bx%n_dof), rz(bz%n_dof), u(size(r)), w(size(r)))
+                rx = 0.0_dp
+                rz = p          ! a constant is represented exactly (partition of unity)
+                poisson: do inu = 1, size(nus)
+                    nu = nus(inu)
+                    g = e_f/(2.0_dp*(1.0_dp + nu))
+                    call plate_surface_displacement(bx, bz, rx, rz, g, nu, r, u, w, err)
+                    if (allocated(err)) return
+                    write (what, '("family ",i0,", grading ",a,", nu = ",f4.2)') fam, &
+                        trim(gradings(ig)), nu
+                    call check_close(err, w(1), 2.0_dp*(1.0_dp - nu**2)*p*a/e_f, 1.0e-10_dp, &
+                                     0.0_dp, 'w(0), '//trim(what))
+                    if (allocated(err)) return
+                    call check_close(err, w(size(r)), 4.0_dp*(1.0_dp - nu**2)*p*a/(pi*e_f), &
+                                     1.0e-10_dp, 0.0_dp, 'w(a), '//trim(what))
+                    if (allocated(err)) return
+                    points: do i = 1, size(r)
+                        call elliptic_ke_m1(max((a - r(i))*(a + r(i))/a**2, tiny(1.0_dp)), &
+                                            k_val, e_val, err)
+                        if (allocated(err)) return
+                        w_ref = 4.0_dp*(1.0_dp - nu**2)*p*a/(pi*e_f)*e_val
+                        call check_close(err, w(i), w_ref, 1.0e-10_dp, 0.0_dp, 'w(r), '//trim(what))
+                        if (allocated(err)) return
+                        ! inward radial displacement (kernel reference §C checks, sign confirmed)
+                        call check_close(err, u(i), -(1.0_dp - 2.0_dp*nu)*(1.0_dp + nu)*p*r(i)/ &
+                                         (2.0_dp*e_f), 1.0e-10_dp, 1.0e-10_dp*p*a/e_f, &
+                                         'u_r(r), '//trim(what))
+                        if (allocated(err)) return
+                    end do points
+                end do poisson
+                deallocate (rx, rz, u, w)
+            end do meshes
+        end do families
+    end subroutine test_uniform_pressure
+
+    !> Galerkin form, all 9 pairs of bases, uniform and graded meshes: for a constant traction,
+    !! sum_b T_ij(a, b) = int g_a(r) f(r) 2 pi r dr with f the closed-form displacement
+    !! (w and u_r under p = 1, u_z under q = 1), integrated independently by QAGS; 1e-10 of
+    !! the largest row sum.
+    subroutine test_row_sums(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :)
+        real(dp) :: g, nu, scale
+        integer :: fx, fz, ig, nx
+        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
+        character(len=60) :: what
+        g = 4.0_dp
+        nu = 0.3_dp
+        meshes: do ig = 1, 2
+            fam_x: do fx = INTERP_P1, INTERP_S2
+                fam_z: do fz = INTERP_P1, INTERP_S2
+                    call make_bases(5, trim(gradings(ig)), fx, fz, bx, bz, err)
+                    if (allocated(err)) return
+                    call assemble_plate_flexibility(bx, bz, g, nu, t, err)
+                    if (allocated(err)) return
+                    nx = bx%n_dof
+                    scale = maxval(abs(sum(t, dim=2)))
+                    write (what, '("bases ",i0,"/",i0,", ",a)') fx, fz, trim(gradings(ig))
+                    ! T_zz: rows bz, constant sigma_z
+                    call check_rows(bz, sum(t(nx + 1:, nx + 1:), dim=2), closed_w_pressure, &
+                                    'T_zz '//trim(what), err)
+                    if (allocated(err)) return
+                    ! T_xz: rows bx, constant sigma_z
+                    call check_rows(bx, sum(t(1:nx, nx + 1:), dim=2), closed_u_pressure, &
+                                    'T_xz '//trim(what), err)
+                    if (allocated(err)) return
+                    ! T_zx: rows bz, constant sigma_x
+                    call check_rows(bz, sum(t(nx + 1:, 1:nx), dim=2), closed_w_shear, &
+                                    'T_zx '//trim(what), err)
+                    if (allocated(err)) return
+                end do fam_z
+            end do fam_x
+        end do meshes
+
+    contains
+
+        subroutine check_rows(basis, row_sum, kind, label, err)
+            type(basis_t), intent(in) :: basis
+            real(dp), intent(in) :: row_sum(:)
+            integer, intent(in) :: kind
+            character(len=*), intent(in) :: label
+            type(error_t), allocatable, intent(out) :: err
+            type(row_integrand_t) :: f
+            real(dp) :: total, part, abserr
+            integer :: a, e
+            f%basis = basis
+            f%g = g
+            f%nu = nu
+            f%a = basis%x(basis%ne)
+            f%kind = kind
+            rows: do a = 1, basis%n_dof
+                total = 0.0_dp
+                elements: do e = 1, basis%ne
+                    f%element = e
+                    f%dof = a
+                    call integrate_qags(f, basis%x(e - 1), basis%x(e), 1.0e-15_dp*scale, &
+                                        1.0e-13_dp, part, abserr, err)
+                    if (allocated(err)) return
+                    total = total + part
+                end do elements
+                call check(err, .not. f%failed, 'elliptic integral failed in the reference')
+                if (allocated(err)) return
+                call check_close(err, row_sum(a), total, 0.0_dp, 1.0e-10_dp*scale, label)
+                if (allocated(err)) return
+            end do rows
+        end subroutine check_rows
+    end subroutine test_row_sums
+
+    !> Every entry of T (both triangles) against an independent nested computation:
+    !! T_ab = int g_a(r) 2 pi r u_b(r) dr, u_b the displacement under the single function g_b
+    !! from plate_surface_displacement, outer integral by graded composite Gauss; 1e-12 of the
+    !! largest entry. Covers the axis element, adjacent and distant pairs and the coupling.
+    subroutine test_nested(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :), nodes(:), weights(:), r(:), wr(:), u(:), w(:), &
+                                 rx(:), rz(:), t_nested(:, :)
+        integer :: e, nx, nz, col, row, k
+        real(dp), parameter :: g = 1.7_dp, nu = 0.23_dp
+        call make_bases(3, 'EDGES', INTERP_P1, INTERP_S2, bx, bz, err)
+        if (allocated(err)) return
+        call assemble_plate_flexibility(bx, bz, g, nu, t, err)
+        if (allocated(err)) return
+        nx = bx%n_dof
+        nz = bz%n_dof
+        allocate (r(0), wr(0))
+        elements: do e = 1, bx%ne
+            call graded_rule(bx%x(e - 1), bx%x(e), nodes, weights)
+            r = [r, nodes]
+            wr = [wr, weights]
+        end do elements
+        allocate (u(size(r)), w(size(r)), rx(nx), rz(nz), t_nested(nx + nz, nx + nz))
+        columns: do col = 1, nx + nz
+            rx = 0.0_dp
+            rz = 0.0_dp
+            if (col <= nx) then
+                rx(col) = 1.0_dp
+            else
+                rz(col - nx) = 1.0_dp
+            end if
+            call plate_surface_displacement(bx, bz, rx, rz, g, nu, r, u, w, err)
+            if (allocated(err)) return
+            rows: do row = 1, nx + nz
+                t_nested(row, col) = 0.0_dp
+                points: do k = 1, size(r)
+                    e = min(bx%ne, count(bx%x(1:bx%ne - 1) < r(k)) + 1)
+                    if (row <= nx) then
+                        t_nested(row, col) = t_nested(row, col) + wr(k)*2.0_dp*pi*r(k)*u(k)* &
+                                             basis_value(bx, e, row, r(k))
+                    else
+                        t_nested(row, col) = t_nested(row, col) + wr(k)*2.0_dp*pi*r(k)*w(k)* &
+                                             basis_value(bz, e, row - nx, r(k))
+                    end if
+                end do points
+            end do rows
+        end do columns
+        call check_close(err, maxval(abs(t - t_nested))/maxval(abs(t)), 0.0_dp, 0.0_dp, &
+                         1.0e-12_dp, 'max |T - T_nested| / max |T|')
+        if (allocated(err)) return
+    end subroutine test_nested
+
+    !> T symmetric (both triangles are integrated, nothing is symmetrised), all base pairs,
+    !! uniform and graded meshes: max |T - T^T| <= 1e-12 max |T|.
+    subroutine test_symmetric(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :)
+        integer :: fx, fz, ig
+        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
+        meshes: do ig = 1, 2
+            fam_x: do fx = INTERP_P1, INTERP_S2
+                fam_z: do fz = INTERP_P1, INTERP_S2
+                    call make_bases(9, trim(gradings(ig)), fx, fz, bx, bz, err)
+                    if (allocated(err)) return
+                    call assemble_plate_flexibility(bx, bz, 3.0_dp, 0.1_dp, t, err)
+                    if (allocated(err)) return
+                    call check_close(err, asymmetry(t), 0.0_dp, 0.0_dp, 1.0e-12_dp, &
+                                     'plate T asymmetry')
+                    if (allocated(err)) return
+                end do fam_z
+            end do fam_x
+        end do meshes
+    end subroutine test_symmetric
+
+    !> T positive definite (elastic energy): dpotrf succeeds for several meshes, bases, nu.
+    subroutine test_positive_definite(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :)
+        integer :: i, inu, info
+        real(dp), parameter :: nus(4) = [0.0_dp, 0.1_dp, 0.3_dp, 0.49_dp]
+        integer, parameter :: nes(4) = [1, 6, 15, 24]
+        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_S2, &
+            INTERP_S2, INTERP_P2, INTERP_P1, INTERP_S2], [2, 4])
+        character(len=7), parameter :: gradings(4) = ['UNIFORM', 'EDGES  ', 'UNIFORM', 'EDGES  ']
+        character(len=60) :: what
+        cases: do i = 1, size(nes)
+            call make_bases(nes(i), trim(gradings(i)), fams(1, i), fams(2, i), bx, bz, err)
+            if (allocated(err)) return
+            poisson: do inu = 1, size(nus)
+                call assemble_plate_flexibility(bx, bz, 1.0_dp, nus(inu), t, err)
+                if (allocated(err)) return
+                call dpotrf('L', size(t, 1), t, size(t, 1), info)
+                write (what, '("dpotrf info = ",i0," (case ",i0,", nu = ",f4.2,")")') info, i, &
+                    nus(inu)
+                call check(err, info == 0, trim(what))
+                if (allocated(err)) return
+            end do poisson
+        end do cases
+    end subroutine test_positive_definite
+
+    !> nu_f = 0.5: (1 - 2 nu) = 0, the coupling blocks vanish identically (kernel ref. §0.1).
+    subroutine test_incompressible(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :)
+        integer :: nx
+        call make_bases(6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
+        if (allocated(err)) return
+        call assemble_plate_flexibility(bx, bz, 1.0_dp, 0.5_dp, t, err)
+        if (allocated(err)) return
+        nx = bx%n_dof
+        call check(err, all(t(1:nx, nx + 1:) == 0.0_dp) .and. all(t(nx + 1:, 1:nx) == 0.0_dp), &
+                   'coupling blocks not zero for nu_f = 0.5')
+        if (allocated(err)) return
+    end subroutine test_incompressible
+
+    !> Mesh-independent quantity: stiffness of a rigid frictionless flat punch, P/delta =
+    !! m^T T_zz^-1 m (m_a = int g_a 2 pi r dr), a Galerkin lower bound converging from below
+    !! to the closed form 4 G a/(1-nu) (Boussinesq punch, Johnson 1985 §5.2: delta =
+    !! P (1-nu^2)/(2 a E)) under refinement of nested meshes.
+    subroutine test_punch(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :), tzz(:, :), m(:), c(:)
+        real(dp) :: exact, stiff, previous, rel, xi(3), wt(3)
+        integer :: level, ne, nx, nz, info, e, k, i, j
+        real(dp), parameter :: g = 1.0_dp, nu = 0.3_dp
+        character(len=80) :: what
+        call gauss_legendre(3, xi, wt)
+        exact = 4.0_dp*g*1.3_dp/(1.0_dp - nu)
+        previous = 0.0_dp
+        levels: do level = 1, 4
+            ne = 4*2**(level - 1)
+            call make_bases(ne, 'UNIFORM', INTERP_P1, INTERP_P1, bx, bz, err)
+            if (allocated(err)) return
+            call assemble_plate_flexibility(bx, bz, g, nu, t, err)
+            if (allocated(err)) return
+            nx = bx%n_dof
+            nz = bz%n_dof
+            tzz = t(nx + 1:, nx + 1:)
+            allocate (m(nz), c(nz))
+            m = 0.0_dp
+            do e = 1, ne
+                do k = 1, 3
+                    do i = 1, nz
+                        m(i) = m(i) + basis_value(bz, e, i, bz%x(e - 1) + 0.5_dp*(xi(k) + 1.0_dp)* &
+                               (bz%x(e) - bz%x(e - 1)))*0.5_dp*wt(k)*(bz%x(e) - bz%x(e - 1))* &
+                               2.0_dp*pi*(bz%x(e - 1) + 0.5_dp*(xi(k) + 1.0_dp)*(bz%x(e) - bz%x(e - 1)))
+                    end do
+                end do
+            end do
+            call dpotrf('L', nz, tzz, nz, info)
+            call check(err, info == 0, 'punch: T_zz not positive definite')
+            if (allocated(err)) return
+            ! solve L L^T c = m
+            c = m
+            do i = 1, nz
+                c(i) = (c(i) - dot_product(tzz(i, 1:i - 1), c(1:i - 1)))/tzz(i, i)
+            end do
+            do j = nz, 1, -1
+                c(j) = (c(j) - dot_product(tzz(j + 1:nz, j), c(j + 1:nz)))/tzz(j, j)
+            end do
+            stiff = dot_product(m, c)
+            rel = (exact - stiff)/exact
+            write (what, '("punch stiffness N_e = ",i0,": rel. error ",es10.3)') ne, rel
+            call check(err, stiff > previous .and. rel > 0.0_dp .and. rel < 0.05_dp/2**level, &
+                       trim(what))
+            if (allocated(err)) return
+            previous = stiff
+            deallocate (m, c)
+        end do levels
+    end subroutine test_punch
 end module test_halfspace_plate

@@ -82,13 +82,13 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(system_t) :: sys
 
+        allocate (sol%history(0))
         call check_load_admissible(m, err)
         if (allocated(err)) return
         call build_system(m, d, sys, err)
         if (allocated(err)) return
         sol%pts = contact_points(m, d)
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
-        allocate (sol%history(0))
         call friction_loop(m, d, sys, sol, err)
         if (allocated(err)) return
         call final_checks(m, d, sys, sol, err)

@@ -64,6 +64,19 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(gsl_sf_result) :: rf, rd, rd_swap
         integer(c_int) :: status
+        real(dp) :: big_l
+        if (.not. (m1 > 0.0_dp .and. m1 <= 1.0_dp)) then
+            call new_error(err, EXIT_INTERNAL, 'elliptic integral: m1 = 1 - k^2 outside (0, 1]')
+            return
+        end if
+        if (m1 < 1.0e-20_dp) then
+            ! DLMF 19.12.1-2 to first order, L = ln(4/k'); omitted terms O(m1^2 L) < 1e-38.
+            ! (GSL's R_D rejects arguments below ~1e-205.)
+            big_l = log(4.0_dp) - 0.5_dp*log(m1)
+            k_val = big_l + 0.25_dp*m1*(big_l - 1.0_dp)
+            e_val = 1.0_dp + 0.5_dp*m1*(big_l - 0.5_dp)
+            return
+        end if
         status = gsl_sf_ellint_rf_e(0.0_c_double, real(m1, c_double), 1.0_c_double, &
                                     GSL_PREC_DOUBLE, rf)
         if (status == GSL_SUCCESS) status = gsl_sf_ellint_rd_e(0.0_c_double, &

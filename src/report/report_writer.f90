@@ -197,6 +197,10 @@ contains
         integer :: i
         write (u, '(/,a)') ' 4. SOLVER LOG (outer: friction threshold tau0 <- f sigma_z; inner: '// &
             'slip / tension sets)'
+        if (.not. allocated(sol%history)) then
+            write (u, '(a)') '   (no iteration: the case was refused before solving)'
+            return
+        end if
         write (u, '(a)') '   outer inner  slip-pts  lift-pts  changed   rel.increment  note'
         do i = 1, size(sol%history)
             associate (h => sol%history(i))
