@@ -21,7 +21,7 @@ module test_gsl_wrappers
     end type log_t
 
     !> Gamma(1/4) = 3.62560990822190831193068515586767200299516768288... (OEIS A068466)
-    real(dp), parameter :: gamma_quarter = 3.6256099082219083119306851558676720_dp
+    real(dp), parameter :: gamma_quarter = 3.6256099082219083_dp
 
 contains
 
@@ -66,8 +66,9 @@ contains
 
     !> m1 -> 0 (k -> 1, ring at the field radius): DLMF 19.12.1–2 to first order in m1,
     !! K = L + (m1/4)(L - 1), E = 1 + (m1/2)(L - 1/2), L = ln(4/k'), k' = sqrt(m1); the omitted
-    !! terms are O(m1^2 L), below 1e-16 relative for m1 <= 1e-9. A code forming 1 - k^2 from k^2 would
-    !! lose 9 of 16 digits here (and E = R_F - (k^2/3) R_D would cancel to an error ~ eps K).
+    !! terms are O(m1^2 L), below 1e-16 relative for m1 <= 1e-9. A code forming 1 - k^2 from
+    !! k^2 would lose 9 of 16 digits here (and E = R_F - (k^2/3) R_D would cancel to an
+    !! absolute error ~ eps K).
     subroutine test_tiny_m1(err)
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: k_val, e_val, m1, big_l

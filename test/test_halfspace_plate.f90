@@ -486,7 +486,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(basis_t) :: bx, bz
         real(dp), allocatable :: t(:, :), tzz(:, :), m(:), c(:)
-        real(dp) :: exact, stiff, previous, rel, xi(3), wt(3)
+        real(dp) :: exact, stiff, previous, rel, xi(3), wt(3), h, r
         integer :: level, ne, nx, nz, info, e, k, i, j
         real(dp), parameter :: g = 1.0_dp, nu = 0.3_dp
         character(len=80) :: what
@@ -503,16 +503,17 @@ contains
             nz = bz%n_dof
             tzz = t(nx + 1:, nx + 1:)
             allocate (m(nz), c(nz))
+            ! m_a = int g_a 2 pi r dr, 3-point GL exact (degree 2 on an element)
             m = 0.0_dp
-            do e = 1, ne
-                do k = 1, 3
+            elements: do e = 1, ne
+                h = bz%x(e) - bz%x(e - 1)
+                gauss: do k = 1, 3
+                    r = bz%x(e - 1) + 0.5_dp*(xi(k) + 1.0_dp)*h
                     do i = 1, nz
-                        m(i) = m(i) + basis_value(bz, e, i, bz%x(e - 1) + 0.5_dp*(xi(k) + 1.0_dp)* &
-                               (bz%x(e) - bz%x(e - 1)))*0.5_dp*wt(k)*(bz%x(e) - bz%x(e - 1))* &
-                               2.0_dp*pi*(bz%x(e - 1) + 0.5_dp*(xi(k) + 1.0_dp)*(bz%x(e) - bz%x(e - 1)))
+                        m(i) = m(i) + basis_value(bz, e, i, r)*0.5_dp*wt(k)*h*2.0_dp*pi*r
                     end do
-                end do
-            end do
+                end do gauss
+            end do elements
             call dpotrf('L', nz, tzz, nz, info)
             call check(err, info == 0, 'punch: T_zz not positive definite')
             if (allocated(err)) return
@@ -527,8 +528,9 @@ contains
             stiff = dot_product(m, c)
             rel = (exact - stiff)/exact
             write (what, '("punch stiffness N_e = ",i0,": rel. error ",es10.3)') ne, rel
-            call check(err, stiff > previous .and. rel > 0.0_dp .and. rel < 0.05_dp/2**level, &
-                       trim(what))
+            ! measured: 1.2e-2, 5.9e-3, 3.0e-3, 1.5e-3 (first order, from below)
+            call check(err, stiff > previous .and. rel > 0.0_dp .and. &
+                       rel < 0.05_dp/real(2**level, dp), trim(what))
             if (allocated(err)) return
             previous = stiff
             deallocate (m, c)

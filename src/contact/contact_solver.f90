@@ -67,6 +67,7 @@ module contact_solver
     type :: system_t
         real(dp), allocatable :: a0(:, :)    !! matrix without the set-dependent terms
         real(dp), allocatable :: q(:)        !! structural loads
+        real(dp), allocatable :: row_scale(:)  !! 1/sqrt|diag a0|: fixed scaling of the residual
         real(dp) :: c = 0.0_dp, kappa = 0.0_dp, penalty = 0.0_dp
     end type system_t
 
@@ -153,7 +154,7 @@ contains
         type(system_t), intent(out) :: sys
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: t_mat(:, :), mm(:, :)
-        integer :: nv, n, nx
+        integer :: nv, n, nx, i
         nv = d%nv
         n = d%n
         nx = d%basis(FIELD_SX)%n_dof
@@ -175,6 +176,11 @@ contains
         sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
         sys%penalty = sys%c/m%eta_bar
         call add_stick_compliance(m, d, sys)
+        allocate (sys%row_scale(n))
+        do i = 1, n
+            sys%row_scale(i) = 1.0_dp
+            if (sys%a0(i, i) /= 0.0_dp) sys%row_scale(i) = 1.0_dp/sqrt(abs(sys%a0(i, i)))
+        end do
     end subroutine build_system
 
     !> - c eps S0 on the sigma_x block (stick branch of the law, everywhere).
@@ -244,6 +250,7 @@ contains
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_prev(:), tau_new(:)
+        integer, allocatable :: state_prev(:)
         real(dp) :: incr, incr_prev, omega
         integer :: outer
         character(len=200) :: text
@@ -257,7 +264,15 @@ contains
         incr_prev = huge(1.0_dp)
         outer_loop: do outer = 1, m%max_outer
             z_prev = sol%z
-            call penalty_loop(m, d, sys, outer, sol, err)
+            state_prev = sol%state
+            call penalty_loop(m, d, sys, outer, .false., sol, err)
+            if (allocated(err)) then
+                ! the plain fixed point failed: restart this inner loop with backtracking
+                call log_note(sol, outer, 'inner loop restarted with line search')
+                sol%z = z_prev
+                sol%state = state_prev
+                call penalty_loop(m, d, sys, outer, .true., sol, err)
+            end if
             if (allocated(err)) return
             sol%n_outer = outer
             tau_new = m%f*max(sol%sigma(2, :), 0.0_dp)
@@ -265,10 +280,16 @@ contains
                 incr = relative_change(d, sol%z, z_prev)
                 call log_outer(sol, outer, incr, omega)
                 if (incr <= m%tol_outer) return
-                if (incr >= incr_prev .and. omega > 0.07_dp) omega = 0.5_dp*omega
+                ! under-relax while the increments grow, relax back while they shrink fast
+                if (incr >= incr_prev) then
+                    omega = max(0.0625_dp, 0.5_dp*omega)
+                else if (incr < 0.5_dp*incr_prev) then
+                    omega = min(1.0_dp, 2.0_dp*omega)
+                end if
                 incr_prev = incr
             end if
             sol%tau0 = sol%tau0 + omega*(tau_new - sol%tau0)
+            call classify(d, sol)     ! the next inner loop starts from the sets of this z
         end do outer_loop
         write (text, '(a,i0,a,es10.3,a,es10.3)') 'friction (outer) loop did not converge in ', &
             m%max_outer, ' iterations: last relative change ', incr, ' > tol ', m%tol_outer
@@ -291,52 +312,100 @@ contains
         end if
     end function start_threshold
 
-    !> Inner loop for fixed tau0: slip, sign and tension sets from the previous iterate.
-    subroutine penalty_loop(m, d, sys, outer, sol, err)
+    !> Inner loop for fixed tau0: sets (slip, sign, tension) from the previous iterate. Each
+    !! solve is a generalised Newton step for the piecewise-linear equations (4.2). Plain mode:
+    !! full steps as in the paper, a step halved when its set pattern was met before (a cycle).
+    !! Searching mode (the fallback): every step halved until it lowers the scaled residual
+    !! (backtracking). Converged only on a full step.
+    subroutine penalty_loop(m, d, sys, outer, searching, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         integer, intent(in) :: outer
+        logical, intent(in) :: searching   !! backtracking on every step (else: halve on cycles)
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
-        integer, allocatable :: seen(:, :), code(:), new_code(:)
-        real(dp), allocatable :: z_new(:), z_old(:)
-        real(dp) :: incr
+        integer, allocatable :: code(:), new_code(:), seen(:, :)
+        real(dp), allocatable :: z_new(:), z_base(:)
+        real(dp) :: incr, merit_base, lambda
         integer :: inner, n_changed
         logical :: cycled
         character(len=200) :: text
 
-        allocate (seen(sol%pts%n, m%max_inner), z_new(d%n), z_old(d%n))
+        allocate (z_new(d%n), seen(sol%pts%n, m%max_inner))
         n_changed = 0
-        code = set_code(sol, sol%state)
         inner_loop: do inner = 1, m%max_inner
+            code = set_code(sol, sol%state)
             seen(:, inner) = code
+            merit_base = huge(1.0_dp)
+            if (searching .and. inner > 1) merit_base = merit(d, sys, sol)
             call solve_with_sets(d, sys, sol, z_new, err)
             if (allocated(err)) return
-            incr = relative_change(d, z_new, sol%z)
-            z_old = sol%z
-            sol%z = z_new
-            call classify(d, sol)
+            z_base = sol%z
+            call line_search(d, sys, z_base, z_new - z_base, merit_base, code, sol, lambda)
+            incr = relative_change(d, sol%z, z_base)
             new_code = set_code(sol, sol%state)
             n_changed = count(new_code /= code)
-            cycled = n_changed > 0 .and. any(all(seen(:, 1:inner - 1) == spread(new_code, 2, &
-                                                  max(inner - 1, 0)), dim=1))
-            call log_inner(sol, outer, inner, n_changed, incr, cycled)
-            sol%n_inner = sol%n_inner + 1
-            if (n_changed == 0 .or. (inner > 1 .and. incr <= m%tol_inner)) return
+            cycled = .not. searching .and. n_changed > 0 .and. &
+                     any(all(seen(:, 1:inner) == spread(new_code, 2, inner), dim=1))
             if (cycled) then
-                ! a recurring pattern: halve the step and decide the sets at the mid-point
-                sol%z = 0.5_dp*(sol%z + z_old)
+                ! the plain fixed point met a set pattern again: take half the step
+                lambda = 0.5_dp
+                sol%z = z_base + lambda*(z_new - z_base)
                 call classify(d, sol)
-                new_code = set_code(sol, sol%state)
             end if
-            code = new_code
+            call log_inner(sol, outer, inner, n_changed, incr, lambda)
+            sol%n_inner = sol%n_inner + 1
+            if (lambda == 1.0_dp .and. (n_changed == 0 .or. incr <= m%tol_inner)) return
         end do inner_loop
         write (text, '(a,i0,a,i0,a,i0,a)') 'contact (inner) loop did not converge in ', &
             m%max_inner, ' iterations at outer iteration ', outer, ' (', n_changed, &
             ' Gauss points still change state)'
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine penalty_loop
+
+    !> z = z_base + lambda step with lambda = 1, 1/2, ... 1/64: the full step when it keeps the
+    !! sets it was computed with (it then solves its own system exactly), else the first that
+    !! lowers the residual (Armijo, 1e-4), else the last. Leaves sol classified at that point.
+    subroutine line_search(d, sys, z_base, step, merit_base, code, sol, lambda)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: z_base(:), step(:), merit_base
+        integer, intent(in) :: code(:)
+        type(solution_t), intent(inout) :: sol
+        real(dp), intent(out) :: lambda
+        integer :: halving
+        lambda = 1.0_dp
+        halvings: do halving = 0, 6
+            sol%z = z_base + lambda*step
+            call classify(d, sol)
+            if (merit_base == huge(1.0_dp)) exit halvings
+            if (halving == 0 .and. all(set_code(sol, sol%state) == code)) exit halvings
+            if (merit(d, sys, sol) <= (1.0_dp - 1.0e-4_dp*lambda)*merit_base) exit halvings
+            if (halving < 6) lambda = 0.5_dp*lambda
+        end do halvings
+    end subroutine line_search
+
+    pure real(dp) function a0_diag(sys, i)
+        type(system_t), intent(in) :: sys
+        integer, intent(in) :: i
+        a0_diag = sys%a0(i, i)
+    end function a0_diag
+
+    !> Scaled residual norm of (4.2) at sol%z with the sets of sol (fixed row scaling).
+    real(dp) function merit(d, sys, sol)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(solution_t), intent(in) :: sol
+        real(dp), allocatable :: a(:, :), rhs(:), res(:)
+        integer :: i
+        call system_for_sets(d, sys, sol, a, rhs)
+        res = matmul(a, sol%z) - rhs
+        do i = 1, d%n
+            res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(a0_diag(sys, i)/a(i, i)))**0.5_dp
+        end do
+        merit = norm2(res)
+    end function merit
 
     !> Integer pattern of the sets: 1 tension, +-2 slipping with that sign, 0 stick.
     pure function set_code(sol, state) result(code)
@@ -433,11 +502,10 @@ contains
                    /max(maxval(abs(z_new(d%nv + 1:))), tiny(1.0_dp)))
     end function relative_change
 
-    subroutine log_inner(sol, outer, inner, n_changed, incr, cycled)
+    subroutine log_inner(sol, outer, inner, n_changed, incr, lambda)
         type(solution_t), intent(inout) :: sol
         integer, intent(in) :: outer, inner, n_changed
-        real(dp), intent(in) :: incr
-        logical, intent(in) :: cycled
+        real(dp), intent(in) :: incr, lambda
         type(iteration_record_t) :: rec
         rec%outer = outer
         rec%inner = inner
@@ -445,9 +513,19 @@ contains
         rec%n_tension = count(sol%state == STATE_LIFTOFF)
         rec%n_changed = n_changed
         rec%increment = incr
-        if (cycled) rec%note = 'set cycle detected: step halved'
+        if (lambda < 1.0_dp) write (rec%note, '(a,f9.6)') 'damped step x', lambda
         sol%history = [sol%history, rec]
     end subroutine log_inner
+
+    subroutine log_note(sol, outer, note)
+        type(solution_t), intent(inout) :: sol
+        integer, intent(in) :: outer
+        character(len=*), intent(in) :: note
+        type(iteration_record_t) :: rec
+        rec%outer = outer
+        rec%note = note
+        sol%history = [sol%history, rec]
+    end subroutine log_note
 
     subroutine log_outer(sol, outer, incr, omega)
         type(solution_t), intent(inout) :: sol

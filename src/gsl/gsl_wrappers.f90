@@ -97,8 +97,9 @@ contains
         end if
     end subroutine elliptic_ke_m1
 
-    !> int_a^b f(x) dx by GSL QAGS to max(epsabs, epsrel |result|).
-    subroutine integrate_qags(f, a, b, epsabs, epsrel, result, abserr, err)
+    !> int_a^b f(x) dx by GSL QAGS to max(epsabs, epsrel |result|). Recursive: an integrand
+    !! may itself call integrate_qags (iterated integrals); GSL keeps no global state here.
+    recursive subroutine integrate_qags(f, a, b, epsabs, epsrel, result, abserr, err)
         class(integrand_t), intent(inout), target :: f  !! integrand
         real(dp), intent(in) :: a, b                    !! limits
         real(dp), intent(in) :: epsabs, epsrel          !! requested accuracy
@@ -132,7 +133,7 @@ contains
     end subroutine integrate_qags
 
     !> double (* function) (double x, void * params) for QAGS.
-    function qags_callback(x, params) bind(c) result(fx)
+    recursive function qags_callback(x, params) bind(c) result(fx)
         real(c_double), value :: x
         type(c_ptr), value :: params
         real(c_double) :: fx

@@ -61,7 +61,8 @@ contains
         if (allocated(err)) return
         if (bx%ne >= 1 .and. allocated(bx%x)) then
             if (bx%x(0) /= 0.0_dp) then
-                call new_error(err, EXIT_INPUT, 'plate half-space operator: mesh must start at r = 0')
+                call new_error(err, EXIT_INPUT, &
+                               'plate half-space operator: mesh must start at r = 0')
                 return
             end if
         end if
@@ -189,7 +190,7 @@ contains
             return
         end if
         m1 = ((r - s)/total)**2
-        m = 4.0_dp*r*s/total**2
+        m = min(1.0_dp, 4.0_dp*r*s/total**2)     ! k^2, may round above 1 next to r = s
         call elliptic_ke_m1(m1, k_m, e_m, err)
         if (allocated(err)) return
         c_zz = 2.0_dp*(1.0_dp - nu)*s/(pi*g*total)
