@@ -25,7 +25,9 @@ contains
                  new_unittest('friction_admissible_everywhere', test_admissibility), &
                  new_unittest('table1_eps_trend', test_table1_trend), &
                  new_unittest('beam_sliding_status_2', test_sliding), &
-                 new_unittest('uplift_status_2', test_uplift)]
+                 new_unittest('uplift_status_2', test_uplift), &
+                 new_unittest('no_convergence_status_2', test_no_convergence), &
+                 new_unittest('soft_beam_hard_case', test_soft_beam)]
     end subroutine collect_contact_solver
 
     !> NONDIM plate (a = 1, F = 1): central point load, nu = 0.3.
@@ -284,4 +286,36 @@ contains
         call check(err, run_err%code == EXIT_ANALYSIS .and. &
                    index(run_err%message, 'uplift') > 0, 'uplift: expected status 2')
     end subroutine test_uplift
+
+    !> An iteration limit too small to converge: status 2 naming the loop, never a result.
+    subroutine test_no_convergence(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: run_err
+        m = nondim_plate(1.0e-3_dp, 0.05_dp, 0.1_dp, 0.5_dp, 20)
+        m%max_outer = 2
+        call run(m, sol, tab, run_err)
+        call check(err, allocated(run_err), 'two outer iterations should not suffice')
+        if (allocated(err)) return
+        call check(err, run_err%code == EXIT_ANALYSIS .and. &
+                   index(run_err%message, 'did not converge') > 0, 'expected status 2')
+    end subroutine test_no_convergence
+
+    !> rho = 1e-5, zeta = 0.2: the plain fixed point does not settle (the paper's known hard
+    !! case); the line-search fallback must reach a state that satisfies the checks.
+    subroutine test_soft_beam(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        m = nondim_beam(1.0e-5_dp, 0.2_dp, 0.05_dp, 0.6_dp, 0.1_dp, 60)
+        call run(m, sol, tab, err)
+        if (allocated(err)) return
+        call check(err, maxval(abs(sol%reaction - sol%applied)) <= 1.0e-8_dp .and. &
+                   sol%residual(2) <= 1.0e-8_dp .and. &
+                   sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
+                   'soft beam: equilibrium, interface residual or admissibility violated')
+    end subroutine test_soft_beam
 end module test_contact_solver
