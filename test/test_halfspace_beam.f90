@@ -295,7 +295,8 @@ contains
 
     !> Uniform line loads on the whole beam, all bases, uniform and graded meshes, widths from
     !! much narrower to wider than an element: beam_surface_displacement against the closed
-    !! forms of the module header at the centre, nodes, ends and inner points, 1e-10.
+    !! forms of the module header at the centre, nodes, ends, inner points and a point beyond
+    !! the end, 1e-10.
     subroutine test_uniform_load(err)
         type(error_t), allocatable, intent(out) :: err
         type(basis_t) :: bx, bz
@@ -310,7 +311,8 @@ contains
             meshes: do ig = 1, 2
                 call make_bases(8, trim(gradings(ig)), fam, fam, bx, bz, err)
                 if (allocated(err)) return
-                x = [0.0_dp, bx%x(0), bx%x(1), bx%x(3), 0.123_dp, 0.77_dp*bx%x(8), bx%x(8)]
+                x = [0.0_dp, bx%x(0), bx%x(1), bx%x(3), 0.123_dp, 0.77_dp*bx%x(8), bx%x(8), &
+                     1.4_dp*bx%x(8)]
                 allocate (u(size(x)), w(size(x)))
                 allocate (ones_x(bx%n_dof), zero_x(bx%n_dof), ones_z(bz%n_dof), zero_z(bz%n_dof))
                 ones_x = 1.0_dp

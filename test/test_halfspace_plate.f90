@@ -60,6 +60,7 @@ contains
         tests = [new_unittest('ring_kernels_vs_boussinesq_cerruti', test_ring_kernels), &
                  new_unittest('ring_kernel_axis_limits', test_axis_limits), &
                  new_unittest('uniform_pressure_displacements', test_uniform_pressure), &
+                 new_unittest('uniform_pressure_outside_disk', test_outside), &
                  new_unittest('galerkin_row_sums_vs_closed_forms', test_row_sums), &
                  new_unittest('galerkin_vs_nested_displacement', test_nested), &
                  new_unittest('symmetric', test_symmetric), &
@@ -284,6 +285,41 @@ contains
             end do meshes
         end do families
     end subroutine test_uniform_pressure
+
+    !> Outside the loaded disk (kernel reference §C checks, Johnson 1985 ch. 3), r > a:
+    !! w(r) = 4(1-nu^2) p r/(pi E) [E(a/r) - (1 - a^2/r^2) K(a/r)],
+    !! u_r(r) = -(1-2nu)(1+nu) p a^2/(2 E r); 1e-10.
+    subroutine test_outside(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: rx(:), rz(:)
+        real(dp) :: r(3), u(3), w(3), a, nu, e_f, g, k_val, e_val
+        integer :: i
+        call make_bases(6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
+        if (allocated(err)) return
+        a = bx%x(bx%ne)
+        nu = 0.25_dp
+        e_f = 5.0_dp
+        g = e_f/(2.0_dp*(1.0_dp + nu))
+        allocate (rx(bx%n_dof), rz(bz%n_dof))
+        rx = 0.0_dp
+        rz = 1.0_dp
+        r = [1.0001_dp*a, 1.7_dp*a, 6.0_dp*a]
+        call plate_surface_displacement(bx, bz, rx, rz, g, nu, r, u, w, err)
+        if (allocated(err)) return
+        points: do i = 1, size(r)
+            call elliptic_ke_m1((r(i) - a)*(r(i) + a)/r(i)**2, k_val, e_val, err)
+            if (allocated(err)) return
+            call check_close(err, w(i), 4.0_dp*(1.0_dp - nu**2)*r(i)/(pi*e_f)* &
+                             (e_val - (1.0_dp - (a/r(i))**2)*k_val), 1.0e-10_dp, 0.0_dp, &
+                             'w outside the disk')
+            if (allocated(err)) return
+            call check_close(err, u(i), &
+                             -(1.0_dp - 2.0_dp*nu)*(1.0_dp + nu)*a**2/(2.0_dp*e_f*r(i)), &
+                             1.0e-10_dp, 0.0_dp, 'u_r outside the disk')
+            if (allocated(err)) return
+        end do points
+    end subroutine test_outside
 
     !> Galerkin form, all 9 pairs of bases, uniform and graded meshes: for a constant traction,
     !! sum_b T_ij(a, b) = int g_a(r) f(r) 2 pi r dr with f the closed-form displacement
