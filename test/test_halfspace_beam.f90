@@ -18,20 +18,11 @@ module test_halfspace_beam
                                INTERP_P2, INTERP_S2
     use halfspace_beam, only: assemble_beam_flexibility, beam_surface_displacement, &
                               strip_kernels
+    use lapack_interfaces, only: dpotrf
     implicit none
     private
     public :: collect_halfspace_beam
 
-    interface
-        !> LAPACK Cholesky factorisation (local interface, see the brief of this suite).
-        subroutine dpotrf(uplo, n, a, lda, info)
-            import :: dp
-            character(len=1), intent(in) :: uplo
-            integer, intent(in) :: n, lda
-            real(dp), intent(inout) :: a(lda, *)
-            integer, intent(out) :: info
-        end subroutine dpotrf
-    end interface
 
     real(dp), parameter :: beam_length = 2.4_dp    !! l of every test mesh
 

@@ -16,20 +16,11 @@ module test_halfspace_plate
                                INTERP_P2, INTERP_S2
     use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement, &
                                ring_kernels
+    use lapack_interfaces, only: dpotrf
     implicit none
     private
     public :: collect_halfspace_plate
 
-    interface
-        !> LAPACK Cholesky factorisation (local interface, see the brief of this suite).
-        subroutine dpotrf(uplo, n, a, lda, info)
-            import :: dp
-            character(len=1), intent(in) :: uplo
-            integer, intent(in) :: n, lda
-            real(dp), intent(inout) :: a(lda, *)
-            integer, intent(out) :: info
-        end subroutine dpotrf
-    end interface
 
     integer, parameter :: closed_w_pressure = 1   !! w(r) under uniform p = 1
     integer, parameter :: closed_u_pressure = 2   !! u_r(r) under uniform p = 1
