@@ -68,6 +68,8 @@ contains
     pure subroutine complete_model(m)
         type(model_t), intent(inout) :: m
         if (.not. m%nondim) return
+        m%force_unit = 'F'
+        m%length_unit = merge('l', 'a', m%kind == MODEL_BEAM)
         m%length = 1.0_dp
         m%h = m%zeta_in
         m%e = 1.0_dp
