@@ -25,6 +25,8 @@ if ! command -v fpm >/dev/null 2>&1; then
   python3 -m pip install --quiet --disable-pip-version-check fpm 2>/dev/null \
     || python3 -m pip install --quiet --disable-pip-version-check --break-system-packages fpm
 fi
+# a pyenv-managed Python exposes new console scripts only after a rehash
+if command -v pyenv >/dev/null 2>&1; then pyenv rehash || true; fi
 hash -r
 if ! command -v fpm >/dev/null 2>&1; then
   echo "setup: fpm was installed but is not on PATH (add $(python3 -m site --user-base)/bin)" >&2
