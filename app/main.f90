@@ -13,6 +13,7 @@ program fricon
     character(len=1024) :: path
     integer :: status
 
+    path = ''
     call gsl_start()
     if (command_argument_count() >= 1) then
         call get_command_argument(1, path)
@@ -25,10 +26,25 @@ program fricon
         write (error_unit, '(a)') 'ERROR: '//err%message
         call finish(err%code)
     end if
-    call run_analysis(deck, 'output', output_unit, error_unit, status)
+    call run_analysis(deck, output_directory(trim(path)), output_unit, error_unit, status)
     call finish(status)
 
 contains
+
+    !> output/, or output/SUB/ for a deck under input/SUB/ (e.g. input/paper/ -> output/paper/).
+    function output_directory(deck_path) result(dir)
+        character(len=*), intent(in) :: deck_path
+        character(len=:), allocatable :: dir
+        integer :: i, j
+        dir = 'output'
+        i = index(deck_path, 'input/', back=.true.)
+        j = index(deck_path, '/', back=.true.)
+        if (i == 0 .or. j <= i + 5) return
+        if (i > 1) then
+            if (deck_path(i - 1:i - 1) /= '/') return
+        end if
+        dir = 'output/'//deck_path(i + 6:j - 1)
+    end function output_directory
 
     !> Fortran 2008 allows only constant stop codes, hence the select.
     subroutine finish(code)

@@ -70,7 +70,11 @@ contains
                 write (err_unit, '(a)') 'WARNING: '//name//': '//results(i)%message
             status = max(status, results(i)%status)
         end do cases_loop
-        if (n > 1) call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', results, err)
+        if (n > 1) then
+            call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', results, err)
+            if (.not. allocated(err)) call write_sweep_plot(out_dir//'/'//deck%stem//'_sweep', &
+                                                            cases(1), results, err)
+        end if
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = max(status, err%code)
@@ -164,6 +168,52 @@ contains
             if (index("'""`$\", out(i:i)) > 0) out(i:i) = ' '
         end do
     end function clean
+
+    !> output/STEM_sweep.gp (and .png): the solved cases overlaid (scripts/gnuplot/fricon_sweep.gp).
+    subroutine write_sweep_plot(base, m, results, err)
+        character(len=*), intent(in) :: base
+        type(model_t), intent(in) :: m
+        type(case_result_t), intent(in) :: results(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: files, labels, out_dir
+        integer :: u, i, exit_status, cmd_status
+        out_dir = base(1:index(base, '/', back=.true.))
+        files = ''
+        labels = ''
+        do i = 1, size(results)
+            if (results(i)%status /= EXIT_OK) cycle
+            files = files//' '//out_dir//results(i)%name//'.dat'
+            labels = labels//' '//one_word(results(i)%label)
+        end do
+        if (len(files) == 0) return
+        call open_temporary(base//'.gp', u, err)
+        if (allocated(err)) return
+        write (u, '(a)') '# fricon sweep figure: run from the project root as  gnuplot '//base//'.gp'
+        write (u, '(a)') 'files = "'//files(2:)//'"'
+        write (u, '(a)') 'labels = "'//labels(2:)//'"'
+        write (u, '(a)') "call 'scripts/gnuplot/fricon_sweep.gp' '"//base//".png' '"// &
+            trim(clean(m%title))//" (sweep)' '"//trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"'"
+        call commit_file(base//'.gp', u, err)
+        if (allocated(err)) return
+        call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
+            ".gp' && mv -f '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
+            cmdstat=cmd_status)
+        if (cmd_status /= 0 .or. exit_status /= 0) &
+            call execute_command_line("rm -f '"//base//".png.tmp'")
+    end subroutine write_sweep_plot
+
+    !> A sweep label as one gnuplot word: 'case 002 of 006: RHO=0.01 F=0.5' -> 'RHO=0.01,F=0.5'.
+    pure function one_word(label) result(word)
+        character(len=*), intent(in) :: label
+        character(len=:), allocatable :: word
+        integer :: i
+        word = trim(adjustl(label(index(label, ':') + 1:)))
+        do i = 1, len(word)
+            if (word(i:i) == ' ') word(i:i) = ','
+            if (word(i:i) == '"') word(i:i) = ''''
+        end do
+        if (len(word) == 0) word = 'case'
+    end function one_word
 
     !> output/STEM_summary.csv: one row per case.
     subroutine write_summary_csv(path, results, err)

@@ -11,6 +11,8 @@ program tester
     use test_deck_reader, only: collect_deck_reader
     use test_contact_solver, only: collect_contact_solver
     use test_report_writer, only: collect_report_writer
+    use test_convergence, only: collect_convergence
+    use test_paper, only: collect_paper
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -55,6 +57,15 @@ program tester
     if (wanted('report_writer')) then
         call collect_report_writer(tests)
         call run_suite('report_writer', tests, want_test, n_pass, n_fail)
+    end if
+
+    if (wanted('convergence')) then
+        call collect_convergence(tests)
+        call run_suite('convergence', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('paper')) then
+        call collect_paper(tests)
+        call run_suite('paper', tests, want_test, n_pass, n_fail)
     end if
 
     write (*, '(i0," passed, ",i0," failed")') n_pass, n_fail
