@@ -908,7 +908,8 @@ contains
         lines = beam_nondim()
         lines = [lines(1:4), card('MESH', '20', 'GRADED', 'P1', 'P3'), lines(5)]
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:5:21-30: MESH grading '// &
-                          'must be UNIFORM or EDGES, got ''GRADED''', 'test/bad.dat:5:41-50: '// &
+                          'must be UNIFORM, EDGES or LOADS, got ''GRADED''', &
+                          'test/bad.dat:5:41-50: '// &
                           'MESH interpolation of w must be P1, P2 or S2, got ''P3'''], err)
         if (allocated(err)) return
         lines = beam_nondim()

@@ -19,7 +19,8 @@ contains
                  new_unittest('partition_of_unity', test_partition), &
                  new_unittest('derivative_consistency', test_derivatives), &
                  new_unittest('s2_c1_continuity', test_s2_continuity), &
-                 new_unittest('quadratic_reproduction', test_reproduction)]
+                 new_unittest('quadratic_reproduction', test_reproduction), &
+                 new_unittest('loads_grading', test_loads_grading)]
     end subroutine collect_shape_functions
 
     !> n points integrate x^k exactly for k <= 2n-1: int_{-1}^{1} x^k = 2/(k+1) (k even), 0 (odd).
@@ -154,4 +155,33 @@ contains
             end do
         end do
     end subroutine test_reproduction
+
+    !> LOADS grading: every load position is a node, N_e is kept, neighbouring elements inside
+    !! a piece differ by the ratio 1.1 (or are mirror images at the piece centre).
+    subroutine test_loads_grading(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(mesh_t) :: msh
+        type(error_t), allocatable :: mesh_err
+        real(dp), parameter :: loads(3) = [-0.1_dp, 0.25_dp, 0.5_dp]   ! 0.5 is the end
+        real(dp) :: ratio
+        integer :: i, e
+        call new_mesh(msh, -0.5_dp, 0.5_dp, 30, 'LOADS', err, loads)
+        if (allocated(err)) return
+        call check(err, msh%ne == 30 .and. abs(msh%x(0) + 0.5_dp) < 1.0e-15_dp .and. &
+                   abs(msh%x(30) - 0.5_dp) < 1.0e-15_dp, 'LOADS mesh ends or size wrong')
+        if (allocated(err)) return
+        do i = 1, 2
+            call check(err, minval(abs(msh%x - loads(i))) < 1.0e-14_dp, &
+                       'a load position is not a node')
+            if (allocated(err)) return
+        end do
+        do e = 2, msh%ne
+            ratio = (msh%x(e) - msh%x(e - 1))/(msh%x(e - 1) - msh%x(e - 2))
+            call check(err, any(abs(ratio - [1.1_dp, 1.0_dp/1.1_dp, 1.0_dp]) < 1.0e-12_dp) .or. &
+                       any(abs(msh%x(e - 1) - loads(1:2)) < 1.0e-14_dp), 'LOADS grading ratio')
+            if (allocated(err)) return
+        end do
+        call new_mesh(msh, -0.5_dp, 0.5_dp, 2, 'LOADS', mesh_err, loads)
+        call check(err, allocated(mesh_err), 'LOADS with fewer elements than pieces was accepted')
+    end subroutine test_loads_grading
 end module test_shape_functions

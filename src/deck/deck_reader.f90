@@ -622,7 +622,7 @@ contains
         call take_count(st, cd, 1, 'MESH N_e (number of elements)', RULE_ELEMENTS, .false., &
                         st%m%ne)
         ! grading words of mesh.f90 (new_mesh)
-        call take_word(st, cd, 2, 'MESH grading', 'UNIFORM EDGES', .false., word, s)
+        call take_word(st, cd, 2, 'MESH grading', 'UNIFORM EDGES LOADS', .false., word, s)
         if (s == FIELD_OK) st%m%grading = word
         do j = 1, 5
             call take_word(st, cd, j + 2, 'MESH interpolation of '//trim(field_label(j)), &

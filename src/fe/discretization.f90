@@ -5,7 +5,7 @@ module discretization
     use errors, only: error_t
     use mesh, only: mesh_t, new_mesh
     use shape_functions, only: basis_t, new_basis
-    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
+    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     implicit none
     private
 
@@ -39,7 +39,7 @@ contains
             x_left = 0.0_dp
             x_right = m%length
         end if
-        call new_mesh(d%msh, x_left, x_right, m%ne, m%grading, err)
+        call new_mesh(d%msh, x_left, x_right, m%ne, m%grading, err, load_positions(m))
         if (allocated(err)) return
         do field = FIELD_U, FIELD_SZ
             call new_basis(d%basis(field), d%msh, m%interp(field))
@@ -54,6 +54,18 @@ contains
             d%fixed = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1]
         end if
     end subroutine new_discretization
+
+    !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading).
+    pure function load_positions(m) result(x)
+        type(model_t), intent(in) :: m
+        real(dp), allocatable :: x(:)
+        integer :: i
+        allocate (x(0))
+        do i = 1, size(m%loads)
+            x = [x, m%loads(i)%x1]
+            if (m%loads(i)%kind == LOAD_PATCH) x = [x, m%loads(i)%x2]
+        end do
+    end function load_positions
 
     !> Element containing x and the local coordinate there (x clipped to the mesh).
     pure subroutine locate_element(msh, x, e, xi)

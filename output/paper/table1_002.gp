@@ -1,0 +1,2 @@
+# fricon figure: run from the project root as  gnuplot output/paper/table1_002.gp
+call 'scripts/gnuplot/fricon_panels.gp' 'output/paper/table1_002.dat' 'output/paper/table1_002.png' 'Paper Table 1: beam, H/V 0.1, b/l 0.005, zeta 0.1' 'BEAM'
