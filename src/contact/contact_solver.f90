@@ -86,9 +86,9 @@ contains
         allocate (sol%history(0))
         call check_load_admissible(m, err)
         if (allocated(err)) return
-        call build_system(m, d, sys, err)
-        if (allocated(err)) return
         sol%pts = contact_points(m, d)
+        call build_system(m, d, sol%pts, sys, err)
+        if (allocated(err)) return
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         call friction_loop(m, d, sys, sol, err)
         if (allocated(err)) return
@@ -148,9 +148,10 @@ contains
     end function applied_moment
 
     !> K, M, T, S0 and q assembled once per case into the base matrix.
-    subroutine build_system(m, d, sys, err)
+    subroutine build_system(m, d, pts, sys, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
+        type(contact_points_t), intent(in) :: pts
         type(system_t), intent(out) :: sys
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: t_mat(:, :), mm(:, :)
@@ -175,26 +176,16 @@ contains
         sys%c = friction_compliance(m)
         sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
         sys%penalty = sys%c/m%eta_bar
-        call add_stick_compliance(m, d, sys)
+        ! - c eps S0 on the sigma_x block: the stick branch of the law, everywhere
+        do i = 1, pts%n
+            call add_point_mass(d, pts, i, FIELD_SX, -sys%c*m%eps_bar, sys%a0)
+        end do
         allocate (sys%row_scale(n))
         do i = 1, n
             sys%row_scale(i) = 1.0_dp
             if (sys%a0(i, i) /= 0.0_dp) sys%row_scale(i) = 1.0_dp/sqrt(abs(sys%a0(i, i)))
         end do
     end subroutine build_system
-
-    !> - c eps S0 on the sigma_x block (stick branch of the law, everywhere).
-    subroutine add_stick_compliance(m, d, sys)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(inout) :: sys
-        type(contact_points_t) :: pts
-        integer :: p
-        pts = contact_points(m, d)
-        do p = 1, pts%n
-            call add_point_mass(d, pts, p, FIELD_SX, -sys%c*m%eps_bar, sys%a0)
-        end do
-    end subroutine add_stick_compliance
 
     !> a(i,j) += factor * wt g_i g_j at contact point p for the traction field.
     pure subroutine add_point_mass(d, pts, p, field, factor, a)
@@ -386,12 +377,6 @@ contains
         end do halvings
     end subroutine line_search
 
-    pure real(dp) function a0_diag(sys, i)
-        type(system_t), intent(in) :: sys
-        integer, intent(in) :: i
-        a0_diag = sys%a0(i, i)
-    end function a0_diag
-
     !> Scaled residual norm of (4.2) at sol%z with the sets of sol (fixed row scaling).
     real(dp) function merit(d, sys, sol)
         type(discretization_t), intent(in) :: d
@@ -402,7 +387,7 @@ contains
         call system_for_sets(d, sys, sol, a, rhs)
         res = matmul(a, sol%z) - rhs
         do i = 1, d%n
-            res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(a0_diag(sys, i)/a(i, i)))**0.5_dp
+            res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(sys%a0(i, i)/a(i, i)))**0.5_dp
         end do
         merit = norm2(res)
     end function merit
