@@ -333,6 +333,15 @@ contains
             call solve_with_sets(d, sys, sol, z_new, err)
             if (allocated(err)) return
             z_base = sol%z
+            if (inner > 1 .and. relative_change(d, z_new, z_base) <= m%tol_inner) then
+                ! the Newton point of the current sets is the current iterate (within tol):
+                ! any set still changing sits exactly at its threshold
+                sol%z = z_new
+                call classify(d, sol)
+                call log_inner(sol, outer, inner, 0, relative_change(d, z_new, z_base), 1.0_dp)
+                sol%n_inner = sol%n_inner + 1
+                return
+            end if
             call line_search(d, sys, z_base, z_new - z_base, merit_base, code, sol, lambda)
             incr = relative_change(d, sol%z, z_base)
             new_code = set_code(sol, sol%state)
