@@ -155,10 +155,9 @@ contains
         type(system_t), intent(out) :: sys
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: t_mat(:, :), mm(:, :)
-        integer :: nv, n, nx, i
+        integer :: nv, n, i
         nv = d%nv
         n = d%n
-        nx = d%basis(FIELD_SX)%n_dof
         allocate (sys%a0(n, n), sys%q(nv), mm(d%nr, nv))
         sys%a0 = 0.0_dp
         call assemble_stiffness(section_of(m), d, sys%a0(1:nv, 1:nv))
@@ -240,7 +239,7 @@ contains
         type(system_t), intent(in) :: sys
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
-        real(dp), allocatable :: z_prev(:), tau_new(:)
+        real(dp), allocatable :: z_prev(:), tau_new(:), sigma_prev(:, :)
         integer, allocatable :: state_prev(:)
         real(dp) :: incr, incr_prev, omega
         integer :: outer
@@ -249,6 +248,7 @@ contains
         allocate (sol%tau0(sol%pts%n), tau_new(sol%pts%n), z_prev(d%n))
         sol%tau0 = start_threshold(m)
         sol%state = STATE_STICK      ! adhesive contact
+        sol%sigma = 0.0_dp
         sol%z = 0.0_dp
         omega = 1.0_dp
         incr = huge(1.0_dp)
@@ -256,13 +256,17 @@ contains
         outer_loop: do outer = 1, m%max_outer
             z_prev = sol%z
             state_prev = sol%state
+            sigma_prev = sol%sigma
             call penalty_loop(m, d, sys, outer, .false., sol, err)
             if (allocated(err)) then
-                ! the plain fixed point failed: restart this inner loop with backtracking
-                call log_note(sol, outer, 'inner loop restarted with line search')
-                sol%z = z_prev
-                sol%state = state_prev
-                call penalty_loop(m, d, sys, outer, .true., sol, err)
+                if (index(err%message, 'did not converge') > 0) then
+                    ! the plain fixed point failed: restart this inner loop with backtracking
+                    call log_note(sol, outer, 'inner loop restarted with line search')
+                    sol%z = z_prev
+                    sol%state = state_prev
+                    sol%sigma = sigma_prev
+                    call penalty_loop(m, d, sys, outer, .true., sol, err)
+                end if
             end if
             if (allocated(err)) return
             sol%n_outer = outer
