@@ -27,7 +27,8 @@ contains
                  new_unittest('beam_sliding_status_2', test_sliding), &
                  new_unittest('uplift_status_2', test_uplift), &
                  new_unittest('no_convergence_status_2', test_no_convergence), &
-                 new_unittest('soft_beam_hard_case', test_soft_beam)]
+                 new_unittest('soft_beam_hard_case', test_soft_beam), &
+                 new_unittest('ill_conditioned_refused', test_ill_conditioned)]
     end subroutine collect_contact_solver
 
     !> NONDIM plate (a = 1, F = 1): central point load, nu = 0.3.
@@ -318,4 +319,25 @@ contains
                    sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
                    'soft beam: equilibrium, interface residual or admissibility violated')
     end subroutine test_soft_beam
+
+    !> rho = 1e4 on a 150-element EDGES mesh: the linear solves lose all accuracy (found by the
+    !! convergence study: it used to end "solved" with every point lifted off and a reaction of
+    !! -1e-4 F). It must end with status 2, never with a result that fails equilibrium.
+    subroutine test_ill_conditioned(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: run_err
+        m = nondim_plate(1.0e4_dp, 0.1_dp, 0.1_dp, 1.0e3_dp, 150)
+        m%grading = 'EDGES'
+        call run(m, sol, tab, run_err)
+        if (.not. allocated(run_err)) then
+            ! solved after all: then it must satisfy its checks
+            call check(err, abs(sol%reaction(1) - 1.0_dp) <= 1.0e-6_dp, &
+                       'ill-conditioned case returned a result that fails equilibrium')
+            return
+        end if
+        call check(err, run_err%code == EXIT_ANALYSIS, 'expected status 2')
+    end subroutine test_ill_conditioned
 end module test_contact_solver

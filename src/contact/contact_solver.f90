@@ -576,6 +576,29 @@ contains
         sol%min_sigma_z = minval(sol%sigma(2, :))
         if (.not. all(sol%z == sol%z)) then
             call new_error(err, EXIT_ANALYSIS, 'the solution contains NaN')
+            return
         end if
+        call require_checks(m, sol, err)
     end subroutine final_checks
+
+    !> A solution that fails its own equilibrium is no result: the linear solves have lost their
+    !! accuracy (ill-conditioning: a very stiff structure on a very fine mesh, say). The
+    !! interface-law residual is reported, not tested: with sets re-decided at the final state
+    !! it is dominated by points exactly at their threshold times the slip stiffness 1/eps_bar.
+    subroutine require_checks(m, sol, err)
+        type(model_t), intent(in) :: m
+        type(solution_t), intent(in) :: sol
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), parameter :: limit = 1.0e-5_dp   !! of the load (reports print 6 digits)
+        real(dp) :: scale(3), equilibrium
+        character(len=300) :: text
+        scale = total_vertical_load(m)*[1.0_dp, 1.0_dp, m%length]
+        equilibrium = maxval(abs(sol%reaction - sol%applied)/scale)
+        if (sol%residual(1) <= limit .and. equilibrium <= limit) return
+        write (text, '(a,es9.2,a,es9.2,a)') 'the solution fails its equilibrium check '// &
+            '(relative residual of 4.2a ', sol%residual(1), &
+            '; reaction error ', equilibrium, ' of the load): the system is too '// &
+            'ill-conditioned to trust (very stiff structure or very fine mesh?)'
+        call new_error(err, EXIT_ANALYSIS, trim(text))
+    end subroutine require_checks
 end module contact_solver
