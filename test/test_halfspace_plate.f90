@@ -17,6 +17,7 @@ module test_halfspace_plate
     use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement, &
                                ring_kernels
     use lapack_interfaces, only: dpotrf
+    use quadrature_rules_for_tests, only: graded_rule
     implicit none
     private
     public :: collect_halfspace_plate
@@ -138,30 +139,6 @@ contains
 
     !> sum over the points of a composite GL rule graded geometrically towards both ends of
     !! [a, b] (ratio 0.2, 12 levels, 20 points a piece): nodes and weights.
-    subroutine graded_rule(a, b, nodes, weights)
-        real(dp), intent(in) :: a, b
-        real(dp), allocatable, intent(out) :: nodes(:), weights(:)
-        integer, parameter :: levels = 12, n_gl = 20
-        real(dp) :: xi(n_gl), wt(n_gl), half, lo, hi
-        integer :: side, k, n
-        call gauss_legendre(n_gl, xi, wt)
-        allocate (nodes(2*(levels + 1)*n_gl), weights(2*(levels + 1)*n_gl))
-        half = 0.5_dp*(b - a)
-        n = 0
-        sides: do side = 1, 2
-            levels_loop: do k = 0, levels
-                hi = half*0.2_dp**k
-                lo = merge(0.0_dp, half*0.2_dp**(k + 1), k == levels)
-                if (side == 1) then
-                    nodes(n + 1:n + n_gl) = a + lo + 0.5_dp*(xi + 1.0_dp)*(hi - lo)
-                else
-                    nodes(n + 1:n + n_gl) = b - lo - 0.5_dp*(xi + 1.0_dp)*(hi - lo)
-                end if
-                weights(n + 1:n + n_gl) = 0.5_dp*(hi - lo)*wt
-                n = n + n_gl
-            end do levels_loop
-        end do sides
-    end subroutine graded_rule
 
     !> max |T - T^T| / max |T|.
     pure real(dp) function asymmetry(t)

@@ -237,21 +237,14 @@ contains
     pure subroutine push_line(line, s, w, wc)
         type(line_rule_t), intent(inout) :: line
         real(dp), intent(in) :: s, w, wc
-        real(dp), allocatable :: tmp(:)
         integer :: cap
         if (.not. allocated(line%s)) then
             allocate (line%s(256), line%w(256), line%wc(256))
         else if (line%n == size(line%s)) then
             cap = 2*size(line%s)
-            allocate (tmp(cap))
-            tmp(1:line%n) = line%s(1:line%n)
-            call move_alloc(tmp, line%s)
-            allocate (tmp(cap))
-            tmp(1:line%n) = line%w(1:line%n)
-            call move_alloc(tmp, line%w)
-            allocate (tmp(cap))
-            tmp(1:line%n) = line%wc(1:line%n)
-            call move_alloc(tmp, line%wc)
+            call grow_vector(line%s, cap)
+            call grow_vector(line%w, cap)
+            call grow_vector(line%wc, cap)
         end if
         line%n = line%n + 1
         line%s(line%n) = s
@@ -259,27 +252,28 @@ contains
         line%wc(line%n) = wc
     end subroutine push_line
 
+    !> Enlarge an array to `cap` entries, keeping its contents.
+    pure subroutine grow_vector(v, cap)
+        real(dp), allocatable, intent(inout) :: v(:)
+        integer, intent(in) :: cap
+        real(dp), allocatable :: tmp(:)
+        allocate (tmp(cap))
+        tmp(1:size(v)) = v
+        call move_alloc(tmp, v)
+    end subroutine grow_vector
+
     pure subroutine push_point(rule, x, xi, w, wc)
         type(point_rule_t), intent(inout) :: rule
         real(dp), intent(in) :: x, xi, w, wc
-        real(dp), allocatable :: tmp(:)
         integer :: cap
         if (.not. allocated(rule%x)) then
             allocate (rule%x(1024), rule%xi(1024), rule%w(1024), rule%wc(1024))
         else if (rule%n == size(rule%x)) then
             cap = 2*size(rule%x)
-            allocate (tmp(cap))
-            tmp(1:rule%n) = rule%x(1:rule%n)
-            call move_alloc(tmp, rule%x)
-            allocate (tmp(cap))
-            tmp(1:rule%n) = rule%xi(1:rule%n)
-            call move_alloc(tmp, rule%xi)
-            allocate (tmp(cap))
-            tmp(1:rule%n) = rule%w(1:rule%n)
-            call move_alloc(tmp, rule%w)
-            allocate (tmp(cap))
-            tmp(1:rule%n) = rule%wc(1:rule%n)
-            call move_alloc(tmp, rule%wc)
+            call grow_vector(rule%x, cap)
+            call grow_vector(rule%xi, cap)
+            call grow_vector(rule%w, cap)
+            call grow_vector(rule%wc, cap)
         end if
         rule%n = rule%n + 1
         rule%x(rule%n) = x
