@@ -11,6 +11,7 @@ set terminal pngcairo size 1400,1000 font 'Sans,11' noenhanced
 set output png
 set multiplot layout 2,2 title title font 'Sans,14'
 set grid
+set format y '%g'
 set key box opaque font ',9' samplen 2
 set autoscale fix
 set offsets 0, 0, graph 0.08, graph 0.08

@@ -1,0 +1,4 @@
+# fricon sweep figure: run from the project root as  gnuplot output/paper/fig10_sweep.gp
+files = "output/paper/fig10_001.dat output/paper/fig10_002.dat output/paper/fig10_003.dat output/paper/fig10_004.dat output/paper/fig10_005.dat"
+labels = "F=0.2 F=0.3 F=0.4 F=0.6 F=1.0"
+call 'scripts/gnuplot/fricon_sweep.gp' 'output/paper/fig10_sweep.png' 'Fig. 10: beam rho 0.0025, V=1 H=0.1, f sweep (sweep)' 'BEAM'
