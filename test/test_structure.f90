@@ -185,16 +185,18 @@ contains
         type(section_t) :: sec
         real(dp), allocatable :: v(:)
         real(dp) :: exact, w0
+        integer :: axis(2)
         m = loaded_model(MODEL_PLATE, h, ne, interp)
         call new_discretization(m, d, err)
         if (allocated(err)) return
         sec = section_of(m)
+        axis = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1]   ! u_s(0) = psi(0) = 0
         if (clamped) then
-            call solve_supported(m, d, [d%fixed, d%offset(FIELD_W), d%offset(FIELD_PSI), d%nv], &
+            call solve_supported(m, d, [axis, d%offset(FIELD_W), d%offset(FIELD_PSI), d%nv], &
                                  v, err)
             exact = 1.0_dp/(64.0_dp*sec%bending) + 1.0_dp/(4.0_dp*sec%shear)
         else
-            call solve_supported(m, d, [d%fixed, d%offset(FIELD_PSI)], v, err)
+            call solve_supported(m, d, [axis, d%offset(FIELD_PSI)], v, err)
             exact = (5.0_dp + m%nu)/((1.0_dp + m%nu)*64.0_dp*sec%bending) &
                     + 1.0_dp/(4.0_dp*sec%shear)
         end if

@@ -17,7 +17,7 @@ module discretization
         integer :: nv = 0                  !! displacement unknowns
         integer :: nr = 0                  !! traction unknowns
         integer :: n = 0                   !! nv + nr
-        integer, allocatable :: fixed(:)   !! constrained global unknowns (plate: u_s(0), psi(0))
+        integer, allocatable :: fixed(:)   !! constrained unknowns (plate: u_s(0), psi(0), sigma_x(0))
     end type discretization_t
 
     public :: new_discretization, locate_element
@@ -51,7 +51,8 @@ contains
         if (m%kind == MODEL_BEAM) then
             allocate (d%fixed(0))
         else
-            d%fixed = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1]
+            ! axisymmetry: u_s, psi and the radial shear traction vanish on the axis
+            d%fixed = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1, d%offset(FIELD_SX) + 1]
         end if
     end subroutine new_discretization
 
