@@ -293,7 +293,7 @@ plot for [i = 1:5] sprintf('$out/fig20_%03d.dat', i) u 1:(2*\$3/0.01) w l lw 2 t
 set yrange [*:*] noreverse
 set title 'contact pressure Sigma_z, rho sweep'
 set ylabel 'Sigma_z'
-set yrange [-2:70]
+set yrange [-2:110]
 plot for [i = 1:5] sprintf('$out/fig11_18_%03d.dat', i) u 1:6 w l lw 2 t 'rho = '.word(rhos, i)
 set title 'contact pressure Sigma_z, zeta sweep at rho = 0.01'
 plot for [i = 1:5] sprintf('$out/fig20_%03d.dat', i) u 1:6 w l lw 2 t 'h/a = '.word(zetas, i)
