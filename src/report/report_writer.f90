@@ -201,11 +201,17 @@ contains
             write (u, '(a)') '   (no iteration: the case was refused before solving)'
             return
         end if
-        write (u, '(a)') '   outer inner  slip-pts  lift-pts  changed   rel.increment  note'
+        write (u, '(a)') '   outer inner  slip-pts  lift-pts  changed   rel.increment   rel.residual'// &
+            '  note'
         do i = 1, size(sol%history)
             associate (h => sol%history(i))
-                write (u, '(3x,i5,i6,3i10,es16.4,2x,a)') h%outer, h%inner, h%n_slip, &
-                    h%n_tension, h%n_changed, h%increment, trim(h%note)
+                if (h%residual >= 0.0_dp) then
+                    write (u, '(3x,i5,i6,3i10,2es16.4,2x,a)') h%outer, h%inner, h%n_slip, &
+                        h%n_tension, h%n_changed, h%increment, h%residual, trim(h%note)
+                else
+                    write (u, '(3x,i5,i6,3i10,es16.4,16x,2x,a)') h%outer, h%inner, h%n_slip, &
+                        h%n_tension, h%n_changed, h%increment, trim(h%note)
+                end if
             end associate
         end do
         write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, &
