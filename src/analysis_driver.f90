@@ -8,7 +8,7 @@ module analysis_driver
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
     use station_results, only: station_table_t, tabulate, contact_extent
-    use report_writer, only: write_data_file, write_plot_script, write_report
+    use report_writer, only: write_data_file, write_plot_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
     implicit none
     private
@@ -149,7 +149,7 @@ contains
             return
         end if
         call execute_command_line("gnuplot -c scripts/gnuplot/fricon_panels.gp '"//base// &
-            ".dat' '"//base//".png.tmp' 'fricon: "//trim(clean(m%title))//"' '"// &
+            ".dat' '"//base//".png.tmp' 'fricon: "//trim(shell_safe(m%title))//"' '"// &
             trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"' && mv -f '"//base//".png.tmp' '"// &
             base//".png'", exitstat=exit_status, cmdstat=cmd_status)
         if (cmd_status /= 0 .or. exit_status /= 0) then
@@ -158,16 +158,6 @@ contains
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
     end subroutine render_png
-
-    pure function clean(text) result(out)
-        character(len=*), intent(in) :: text
-        character(len=len(text)) :: out
-        integer :: i
-        out = text
-        do i = 1, len(out)
-            if (index("'""`$\", out(i:i)) > 0) out(i:i) = ' '
-        end do
-    end function clean
 
     !> output/STEM_sweep.gp (and .png): the solved cases overlaid (scripts/gnuplot/fricon_sweep.gp).
     subroutine write_sweep_plot(base, m, results, err)
@@ -192,7 +182,7 @@ contains
         write (u, '(a)') 'files = "'//files(2:)//'"'
         write (u, '(a)') 'labels = "'//labels(2:)//'"'
         write (u, '(a)') "call 'scripts/gnuplot/fricon_sweep.gp' '"//base//".png' '"// &
-            trim(clean(m%title))//" (sweep)' '"//trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"'"
+            trim(shell_safe(m%title))//" (sweep)' '"//trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"'"
         call commit_file(base//'.gp', u, err)
         if (allocated(err)) return
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &

@@ -19,7 +19,7 @@ module test_halfspace_beam
     use halfspace_beam, only: assemble_beam_flexibility, beam_surface_displacement, &
                               strip_kernels
     use lapack_interfaces, only: dpotrf
-    use quadrature_rules_for_tests, only: graded_rule
+    use halfspace_test_support, only: graded_rule, basis_value
     implicit none
     private
     public :: collect_halfspace_beam
@@ -91,21 +91,6 @@ contains
         call new_basis(bx, msh, fam_x)
         call new_basis(bz, msh, fam_z)
     end subroutine make_bases
-
-    !> Value of basis function `dof` at x on element e (0 if not supported there).
-    pure real(dp) function basis_value(basis, e, dof, x)
-        type(basis_t), intent(in) :: basis
-        integer, intent(in) :: e, dof
-        real(dp), intent(in) :: x
-        integer :: idx(max_local), i
-        real(dp) :: val(max_local), der(max_local), x_out
-        call eval_basis(basis, e, (2.0_dp*x - basis%x(e - 1) - basis%x(e))/ &
-                        (basis%x(e) - basis%x(e - 1)), idx, val, der, x_out)
-        basis_value = 0.0_dp
-        do i = 1, basis%n_local
-            if (idx(i) == dof) basis_value = val(i)
-        end do
-    end function basis_value
 
     pure real(dp) function anti_a(x, h)
         real(dp), intent(in) :: x, h

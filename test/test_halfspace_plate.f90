@@ -17,7 +17,7 @@ module test_halfspace_plate
     use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement, &
                                ring_kernels
     use lapack_interfaces, only: dpotrf
-    use quadrature_rules_for_tests, only: graded_rule
+    use halfspace_test_support, only: graded_rule, basis_value
     implicit none
     private
     public :: collect_halfspace_plate
@@ -74,21 +74,6 @@ contains
         call new_basis(bx, msh, fam_x)
         call new_basis(bz, msh, fam_z)
     end subroutine make_bases
-
-    !> Value of basis function `dof` at r on element e (0 if not supported there).
-    pure real(dp) function basis_value(basis, e, dof, r)
-        type(basis_t), intent(in) :: basis
-        integer, intent(in) :: e, dof
-        real(dp), intent(in) :: r
-        integer :: idx(max_local), i
-        real(dp) :: val(max_local), der(max_local), x
-        call eval_basis(basis, e, (2.0_dp*r - basis%x(e - 1) - basis%x(e))/ &
-                        (basis%x(e) - basis%x(e - 1)), idx, val, der, x)
-        basis_value = 0.0_dp
-        do i = 1, basis%n_local
-            if (idx(i) == dof) basis_value = val(i)
-        end do
-    end function basis_value
 
     function row_value(self, x) result(f)
         class(row_integrand_t), intent(inout) :: self

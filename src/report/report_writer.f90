@@ -13,7 +13,7 @@ module report_writer
     implicit none
     private
 
-    public :: write_data_file, write_plot_script, write_report
+    public :: write_data_file, write_plot_script, write_report, shell_safe
 
     character(len=*), parameter :: state_word(0:2) = ['lift-off', 'stick   ', 'slip    ']
 
@@ -55,20 +55,22 @@ contains
         if (allocated(err)) return
         write (u, '(a)') '# fricon figure: run from the project root as  gnuplot '//path
         write (u, '(a)') "call 'scripts/gnuplot/fricon_panels.gp' '"//dat_path//"' '"// &
-            png_path//"' '"//trim(quote_free(m%title))//"' '"// &
+            png_path//"' '"//trim(shell_safe(m%title))//"' '"// &
             trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"'"
         call commit_file(path, u, err)
     end subroutine write_plot_script
 
-    pure function quote_free(text) result(clean)
+    !> Text safe inside single quotes of a shell or gnuplot command: quotes, backquote, $ and
+    !! backslash become blanks.
+    pure function shell_safe(text) result(safe)
         character(len=*), intent(in) :: text
-        character(len=len(text)) :: clean
+        character(len=len(text)) :: safe
         integer :: i
-        clean = text
-        do i = 1, len(clean)
-            if (clean(i:i) == "'" .or. clean(i:i) == '"') clean(i:i) = ' '
+        safe = text
+        do i = 1, len(safe)
+            if (index("'""`$\", safe(i:i)) > 0) safe(i:i) = ' '
         end do
-    end function quote_free
+    end function shell_safe
 
     !> The text report. `failure` non-empty: ANALYSIS FAILED banner, log only.
     subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, failure, note, err)
@@ -223,10 +225,10 @@ contains
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         logical, intent(in) :: nondim
-        real(dp) :: sx, sres(5), sf(8)
+        real(dp) :: sx, sres(5), sf(7)
         integer :: i
         sx = merge(tab%scale_x, 1.0_dp, nondim)
-        sf = merge(tab%scale, [(1.0_dp, i=1, 8)], nondim)
+        sf = merge(tab%scale, [(1.0_dp, i=1, 7)], nondim)
         sres = merge(tab%scale_res, [(1.0_dp, i=1, 5)], nondim)
         if (nondim) then
             write (u, '(/,a)') ' 5. STATIONS (nondimensional)'

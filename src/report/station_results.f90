@@ -17,11 +17,11 @@ module station_results
         integer :: n = 0
         integer :: n_res = 3                    !! beam N M Q; plate N_r N_t M_r M_t Q_r
         real(dp), allocatable :: x(:)           !! x or r [length]
-        real(dp), allocatable :: field(:, :)    !! (8, n): u_s w psi sigma_x sigma_z gap slip tau0
+        real(dp), allocatable :: field(:, :)    !! (7, n): u_s w psi sigma_x sigma_z gap slip
         integer, allocatable :: state(:)        !! 0 lift-off, 1 stick, 2 slip
         real(dp), allocatable :: res(:, :)      !! (n_res, n)
         real(dp) :: scale_x = 1.0_dp            !! t = x * scale_x
-        real(dp) :: scale(8) = 1.0_dp           !! nondim = physical * scale (field columns)
+        real(dp) :: scale(7) = 1.0_dp           !! nondim = physical * scale (field columns)
         real(dp) :: scale_res(5) = 1.0_dp
     end type station_table_t
 
@@ -40,7 +40,7 @@ contains
         integer :: i
 
         call station_positions(m, d, tab)
-        allocate (tab%field(8, tab%n), tab%state(tab%n), tab%res(5, tab%n))
+        allocate (tab%field(7, tab%n), tab%state(tab%n), tab%res(5, tab%n))
         allocate (u_f(tab%n), w_f(tab%n))
         call surface_displacement(m, d, sol%z(d%nv + 1:), tab%x, u_f, w_f, err)
         if (allocated(err)) return
@@ -50,7 +50,6 @@ contains
             tab%field(6, i) = w_f(i) - tab%field(2, i)                  ! gap = w_f - w_b
             tab%field(7, i) = tab%field(1, i) - 0.5_dp*m%h*tab%field(3, i) - u_f(i) ! slip
             tab%state(i) = station_state(tab%field(4, i), tab%field(5, i), m%f)
-            tab%field(8, i) = m%f*max(tab%field(5, i), 0.0_dp)
         end do stations
         call set_scales(m, tab)
         ! complementarity proper: where the structure has lifted off, sigma_z * gap ~ 0
@@ -91,7 +90,7 @@ contains
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         real(dp), intent(in) :: x
-        real(dp), intent(out) :: field(8), res(5)
+        real(dp), intent(out) :: field(7), res(5)
         type(section_t) :: sec
         type(field_point_t) :: p, p_right
         integer :: e
@@ -102,7 +101,7 @@ contains
         s = traction_at(d, sol%z(d%nv + 1:), e, xi)
         field(1:3) = p%val
         field(4:5) = s
-        field(6:8) = 0.0_dp
+        field(6:7) = 0.0_dp
         res = resultants(sec, p)
         if (xi >= 1.0_dp .and. e < d%msh%ne) then
             p_right = displacement_at(d, sol%z(1:d%nv), e + 1, -1.0_dp)
@@ -137,12 +136,12 @@ contains
         if (m%kind == MODEL_BEAM) then
             tab%scale([1, 2, 6, 7]) = rigidity/(f*l**3)
             tab%scale(3) = rigidity/(f*l**2)
-            tab%scale([4, 5, 8]) = l/f
+            tab%scale(4:5) = l/f
             tab%scale_res(1:3) = [1.0_dp/f, 1.0_dp/(f*l), 1.0_dp/f]
         else
             tab%scale([1, 2, 6, 7]) = rigidity/(f*l**2)
             tab%scale(3) = rigidity/(f*l)
-            tab%scale([4, 5, 8]) = pi*l**2/f
+            tab%scale(4:5) = pi*l**2/f
             tab%scale_res = [l/f, l/f, 1.0_dp/f, 1.0_dp/f, l/f]
         end if
     end subroutine set_scales

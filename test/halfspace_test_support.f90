@@ -1,11 +1,12 @@
-!> Quadrature shared by the half-space test suites: independent of the library's own
-!! singular quadrature, so that the tests check it rather than repeat it.
-module quadrature_rules_for_tests
+!> Helpers shared by the half-space test suites: a quadrature independent of the library's
+!! singular quadrature (so that the tests check it rather than repeat it) and basis values.
+module halfspace_test_support
     use kinds, only: dp
     use quadrature, only: gauss_legendre
+    use shape_functions, only: basis_t, eval_basis, max_local
     implicit none
     private
-    public :: graded_rule
+    public :: graded_rule, basis_value
 
 contains
 
@@ -35,4 +36,19 @@ contains
             end do levels_loop
         end do sides
     end subroutine graded_rule
-end module quadrature_rules_for_tests
+
+    !> Value of basis function `dof` at x on element e (0 if not supported there).
+    pure real(dp) function basis_value(basis, e, dof, x)
+        type(basis_t), intent(in) :: basis
+        integer, intent(in) :: e, dof
+        real(dp), intent(in) :: x
+        integer :: idx(max_local), i
+        real(dp) :: val(max_local), der(max_local), x_out
+        call eval_basis(basis, e, (2.0_dp*x - basis%x(e - 1) - basis%x(e))/ &
+                        (basis%x(e) - basis%x(e - 1)), idx, val, der, x_out)
+        basis_value = 0.0_dp
+        do i = 1, basis%n_local
+            if (idx(i) == dof) basis_value = val(i)
+        end do
+    end function basis_value
+end module halfspace_test_support
