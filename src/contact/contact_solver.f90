@@ -24,10 +24,12 @@ module contact_solver
                                  assemble_coupling, traction_at
     use halfspace_operator, only: assemble_flexibility
     use linear_solve, only: solve_symmetric
+    use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP, contact_state, &
+                             friction_threshold
     implicit none
     private
 
-    integer, parameter, public :: STATE_LIFTOFF = 0, STATE_STICK = 1, STATE_SLIP = 2
+    public :: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
 
     !> Gauss points of the interface where the sets are decided (paper 4.6–4.7).
     type, public :: contact_points_t
@@ -271,7 +273,7 @@ contains
             end if
             if (allocated(err)) return
             sol%n_outer = outer
-            tau_new = m%f*max(sol%sigma(2, :), 0.0_dp)
+            tau_new = friction_threshold(m%f, sol%sigma(2, :))
             if (outer > 1) then
                 incr = relative_change(d, sol%z, z_prev)
                 call log_outer(sol, outer, incr, omega)
@@ -427,14 +429,8 @@ contains
         integer :: p
         do p = 1, sol%pts%n
             sol%sigma(:, p) = traction_at(d, sol%z(d%nv + 1:), sol%pts%elem(p), sol%pts%xi(p))
-            if (sol%sigma(2, p) <= 0.0_dp) then
-                sol%state(p) = STATE_LIFTOFF
-            else if (abs(sol%sigma(1, p)) > sol%tau0(p)) then
-                sol%state(p) = STATE_SLIP
-            else
-                sol%state(p) = STATE_STICK
-            end if
         end do
+        sol%state = contact_state(sol%sigma(1, :), sol%sigma(2, :), sol%tau0)
     end subroutine classify
 
     !> Assemble the set-dependent terms, equilibrate, solve.

@@ -1,0 +1,49 @@
+!> The interface law at one point: unilateral contact and the regularised Coulomb threshold
+!! (SPEC §4, paper 2.6-2.7, 4.6-4.7). This is the one place that decides stick / slip /
+!! lift-off: the contact solver classifies its Gauss points with it, and the station table
+!! labels its stations with it.
+!!
+!! Signs: sigma_z > 0 is compression on the soil; sigma_x the shear traction on the soil.
+module interface_law
+    use kinds, only: dp
+    implicit none
+    private
+
+    integer, parameter, public :: STATE_LIFTOFF = 0, STATE_STICK = 1, STATE_SLIP = 2
+
+    public :: friction_threshold, in_tension, is_slipping, contact_state
+
+contains
+
+    !> tau0 = f max(sigma_z, 0): the friction threshold of the complete problem.
+    elemental real(dp) function friction_threshold(f, sigma_z) result(tau0)
+        real(dp), intent(in) :: f        !! friction coefficient
+        real(dp), intent(in) :: sigma_z  !! normal traction (compression > 0)
+        tau0 = f*max(sigma_z, 0.0_dp)
+    end function friction_threshold
+
+    !> The tension set of the penalty (paper 4.6b/4.7b): sigma_z <= 0.
+    elemental logical function in_tension(sigma_z)
+        real(dp), intent(in) :: sigma_z
+        in_tension = sigma_z <= 0.0_dp
+    end function in_tension
+
+    !> The slip set (paper 4.6a/4.7a): |sigma_x| > tau0.
+    elemental logical function is_slipping(sigma_x, tau0)
+        real(dp), intent(in) :: sigma_x, tau0
+        is_slipping = abs(sigma_x) > tau0
+    end function is_slipping
+
+    !> The state a reader is told: lift-off where the point is in tension, else slip where the
+    !! shear exceeds the threshold, else stick.
+    elemental integer function contact_state(sigma_x, sigma_z, tau0) result(state)
+        real(dp), intent(in) :: sigma_x, sigma_z, tau0
+        if (in_tension(sigma_z)) then
+            state = STATE_LIFTOFF
+        else if (is_slipping(sigma_x, tau0)) then
+            state = STATE_SLIP
+        else
+            state = STATE_STICK
+        end if
+    end function contact_state
+end module interface_law
