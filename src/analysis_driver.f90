@@ -8,7 +8,10 @@ module analysis_driver
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
     use station_results, only: station_table_t, tabulate, contact_extent
-    use report_writer, only: write_data_file, write_plot_script, write_report, shell_safe
+    use design_summary, only: summary_t, summarise
+    use summary_table, only: entry_t, summary_entries, entry_keys
+    use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
+                             write_plot_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
     implicit none
     private
@@ -17,8 +20,9 @@ module analysis_driver
     type, public :: case_result_t
         character(len=:), allocatable :: name, label, message
         integer :: status = EXIT_OK
-        real(dp) :: w_max = 0.0_dp, sigma_z_max = 0.0_dp, extent = 0.0_dp, rho = 0.0_dp
+        real(dp) :: rho = 0.0_dp
         integer :: n_outer = 0, n_inner = 0
+        type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
     end type case_result_t
 
     public :: run_analysis, solve_case
@@ -59,9 +63,8 @@ contains
             if (n > 1) name = name//'_'//case_number(i)
             call solve_case(deck, cases(i), trim(labels(i)), out_dir, name, results(i))
             if (results(i)%status == EXIT_OK) then
-                write (log_unit, '(a,es12.5,a,es12.5,a,f8.5,a)') name//': solved  W_max =', &
-                    results(i)%w_max, '  Sigma_z max =', results(i)%sigma_z_max, &
-                    '  contact extent t =', results(i)%extent, '  -> '//out_dir//'/'//name//'.txt'
+                write (log_unit, '(a)') name//': solved  '//console_summary(results(i)%entries)// &
+                    '  -> '//out_dir//'/'//name//'.txt'
             else
                 write (err_unit, '(a)') 'ERROR: '//name//' ('//deck%path//'): '// &
                     results(i)%message
@@ -71,7 +74,7 @@ contains
             status = max(status, results(i)%status)
         end do cases_loop
         if (n > 1) then
-            call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', results, err)
+            call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', cases(1), results, err)
             if (.not. allocated(err)) call write_sweep_plot(out_dir//'/'//deck%stem//'_sweep', &
                                                             cases(1), results, err)
         end if
@@ -87,7 +90,9 @@ contains
         write (text, '(i3.3)') i
     end function case_number
 
-    !> One case: solve, tabulate, write report, data file, gnuplot script and PNG.
+    !> One case: solve, tabulate, write report, data files, JSON summary, gnuplot script, PNG.
+    !! A failed case writes its report (ANALYSIS FAILED) and its JSON (status, message) only,
+    !! and removes the data files and figure of an earlier run of the same case.
     subroutine solve_case(deck, m, label, out_dir, name, result)
         type(deck_t), intent(in) :: deck
         type(model_t), intent(inout) :: m
@@ -96,6 +101,7 @@ contains
         type(discretization_t) :: d
         type(solution_t) :: sol
         type(station_table_t) :: tab
+        type(summary_t) :: s
         type(error_t), allocatable :: err, err_report
         character(len=:), allocatable :: base, note
 
@@ -112,14 +118,20 @@ contains
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
-            call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, &
+            call remove_stale(base)
+            call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, &
                               err%message, '', err_report)
+            call write_summary_json(base//'.json', name, deck%path, m, err%code, err%message, &
+                                    s, sol, tab, err_report)
             return
         end if
-        result%w_max = maxval(tab%field(2, :))*tab%scale(2)
-        result%sigma_z_max = maxval(tab%field(5, :))*tab%scale(5)
-        result%extent = contact_extent(tab)
+        s = summarise(m, sol, tab)
+        result%entries = summary_entries(m, s, contact_extent(tab, m%length))
         call write_data_file(base//'.dat', m, tab, err)
+        if (.not. allocated(err) .and. .not. m%nondim) call write_physical_csv(base//'.csv', m, &
+                                                                               tab, err)
+        if (.not. allocated(err)) call write_summary_json(base//'.json', name, deck%path, m, &
+                                                          EXIT_OK, '', s, sol, tab, err)
         if (.not. allocated(err)) call write_plot_script(base//'.gp', base//'.dat', &
                                                          base//'.png', m, err)
         if (allocated(err)) then
@@ -129,13 +141,51 @@ contains
         end if
         call render_png(base, m, note)
         result%message = note
-        call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, '', &
+        call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, '', &
                           note, err)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
         end if
     end subroutine solve_case
+
+    !> Results of an earlier run of the same case that a failed run must not leave beside its
+    !! ANALYSIS FAILED report.
+    subroutine remove_stale(base)
+        character(len=*), intent(in) :: base
+        character(len=*), parameter :: ext(5) = ['.dat', '.csv', '.gp ', '.png', '.txt']
+        integer :: k, u, ios
+        logical :: there
+        do k = 1, size(ext)
+            inquire (file=base//trim(ext(k)), exist=there)
+            if (.not. there) cycle
+            open (newunit=u, file=base//trim(ext(k)), status='old', iostat=ios)
+            if (ios == 0) close (u, status='delete', iostat=ios)
+        end do
+    end subroutine remove_stale
+
+    !> The console line: key results with their units.
+    pure function console_summary(e) result(text)
+        type(entry_t), intent(in) :: e(:)
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: keys(4) = [character(len=24) :: 'settlement_max', &
+                                                   'differential_settlement', 'pressure_mean', &
+                                                   'contact_extent_t']
+        character(len=*), parameter :: names(4) = [character(len=12) :: 'w_max', 'w_diff', &
+                                                    'p_mean', 'extent t']
+        character(len=24) :: buf
+        integer :: i, k
+        text = ''
+        do k = 1, size(keys)
+            do i = 1, size(e)
+                if (trim(e(i)%key) /= trim(keys(k))) cycle
+                write (buf, '(g0.4)') e(i)%value
+                text = text//trim(names(k))//' = '//trim(adjustl(buf))
+                if (len_trim(e(i)%unit) > 0) text = text//' '//trim(e(i)%unit)
+                if (k < size(keys)) text = text//',  '
+            end do
+        end do
+    end function console_summary
 
     !> gnuplot renders the PNG to a temporary name, moved into place on success.
     subroutine render_png(base, m, note)
@@ -205,23 +255,54 @@ contains
         if (len(word) == 0) word = 'case'
     end function one_word
 
-    !> output/STEM_summary.csv: one row per case.
-    subroutine write_summary_csv(path, results, err)
+    !> output/STEM_summary.csv: one row per case, with the key results of summary_table
+    !! (display units, named in the header); a failed case has empty result fields.
+    subroutine write_summary_csv(path, m, results, err)
         character(len=*), intent(in) :: path
+        type(model_t), intent(in) :: m
         type(case_result_t), intent(in) :: results(:)
         type(error_t), allocatable, intent(out) :: err
-        integer :: u, i
+        character(len=32), allocatable :: keys(:)
+        integer :: u, i, k
+        keys = entry_keys(m)
         call open_temporary(path, u, err)
         if (allocated(err)) return
-        write (u, '(a)') 'case,parameters,status,rho,W_max,Sigma_z_max,contact_extent,'// &
-            'outer_iterations,inner_iterations,message'
+        write (u, '(a)', advance='no') 'case,parameters,status,rho,outer_iterations'
+        do k = 1, size(keys)
+            write (u, '(a)', advance='no') ','//trim(keys(k))//unit_suffix(results, k)
+        end do
+        write (u, '(a)') ',message'
         do i = 1, size(results)
             associate (r => results(i))
-                write (u, '(a,",",a,",",i0,4(",",es15.7),2(",",i0),",",a)') r%name, &
-                    '"'//r%label//'"', r%status, r%rho, r%w_max, r%sigma_z_max, r%extent, &
-                    r%n_outer, r%n_inner, '"'//r%message//'"'
+                write (u, '(a,",",a,",",i0,",",es15.7,",",i0)', advance='no') r%name, &
+                    '"'//r%label//'"', r%status, r%rho, r%n_outer
+                do k = 1, size(keys)
+                    if (r%status /= EXIT_OK .or. .not. allocated(r%entries)) then
+                        write (u, '(a)', advance='no') ','
+                    else if (.not. r%entries(k)%defined) then
+                        write (u, '(a)', advance='no') ','
+                    else
+                        write (u, '(",",es15.7)', advance='no') r%entries(k)%value
+                    end if
+                end do
+                write (u, '(a)') ',"'//r%message//'"'
             end associate
         end do
         call commit_file(path, u, err)
     end subroutine write_summary_csv
+
+    !> ' [unit]' of key k from the first solved case ('' if none or a pure number).
+    pure function unit_suffix(results, k) result(text)
+        type(case_result_t), intent(in) :: results(:)
+        integer, intent(in) :: k
+        character(len=:), allocatable :: text
+        integer :: i
+        text = ''
+        do i = 1, size(results)
+            if (.not. allocated(results(i)%entries)) cycle
+            if (len_trim(results(i)%entries(k)%unit) > 0) &
+                text = ' ['//trim(results(i)%entries(k)%unit)//']'
+            return
+        end do
+    end function unit_suffix
 end module analysis_driver

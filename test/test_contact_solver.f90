@@ -8,6 +8,8 @@ module test_contact_solver
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF
     use station_results, only: station_table_t, tabulate, contact_extent
+    use station_columns, only: Q_GAP
+    use station_test_support, only: nd, nd_all
     implicit none
     private
     public :: collect_contact_solver
@@ -91,13 +93,13 @@ contains
         m = nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, 0.0_dp, 40)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check_close(err, tab%field(2, 1)*tab%scale(2), relative_stiffness(m)/4.0_dp, &
+        call check_close(err, nd(m, tab, 'W', 1), relative_stiffness(m)/4.0_dp, &
                          1.0e-2_dp, 0.0_dp, 'rigid punch W(0)')
         if (allocated(err)) return
         do i = 1, tab%n
-            t = tab%x(i)*tab%scale_x
+            t = nd(m, tab, 't', i)
             if (t > 0.7_dp) exit
-            call check_close(err, tab%field(5, i)*tab%scale(5), 0.5_dp/sqrt(1.0_dp - t*t), &
+            call check_close(err, nd(m, tab, 'Sigma_z', i), 0.5_dp/sqrt(1.0_dp - t*t), &
                              3.0e-2_dp, 0.0_dp, 'rigid punch Sigma_z')
             if (allocated(err)) return
         end do
@@ -137,7 +139,7 @@ contains
         m = nondim_plate(0.05_dp, 0.1_dp, 0.1_dp, 0.0_dp, 30)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, maxval(abs(tab%field(4, :)))*tab%scale(4) <= 1.0e-4_dp, &
+        call check(err, maxval(abs(nd_all(m, tab, 'Sigma_x'))) <= 1.0e-4_dp, &
                    'f = 0 but Sigma_x is not ~ 0')
     end subroutine test_frictionless_shear
 
@@ -152,7 +154,7 @@ contains
         m = nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, 1.0e3_dp, 40)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        w_bonded = tab%field(2, 1)*tab%scale(2)
+        w_bonded = nd(m, tab, 'W', 1)
         c = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
         call check_close(err, w_bonded, relative_stiffness(m)/(4.0_dp*c), 2.0e-2_dp, 0.0_dp, &
                          'bonded punch W(0)')
@@ -171,11 +173,11 @@ contains
         m = nondim_plate(1.0e4_dp, 0.1_dp, 0.5_dp, 1.0e3_dp, 30)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        w_bonded = tab%field(2, 1)*tab%scale(2)
+        w_bonded = nd(m, tab, 'W', 1)
         m = nondim_plate(1.0e4_dp, 0.1_dp, 0.5_dp, 0.0_dp, 30)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        w_free = tab%field(2, 1)*tab%scale(2)
+        w_free = nd(m, tab, 'W', 1)
         call check_close(err, w_bonded, w_free, 1.0e-3_dp, 0.0_dp, 'nu_f = 0.5 bonded vs smooth')
     end subroutine test_bonded_nu_half
 
@@ -189,13 +191,13 @@ contains
         m = nondim_plate(1.0e-3_dp, 0.05_dp, 0.1_dp, 0.5_dp, 40)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, contact_extent(tab) < 0.9_dp .and. tab%state(tab%n) == STATE_LIFTOFF, &
+        call check(err, contact_extent(tab, m%length) < 0.9_dp .and. tab%state(tab%n) == STATE_LIFTOFF, &
                    'flexible plate did not lift off')
         if (allocated(err)) return
         ! penalty: sigma_z = -(eta_bar/c) gap in the lift-off zone, so sigma_z * gap = O(eta_bar)
-        call check(err, sol%complementarity <= 1.0e3_dp*m%eta_bar, 'complementarity violated')
+        call check(err, tab%complementarity <= 1.0e3_dp*m%eta_bar, 'complementarity violated')
         if (allocated(err)) return
-        call check(err, all(tab%field(6, :) > 0.0_dp .or. tab%state /= STATE_LIFTOFF), &
+        call check(err, all(tab%val(Q_GAP, :) > 0.0_dp .or. tab%state /= STATE_LIFTOFF), &
                    'lift-off station without a positive gap')
         if (allocated(err)) return
         m = nondim_plate(10.0_dp, 0.1_dp, 0.1_dp, 0.5_dp, 40)
@@ -213,13 +215,13 @@ contains
         m = nondim_plate(0.01_dp, 0.2_dp, 0.1_dp, 0.2_dp, 30)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
+        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%eps_bar, &
                    'plate: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
         if (allocated(err)) return
         m = nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
+        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%eps_bar, &
                    'beam: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
     end subroutine test_admissibility
 
@@ -243,8 +245,8 @@ contains
             call run(m, sol, tab, err)
             if (allocated(err)) return
             mid = (tab%n + 1)/2
-            val(:, k) = [tab%field(2, mid)*tab%scale(2), tab%field(4, mid)*tab%scale(4), &
-                         tab%field(5, mid)*tab%scale(5)]
+            val(:, k) = [nd(m, tab, 'W', mid), nd(m, tab, 'Sigma_x', mid), &
+                         nd(m, tab, 'Sigma_z', mid)]
         end do
         do k = 1, 3, 2
             call check_close(err, val(k, 2), val(k, 3), 1.0e-4_dp, 0.0_dp, 'eps 1e-4 vs 1e-7')
@@ -316,7 +318,7 @@ contains
         if (allocated(err)) return
         call check(err, maxval(abs(sol%reaction - sol%applied)) <= 1.0e-8_dp .and. &
                    sol%residual(2) <= 1.0e-8_dp .and. &
-                   sol%admissibility*tab%scale(5) <= 1.0e3_dp*m%eps_bar, &
+                   sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%eps_bar, &
                    'soft beam: equilibrium, interface residual or admissibility violated')
     end subroutine test_soft_beam
 

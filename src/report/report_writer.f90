@@ -8,42 +8,224 @@ module report_writer
                      total_vertical_load
     use shape_functions, only: interp_name
     use discretization, only: discretization_t
-    use contact_solver, only: solution_t, STATE_LIFTOFF, STATE_STICK, STATE_SLIP
-    use station_results, only: station_table_t, contact_extent
+    use contact_solver, only: solution_t
+    use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
+    use station_columns, only: column_t, nondim_columns, physical_columns, case_units, &
+                               units_t, Q_STATE
+    use station_results, only: station_table_t, contact_extent, FLAG_TENSION, FLAG_OVERLAP
+    use design_summary, only: summary_t, interval_t
+    use summary_table, only: entry_t, summary_entries
     implicit none
     private
 
-    public :: write_data_file, write_plot_script, write_report, shell_safe
+    public :: write_data_file, write_physical_csv, write_summary_json, write_plot_script, &
+              write_report, shell_safe, json_string
 
     character(len=*), parameter :: state_word(0:2) = ['lift-off', 'stick   ', 'slip    ']
 
 contains
 
-    !> output/CASE.dat: `#` header naming every column, then one row per station.
+    !> output/CASE.dat: `#` header naming every column, then one row per station, all
+    !! nondimensional (SPEC §6, §9).
     subroutine write_data_file(path, m, tab, err)
         character(len=*), intent(in) :: path
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         type(error_t), allocatable, intent(out) :: err
-        integer :: u, i
+        type(column_t), allocatable :: cols(:)
+        integer :: u, i, c
+        cols = nondim_columns(m)
         call open_temporary(path, u, err)
         if (allocated(err)) return
         write (u, '(a)') '# fricon station data: '//trim(m%title)
-        write (u, '(a)') '# all columns nondimensional (SPEC 6); state 0 = lift-off, 1 = stick, 2 = slip'
-        if (m%kind == MODEL_BEAM) then
-            write (u, '(a)') '# 1:t 2:U 3:W 4:Psi 5:Sigma_x 6:Sigma_z 7:gap 8:slip 9:state '// &
-                '10:N/F 11:M/(F*l) 12:Q/F'
-        else
-            write (u, '(a)') '# 1:t 2:U 3:W 4:Psi 5:Sigma_x 6:Sigma_z 7:gap 8:slip 9:state '// &
-                '10:N_r*a/F 11:N_theta*a/F 12:M_r/F 13:M_theta/F 14:Q_r*a/F'
-        end if
+        write (u, '(a)') '# all columns nondimensional (SPEC 6); a station at a concentrated '// &
+            'load appears twice (left and right limit)'
+        do c = 1, size(cols)
+            write (u, '(a,i0,a)') '# ', c, ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
+        end do
+        write (u, '(a)', advance='no') '#'
+        do c = 1, size(cols)
+            write (u, '(1x,a)', advance='no') trim(cols(c)%symbol)
+        end do
+        write (u, '(a)') ''
         do i = 1, tab%n
-            write (u, '(f12.8,7es16.7e3,i3,5es16.7e3)') tab%x(i)*tab%scale_x, &
-                tab%field(1:5, i)*tab%scale(1:5), tab%field(6:7, i)*tab%scale(6:7), &
-                tab%state(i), tab%res(1:tab%n_res, i)*tab%scale_res(1:tab%n_res)
+            do c = 1, size(cols)
+                if (cols(c)%integer_valued) then
+                    write (u, '(i3)', advance='no') nint(tab%val(cols(c)%quantity, i))
+                else
+                    write (u, '(es16.7e3)', advance='no') &
+                        tab%val(cols(c)%quantity, i)*cols(c)%to_nondim
+                end if
+            end do
+            write (u, '(a)') ''
         end do
         call commit_file(path, u, err)
     end subroutine write_data_file
+
+    !> output/CASE.csv (physical decks): a header line `key [unit]`, one row per station.
+    subroutine write_physical_csv(path, m, tab, err)
+        character(len=*), intent(in) :: path
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        type(error_t), allocatable, intent(out) :: err
+        type(column_t), allocatable :: cols(:)
+        integer :: u, i, c
+        cols = physical_columns(m)
+        call open_temporary(path, u, err)
+        if (allocated(err)) return
+        do c = 1, size(cols)
+            if (c > 1) write (u, '(a)', advance='no') ','
+            write (u, '(a)', advance='no') trim(column_heading(cols(c)))
+        end do
+        write (u, '(a)') ''
+        do i = 1, tab%n
+            do c = 1, size(cols)
+                if (c > 1) write (u, '(a)', advance='no') ','
+                if (cols(c)%integer_valued) then
+                    write (u, '(i0)', advance='no') nint(tab%val(cols(c)%quantity, i))
+                else
+                    write (u, '(es15.7e3)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%to_unit
+                end if
+            end do
+            write (u, '(a)') ''
+        end do
+        call commit_file(path, u, err)
+    end subroutine write_physical_csv
+
+    !> `key [unit]`, or `key` for a pure number.
+    pure function column_heading(c) result(text)
+        type(column_t), intent(in) :: c
+        character(len=32) :: text
+        text = c%key
+        if (len_trim(c%unit) > 0) text = trim(c%key)//' ['//trim(c%unit)//']'
+    end function column_heading
+
+    !> output/CASE.json: status, units, the key results (summary_table), contact intervals
+    !! and the checks. A failed case gets its status and message, and no results.
+    subroutine write_summary_json(path, name, deck_path, m, status, message, s, sol, tab, err)
+        character(len=*), intent(in) :: path, name, deck_path, message
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: status
+        type(summary_t), intent(in) :: s
+        type(solution_t), intent(in) :: sol
+        type(station_table_t), intent(in) :: tab
+        type(error_t), allocatable, intent(out) :: err
+        type(entry_t), allocatable :: e(:)
+        type(units_t) :: un
+        integer :: u, i
+        call open_temporary(path, u, err)
+        if (allocated(err)) return
+        un = case_units(m)
+        write (u, '(a)') '{'
+        write (u, '(a)') '  "case": '//json_string(name)//','
+        write (u, '(a)') '  "deck": '//json_string(deck_path)//','
+        write (u, '(a)') '  "title": '//json_string(trim(m%title))//','
+        write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM)))//','
+        write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
+        write (u, '(a,i0,a)') '  "status": ', status, ','
+        write (u, '(a)') '  "message": '//json_string(message)//','
+        if (status /= 0) then
+            write (u, '(a)') '  "results": null'
+            write (u, '(a)') '}'
+            call commit_file(path, u, err)
+            return
+        end if
+        e = summary_entries(m, s, contact_extent(tab, m%length))
+        write (u, '(a)') '  "units": {'
+        do i = 1, size(e)
+            write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '//json_string(trim(e(i)%unit))//','
+        end do
+        write (u, '(a)') '    "intervals": '//json_string(trim(merge('t               ', un%length, m%nondim)))
+        write (u, '(a)') '  },'
+        write (u, '(a)') '  "results": {'
+        do i = 1, size(e)
+            write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '//json_number(e(i)%value, &
+                e(i)%defined)//','
+        end do
+        call write_json_intervals(u, m, s%intervals)
+        write (u, '(a)') '  },'
+        call write_json_checks(u, sol, tab, s)
+        write (u, '(a)') '}'
+        call commit_file(path, u, err)
+    end subroutine write_summary_json
+
+    subroutine write_json_intervals(u, m, iv)
+        integer, intent(in) :: u
+        type(model_t), intent(in) :: m
+        type(interval_t), intent(in) :: iv(:)
+        real(dp) :: scale
+        integer :: k
+        logical :: first
+        character(len=*), parameter :: kinds(2) = ['contact_intervals', 'liftoff_intervals']
+        integer :: j
+        scale = merge(1.0_dp/m%length, 1.0_dp, m%nondim)
+        do j = 1, 2
+            write (u, '(a)', advance='no') '    "'//kinds(j)//'": ['
+            first = .true.
+            do k = 1, size(iv)
+                if (iv(k)%contact .neqv. (j == 1)) cycle
+                if (.not. first) write (u, '(a)', advance='no') ', '
+                write (u, '(a)', advance='no') '['//json_number(iv(k)%x1*scale, .true.)//', '// &
+                    json_number(iv(k)%x2*scale, .true.)//']'
+                first = .false.
+            end do
+            write (u, '(a)') merge(']  ', '], ', j == 2)
+        end do
+    end subroutine write_json_intervals
+
+    subroutine write_json_checks(u, sol, tab, s)
+        integer, intent(in) :: u
+        type(solution_t), intent(in) :: sol
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(in) :: s
+        write (u, '(a)') '  "checks": {'
+        write (u, '(a)') '    "equilibrium": '//json_number(s%equilibrium, .true.)//','
+        write (u, '(a)') '    "residual_structure": '//json_number(sol%residual(1), .true.)//','
+        write (u, '(a)') '    "residual_interface": '//json_number(sol%residual(2), .true.)//','
+        write (u, '(a)') '    "complementarity": '//json_number(tab%complementarity, .true.)//','
+        write (u, '(a)') '    "compatibility": '//json_number(tab%compatibility, .true.)//','
+        write (u, '(a)') '    "friction_admissibility": '//json_number(s%admissibility, .true.)//','
+        write (u, '(a)') '    "friction_admissibility_tol": '// &
+            json_number(s%admissibility_tol, .true.)//','
+        write (u, '(a)') '    "friction_admissible": '// &
+            trim(merge('true ', 'false', s%admissibility <= s%admissibility_tol))//','
+        write (u, '(a,i0,a)') '    "tension_flags": ', s%n_tension_flags, ','
+        write (u, '(a,i0)') '    "overlap_flags": ', s%n_overlap_flags
+        write (u, '(a)') '  }'
+    end subroutine write_json_checks
+
+    !> A JSON string literal (quotes, backslashes and control characters escaped).
+    pure function json_string(text) result(js)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: js
+        integer :: i
+        js = '"'
+        do i = 1, len(text)
+            select case (text(i:i))
+            case ('"', '\')
+                js = js//'\'//text(i:i)
+            case (achar(0):achar(31))
+                js = js//' '
+            case default
+                js = js//text(i:i)
+            end select
+        end do
+        js = js//'"'
+    end function json_string
+
+    !> A JSON number (null when not defined or not finite).
+    pure function json_number(x, defined) result(text)
+        real(dp), intent(in) :: x
+        logical, intent(in) :: defined
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        if (.not. defined .or. .not. (abs(x) <= huge(x))) then
+            text = 'null'
+            return
+        end if
+        write (buf, '(es23.15e3)') x
+        text = trim(adjustl(buf))
+    end function json_number
 
     !> output/CASE.gp: calls the data-driven panel script (run gnuplot from the project root).
     subroutine write_plot_script(path, dat_path, png_path, m, err)
@@ -73,13 +255,14 @@ contains
     end function shell_safe
 
     !> The text report. `failure` non-empty: ANALYSIS FAILED banner, log only.
-    subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, failure, note, err)
+    subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, s, failure, note, err)
         character(len=*), intent(in) :: path, deck_path, label, failure, note
         character(len=*), intent(in) :: lines(:)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(in) :: s
         type(error_t), allocatable, intent(out) :: err
         integer :: u
         call open_temporary(path, u, err)
@@ -97,9 +280,13 @@ contains
         call write_conventions(u, m)
         call write_log(u, sol)
         if (len_trim(failure) == 0) then
-            call write_table(u, m, tab, .true.)
-            if (.not. m%nondim) call write_table(u, m, tab, .false.)
-            call write_summary(u, m, sol, tab)
+            call write_table(u, ' 5. STATIONS (nondimensional, SPEC 6)', nondim_columns(m), &
+                             tab, .true.)
+            if (.not. m%nondim) call write_table(u, ' 6. STATIONS (physical units)', &
+                                                 physical_columns(m), tab, .false.)
+            call write_station_notes(u, tab)
+            call write_summary(u, m, s, tab)
+            call write_checks(u, m, sol, tab, s)
         end if
         if (len_trim(note) > 0) write (u, '(/,a)') ' NOTE: '//note
         call commit_file(path, u, err)
@@ -216,81 +403,114 @@ contains
                 end if
             end associate
         end do
-        write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, &
-            ' inner (linear solves)'
+        write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, ' inner'
+        write (u, '(3x,a,i0)') 'linear solves: ', sol%n_inner
     end subroutine write_log
 
-    subroutine write_table(u, m, tab, nondim)
+    !> A station table from a list of columns; flagged rows end with ` !T` (tension beyond
+    !! O(eta)) or ` !O` (lifted off with a negative pointwise gap).
+    subroutine write_table(u, heading, cols, tab, nondim)
         integer, intent(in) :: u
-        type(model_t), intent(in) :: m
+        character(len=*), intent(in) :: heading
+        type(column_t), intent(in) :: cols(:)
         type(station_table_t), intent(in) :: tab
         logical, intent(in) :: nondim
-        real(dp) :: sx, sres(5), sf(7)
-        integer :: i
-        sx = merge(tab%scale_x, 1.0_dp, nondim)
-        sf = merge(tab%scale, [(1.0_dp, i=1, 7)], nondim)
-        sres = merge(tab%scale_res, [(1.0_dp, i=1, 5)], nondim)
-        if (nondim) then
-            write (u, '(/,a)') ' 5. STATIONS (nondimensional)'
-            if (m%kind == MODEL_BEAM) then
-                write (u, '(a)') '         t          U            W            Psi         Sigma_x'// &
-                    '      Sigma_z       gap          slip        state         N/F        M/(Fl)'// &
-                    '         Q/F'
-            else
-                write (u, '(a)') '         t          U            W            Psi         Sigma_x'// &
-                    '      Sigma_z       gap          slip        state       N_r a/F    '// &
-                    'N_t a/F      M_r/F        M_t/F       Q_r a/F'
-            end if
-        else
-            write (u, '(/,a)') ' 6. STATIONS (physical: '//trim(m%force_unit)//', '// &
-                trim(m%length_unit)//', rad)'
-            if (m%kind == MODEL_BEAM) then
-                write (u, '(a)') '         x          u_s          w            psi         sigma_x'// &
-                    '      sigma_z       gap          slip        state          N            M'// &
-                    '             Q'
-            else
-                write (u, '(a)') '         r          u_s          w            psi         sigma_x'// &
-                    '      sigma_z       gap          slip        state          N_r       N_t'// &
-                    '          M_r          M_t           Q_r'
-            end if
-        end if
-        do i = 1, tab%n
-            write (u, '(f10.5,7es13.4,2x,a8,5es13.4)') tab%x(i)*sx, tab%field(1:7, i)*sf(1:7), &
-                state_word(tab%state(i)), tab%res(1:tab%n_res, i)*sres(1:tab%n_res)
+        integer :: i, c
+        write (u, '(/,a)') heading
+        do c = 1, size(cols)
+            if (.not. cols(c)%in_report) cycle
+            write (u, '(a13)', advance='no') trim(cols(c)%symbol)
         end do
+        write (u, '(a)') ''
+        if (.not. nondim) then
+            do c = 1, size(cols)
+                if (.not. cols(c)%in_report) cycle
+                write (u, '(a13)', advance='no') '['//trim(cols(c)%unit)//']'
+            end do
+            write (u, '(a)') ''
+        end if
+        rows: do i = 1, tab%n
+            do c = 1, size(cols)
+                if (.not. cols(c)%in_report) cycle
+                if (cols(c)%integer_valued) then
+                    write (u, '(a13)', advance='no') trim(state_word(nint(tab%val(Q_STATE, i))))
+                else if (c == 1) then
+                    write (u, '(f13.5)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%to_unit
+                else
+                    write (u, '(es13.4)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%to_unit
+                end if
+            end do
+            if (iand(tab%flag(i), FLAG_TENSION) /= 0) write (u, '(a)', advance='no') ' !T'
+            if (iand(tab%flag(i), FLAG_OVERLAP) /= 0) write (u, '(a)', advance='no') ' !O'
+            write (u, '(a)') ''
+        end do rows
     end subroutine write_table
 
-    subroutine write_summary(u, m, sol, tab)
+    subroutine write_station_notes(u, tab)
+        integer, intent(in) :: u
+        type(station_table_t), intent(in) :: tab
+        write (u, '(/,a)') '   Station values: tractions are the mean over the elements meeting at '// &
+            'the station (the forces the equations carry);'
+        write (u, '(a)') '   states follow the solver''s interface law; gap is 0 where in contact '// &
+            '(weak compatibility, see CHECKS);'
+        write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the section; '// &
+            'a station at a concentrated load'
+        write (u, '(a)') '   appears twice (left and right limit).'
+        if (any(tab%flag /= 0)) write (u, '(a)') '   FLAGGED rows: !T tension beyond the '// &
+            'penalty''s O(eta); !O lifted off with a negative pointwise gap (discretisation).'
+    end subroutine write_station_notes
+
+    !> The design summary: the entries of summary_table, then the contact intervals.
+    subroutine write_summary(u, m, s, tab)
+        integer, intent(in) :: u
+        type(model_t), intent(in) :: m
+        type(summary_t), intent(in) :: s
+        type(station_table_t), intent(in) :: tab
+        type(entry_t), allocatable :: e(:)
+        integer :: i
+        e = summary_entries(m, s, contact_extent(tab, m%length))
+        write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional, SPEC 6', &
+            'physical units        ', m%nondim))//')'
+        do i = 1, size(e)
+            if (.not. e(i)%defined) then
+                write (u, '(3x,a,t52,a)') e(i)%label, 'n/a'
+            else if (e(i)%key == 'linear_solves') then
+                write (u, '(3x,a,t52,i14)') e(i)%label, nint(e(i)%value)
+            else
+                write (u, '(3x,a,t52,es14.5,2x,a)') e(i)%label, e(i)%value, trim(e(i)%unit)
+            end if
+        end do
+        call write_intervals(u, m, s%intervals)
+        write (u, '(3x,a)') 'The pressure at an edge in contact is singular in theory: the station '// &
+            'maximum there depends on the mesh;'
+        write (u, '(3x,a)') 'use the mean pressure and the pressure at d from the edge for design.'
+    end subroutine write_summary
+
+    subroutine write_intervals(u, m, iv)
+        integer, intent(in) :: u
+        type(model_t), intent(in) :: m
+        type(interval_t), intent(in) :: iv(:)
+        type(units_t) :: un
+        real(dp) :: scale
+        integer :: k
+        un = case_units(m)
+        scale = merge(1.0_dp/m%length, 1.0_dp, m%nondim)
+        write (u, '(3x,a)') 'intervals ('//trim(merge('t               ', un%length, m%nondim))// &
+            '; boundaries midway between stations of different state):'
+        do k = 1, size(iv)
+            write (u, '(6x,a,f12.5,a,f12.5)') merge('contact  from', 'lift-off from', iv(k)%contact), &
+                iv(k)%x1*scale, ' to', iv(k)%x2*scale
+        end do
+    end subroutine write_intervals
+
+    subroutine write_checks(u, m, sol, tab, s)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(in) :: tab
-        character(len=*), parameter :: fmt = '(3x,a,t52,es14.6,2x,es14.6,2x,a)'
-        real(dp) :: w_max, w_min, p_max, m_max, area, w_mean, k_s, tol_adm, v
-        integer :: i_m
+        type(summary_t), intent(in) :: s
+        real(dp) :: v
         v = total_vertical_load(m)
-        w_max = maxval(tab%field(2, :))
-        w_min = minval(tab%field(2, :))
-        p_max = maxval(tab%field(5, :))
-        i_m = merge(2, 3, m%kind == MODEL_BEAM)
-        m_max = maxval(abs(tab%res(i_m, :)))
-        call mean_settlement(m, tab, area, w_mean)
-        k_s = (v/area)/w_mean
-        write (u, '(/,a)') ' 7. SUMMARY                                        '// &
-            'nondimensional  physical'
-        write (u, fmt) 'max settlement W', w_max*tab%scale(2), w_max, trim(m%length_unit)
-        write (u, fmt) 'differential settlement (max - min)', (w_max - w_min)*tab%scale(2), &
-            w_max - w_min, trim(m%length_unit)
-        write (u, fmt) 'contact extent (largest t >= 0 in contact)', contact_extent(tab)
-        write (u, fmt) 'max contact pressure Sigma_z (*)', p_max*tab%scale(5), p_max
-        write (u, fmt) 'max |moment| (beam M, plate M_r)', m_max*tab%scale_res(i_m), m_max
-        write (u, fmt) 'secant subgrade modulus (F/A)/w_mean', 1.0_dp/(w_mean*tab%scale(2)), &
-            k_s, trim(m%force_unit)//'/'//trim(m%length_unit)//'^3'
-        if (m%kind == MODEL_BEAM .and. m%f > 0.0_dp) then
-            write (u, fmt) 'sliding utilisation H/(f V)', abs(sum(m%loads%fx))/(m%f*v)
-        end if
-        write (u, '(3x,a)') '(*) the pressure peaks at the edge of a stiff contact are singular '// &
-            'in theory: their value is mesh dependent.'
         write (u, '(/,a)') ' 8. CHECKS'
         write (u, '(3x,a,es10.2,a,es10.2)') 'residual of 4.2a (equilibrium of the structure) ', &
             sol%residual(1), '   of 4.2b (interface law) ', sol%residual(2)
@@ -301,48 +521,33 @@ contains
         if (m%kind == MODEL_BEAM) write (u, '(3x,a,2es16.8,a,es9.2)') &
             'moment:     reaction, load ', sol%reaction(3), sol%applied(3), '  rel.diff ', &
             rel_diff(sol%reaction(3), sol%applied(3), v*m%length)
-        write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z * gap| over lift-off '// &
-            'stations (nondim) ', sol%complementarity, '  (penalty: O(eta_bar))'
-        write (u, '(3x,a,es10.2,a)') 'compatibility max |gap|/max W over contact stations ', &
-            sol%compatibility, '  (pointwise error of the weak (Galerkin) contact condition)'
-        write (u, '(3x,a,es10.2)') 'minimum Sigma_z (negative only where lifted off) ', &
-            sol%min_sigma_z*tab%scale(5)
-        tol_adm = 10.0_dp*m%eps_bar*max(1.0_dp, p_max*tab%scale(5))
+        write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z gap|/max W at lift-off '// &
+            'stations ', tab%complementarity, '  (penalty: O(eta_bar))'
+        write (u, '(3x,a,es10.2,a)') 'compatibility max |pointwise gap|/max w at contact '// &
+            'stations ', tab%compatibility, '  (error of the weak contact condition)'
+        write (u, '(3x,a,es10.2,a,i0,a)') 'minimum station Sigma_z (< 0: tension) ', &
+            nondim_sigma(m, tab%most_tensile), ' (', s%n_tension_flags, &
+            ' stations beyond O(eta) flagged !T)'
+        write (u, '(3x,a,es10.2)') 'most tensile Gauss-point Sigma_z (solver) ', &
+            nondim_sigma(m, sol%min_sigma_z)
         write (u, '(3x,a,es10.2,a,es9.2,a)') 'friction admissibility max(|Sigma_x| - f Sigma_z) ', &
-            sol%admissibility*tab%scale(5), '  (tolerance ', tol_adm, &
-            merge(': ok)      ', ': EXCEEDED)', sol%admissibility*tab%scale(5) <= tol_adm)
+            s%admissibility, '  (tolerance ', s%admissibility_tol, &
+            merge(': ok)      ', ': EXCEEDED)', s%admissibility <= s%admissibility_tol)
         write (u, '(3x,a,i0,a)') 'state counts at the stations: ', count(tab%state == STATE_STICK), &
             ' stick, '//itoa(count(tab%state == STATE_SLIP))//' slip, '// &
             itoa(count(tab%state == STATE_LIFTOFF))//' lift-off'
-    end subroutine write_summary
+    end subroutine write_checks
 
-    !> Mean settlement over the base (trapezoid over the stations; area-weighted for the plate).
-    pure subroutine mean_settlement(m, tab, area, w_mean)
+    !> Sigma = l sigma / F (beam) or pi a^2 sigma / F (plate).
+    pure real(dp) function nondim_sigma(m, sigma)
         type(model_t), intent(in) :: m
-        type(station_table_t), intent(in) :: tab
-        real(dp), intent(out) :: area, w_mean
-        real(dp) :: wt_sum, w_sum, wa, wb
-        integer :: i
-        w_sum = 0.0_dp
-        wt_sum = 0.0_dp
-        do i = 1, tab%n - 1
-            wa = 1.0_dp
-            wb = 1.0_dp
-            if (m%kind /= MODEL_BEAM) then
-                wa = tab%x(i)
-                wb = tab%x(i + 1)
-            end if
-            w_sum = w_sum + 0.5_dp*(wa*tab%field(2, i) + wb*tab%field(2, i + 1))* &
-                    (tab%x(i + 1) - tab%x(i))
-            wt_sum = wt_sum + 0.5_dp*(wa + wb)*(tab%x(i + 1) - tab%x(i))
-        end do
-        w_mean = w_sum/wt_sum
+        real(dp), intent(in) :: sigma
         if (m%kind == MODEL_BEAM) then
-            area = m%length*m%b
+            nondim_sigma = sigma*m%length/total_vertical_load(m)
         else
-            area = pi*m%length**2
+            nondim_sigma = sigma*pi*m%length**2/total_vertical_load(m)
         end if
-    end subroutine mean_settlement
+    end function nondim_sigma
 
     pure real(dp) function rel_diff(a, b, scale)
         real(dp), intent(in) :: a, b, scale

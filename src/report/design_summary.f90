@@ -1,0 +1,218 @@
+!> The design values of a solved case, computed from the station table and the solution (both
+!! read-only), in the deck's physical units. The report, the JSON summary and the sweep CSV
+!! print these values; README "Design summary" defines every key.
+!!
+!! Conventions: pressures are force/length^2 (a beam's line load divided by its width b);
+!! M > 0 is hogging (top fibre in tension), so the largest sagging moment is the most negative
+!! M. Contact intervals come from the station states; a boundary between a station in contact
+!! and one lifted off is placed midway between them (the resolution of the stations). The
+!! contact pressure at the edge of a footing in contact is singular in theory, so beside the
+!! largest station value the summary gives the pressure at the distance h (the thickness) from
+!! each edge, where the plate/beam model itself starts to hold.
+module design_summary
+    use kinds, only: dp, pi
+    use model, only: model_t, MODEL_BEAM, total_vertical_load
+    use contact_solver, only: solution_t
+    use interface_law, only: STATE_LIFTOFF
+    use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q
+    use station_results, only: station_table_t, FLAG_TENSION, FLAG_OVERLAP
+    implicit none
+    private
+
+    !> One maximal run of stations in contact (or lifted off), [x1, x2].
+    type, public :: interval_t
+        real(dp) :: x1 = 0.0_dp, x2 = 0.0_dp
+        logical :: contact = .true.
+    end type interval_t
+
+    !> A value and where it occurs.
+    type, public :: located_t
+        real(dp) :: value = 0.0_dp
+        real(dp) :: x = 0.0_dp
+    end type located_t
+
+    !> Everything the design summary reports.
+    type, public :: summary_t
+        type(located_t) :: w_max, w_min               !! settlement [L]
+        real(dp) :: w_differential = 0.0_dp           !! w_max - w_min [L]
+        real(dp) :: tilt = 0.0_dp                     !! beam (w(l/2) - w(-l/2))/l; plate 0 [rad]
+        type(located_t) :: slope_max                  !! largest |dw/dx| between stations [rad]
+        type(located_t) :: angular_distortion         !! largest |dw/dx - tilt| [rad]
+        type(interval_t), allocatable :: intervals(:) !! contact and lift-off, in order of x
+        real(dp) :: contact_length = 0.0_dp           !! beam: length in contact; plate: 0 [L]
+        real(dp) :: contact_area = 0.0_dp             !! [L^2]
+        real(dp) :: mean_pressure = 0.0_dp            !! V / contact area [F/L^2]
+        type(located_t) :: pressure_max               !! largest station pressure [F/L^2]
+        real(dp) :: edge_distance = 0.0_dp            !! h [L]
+        real(dp) :: edge_pressure(2) = 0.0_dp         !! at h from the left end / the rim [F/L^2]
+        logical :: edge_in_contact(2) = .false.
+        type(located_t) :: m_sag, m_hog               !! beam M, plate M_r [F L or F L / L]
+        type(located_t) :: mt_sag, mt_hog             !! plate M_theta
+        type(located_t) :: q_abs_max                  !! largest |Q| (signed value) [F or F/L]
+        real(dp) :: utilisation = -1.0_dp             !! H/(f V); -1 if f = 0
+        integer :: linear_solves = 0
+        integer :: n_tension_flags = 0, n_overlap_flags = 0
+        real(dp) :: equilibrium = 0.0_dp              !! max relative reaction error
+        real(dp) :: admissibility = 0.0_dp            !! max(|Sigma_x| - f Sigma_z), nondim
+        real(dp) :: admissibility_tol = 0.0_dp
+    end type summary_t
+
+    public :: summarise
+
+contains
+
+    !> All design values of a solved case.
+    pure function summarise(m, sol, tab) result(s)
+        type(model_t), intent(in) :: m
+        type(solution_t), intent(in) :: sol
+        type(station_table_t), intent(in) :: tab
+        type(summary_t) :: s
+        call settlement_values(m, tab, s)
+        call contact_values(m, tab, s)
+        call resultant_values(m, tab, s)
+        call check_values(m, sol, tab, s)
+    end function summarise
+
+    pure subroutine settlement_values(m, tab, s)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(inout) :: s
+        real(dp) :: slope
+        integer :: i
+        s%w_max = located_max(tab, tab%val(Q_W, :))
+        s%w_min = located_max(tab, -tab%val(Q_W, :))
+        s%w_min%value = -s%w_min%value
+        s%w_differential = s%w_max%value - s%w_min%value
+        s%tilt = 0.0_dp
+        if (m%kind == MODEL_BEAM) s%tilt = (tab%val(Q_W, tab%n) - tab%val(Q_W, 1))/m%length
+        pairs: do i = 1, tab%n - 1
+            if (tab%val(Q_X, i + 1) <= tab%val(Q_X, i)) cycle pairs
+            slope = (tab%val(Q_W, i + 1) - tab%val(Q_W, i))/(tab%val(Q_X, i + 1) - tab%val(Q_X, i))
+            if (abs(slope) > abs(s%slope_max%value)) &
+                s%slope_max = located_t(slope, 0.5_dp*(tab%val(Q_X, i) + tab%val(Q_X, i + 1)))
+            if (abs(slope - s%tilt) > s%angular_distortion%value) s%angular_distortion = &
+                located_t(abs(slope - s%tilt), 0.5_dp*(tab%val(Q_X, i) + tab%val(Q_X, i + 1)))
+        end do pairs
+    end subroutine settlement_values
+
+    !> Intervals, contact length and area, mean, largest and near-edge pressures.
+    pure subroutine contact_values(m, tab, s)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(inout) :: s
+        real(dp) :: width, x0, x1
+        integer :: k
+        width = merge(m%b, 1.0_dp, m%kind == MODEL_BEAM)   ! line load -> pressure
+        s%intervals = contact_intervals(tab)
+        s%contact_length = 0.0_dp
+        s%contact_area = 0.0_dp
+        do k = 1, size(s%intervals)
+            if (.not. s%intervals(k)%contact) cycle
+            associate (a => s%intervals(k)%x1, b => s%intervals(k)%x2)
+                if (m%kind == MODEL_BEAM) then
+                    s%contact_length = s%contact_length + (b - a)
+                    s%contact_area = s%contact_area + (b - a)*m%b
+                else
+                    s%contact_area = s%contact_area + pi*(b**2 - a**2)
+                end if
+            end associate
+        end do
+        s%mean_pressure = 0.0_dp
+        if (s%contact_area > 0.0_dp) s%mean_pressure = total_vertical_load(m)/s%contact_area
+        s%pressure_max = located_max(tab, tab%val(Q_SZ, :)/width)
+        s%edge_distance = m%h
+        x0 = tab%val(Q_X, 1)
+        x1 = tab%val(Q_X, tab%n)
+        if (2.0_dp*m%h < x1 - x0) then
+            s%edge_pressure(2) = interpolate(tab, tab%val(Q_SZ, :), x1 - m%h)/width
+            s%edge_in_contact(2) = tab%state(tab%n) /= STATE_LIFTOFF
+            if (m%kind == MODEL_BEAM) then
+                s%edge_pressure(1) = interpolate(tab, tab%val(Q_SZ, :), x0 + m%h)/width
+                s%edge_in_contact(1) = tab%state(1) /= STATE_LIFTOFF
+            end if
+        end if
+    end subroutine contact_values
+
+    !> Maximal runs of equal contact status; boundaries midway between differing stations.
+    pure function contact_intervals(tab) result(iv)
+        type(station_table_t), intent(in) :: tab
+        type(interval_t), allocatable :: iv(:)
+        logical :: touching(tab%n)
+        real(dp) :: mid
+        integer :: i
+        touching = tab%state /= STATE_LIFTOFF
+        iv = [interval_t(tab%val(Q_X, 1), tab%val(Q_X, tab%n), touching(1))]
+        do i = 2, tab%n
+            if (touching(i) .eqv. touching(i - 1)) cycle
+            mid = 0.5_dp*(tab%val(Q_X, i - 1) + tab%val(Q_X, i))
+            iv(size(iv))%x2 = mid
+            iv = [iv, interval_t(mid, tab%val(Q_X, tab%n), touching(i))]
+        end do
+    end function contact_intervals
+
+    pure subroutine resultant_values(m, tab, s)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(inout) :: s
+        integer :: i
+        s%m_hog = located_max(tab, tab%val(Q_M, :))
+        s%m_sag = located_max(tab, -tab%val(Q_M, :))
+        s%m_sag%value = -s%m_sag%value
+        if (m%kind /= MODEL_BEAM) then
+            s%mt_hog = located_max(tab, tab%val(Q_MT, :))
+            s%mt_sag = located_max(tab, -tab%val(Q_MT, :))
+            s%mt_sag%value = -s%mt_sag%value
+        end if
+        i = maxloc(abs(tab%val(Q_Q, :)), dim=1)
+        s%q_abs_max = located_t(tab%val(Q_Q, i), tab%val(Q_X, i))
+    end subroutine resultant_values
+
+    pure subroutine check_values(m, sol, tab, s)
+        type(model_t), intent(in) :: m
+        type(solution_t), intent(in) :: sol
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(inout) :: s
+        real(dp) :: v, scale(3), sigma_scale
+        v = total_vertical_load(m)
+        s%utilisation = -1.0_dp
+        if (m%f > 0.0_dp) s%utilisation = abs(sum(m%loads%fx))/(m%f*v)
+        s%linear_solves = sol%n_inner
+        s%n_tension_flags = count(iand(tab%flag, FLAG_TENSION) /= 0)
+        s%n_overlap_flags = count(iand(tab%flag, FLAG_OVERLAP) /= 0)
+        scale = v*[1.0_dp, 1.0_dp, m%length]
+        s%equilibrium = maxval(abs(sol%reaction - sol%applied)/scale)
+        if (m%kind == MODEL_BEAM) then
+            sigma_scale = m%length/v
+        else
+            sigma_scale = pi*m%length**2/v
+        end if
+        s%admissibility = sol%admissibility*sigma_scale
+        s%admissibility_tol = 10.0_dp*m%eps_bar*max(1.0_dp, maxval(tab%val(Q_SZ, :))*sigma_scale)
+    end subroutine check_values
+
+    !> Largest value of `y` over the stations and its position.
+    pure function located_max(tab, y) result(loc)
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: y(:)
+        type(located_t) :: loc
+        integer :: i
+        i = maxloc(y, dim=1)
+        loc = located_t(y(i), tab%val(Q_X, i))
+    end function located_max
+
+    !> Station values `y` linearly interpolated at x (the first bracket that holds x).
+    pure real(dp) function interpolate(tab, y, x) result(v)
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: y(:), x
+        integer :: i
+        real(dp) :: s
+        v = y(tab%n)
+        do i = 1, tab%n - 1
+            if (x > tab%val(Q_X, i + 1)) cycle
+            if (tab%val(Q_X, i + 1) <= tab%val(Q_X, i)) cycle
+            s = (x - tab%val(Q_X, i))/(tab%val(Q_X, i + 1) - tab%val(Q_X, i))
+            v = (1.0_dp - s)*y(i) + s*y(i + 1)
+            return
+        end do
+    end function interpolate
+end module design_summary

@@ -1,0 +1,184 @@
+!> The key results of a case as one table of entries (key, label, unit, value): the report's
+!! design summary, the JSON summary file and the sweep CSV all print this table, so a key
+!! has one name, one unit and one definition everywhere (README "Design summary").
+!!
+!! Values are in display units for physical decks (settlements in mm when lengths are in m,
+!! pressures in kPa for kN and m) and nondimensional (SPEC §6) for NONDIM decks.
+module summary_table
+    use kinds, only: dp, pi
+    use model, only: model_t, MODEL_BEAM, total_vertical_load, flexural_rigidity
+    use station_columns, only: units_t, case_units
+    use design_summary, only: summary_t
+    implicit none
+    private
+
+    !> One key result.
+    type, public :: entry_t
+        character(len=32) :: key = ''       !! JSON / CSV name
+        character(len=56) :: label = ''     !! words for the report
+        character(len=16) :: unit = ''      !! display unit ('' for a pure number)
+        real(dp) :: value = 0.0_dp
+        logical :: defined = .true.         !! false: not applicable (printed as null / blank)
+    end type entry_t
+
+    !> Scale factors from deck units to what is printed.
+    type :: scales_t
+        real(dp) :: disp = 1.0_dp, length = 1.0_dp, pressure = 1.0_dp
+        real(dp) :: moment = 1.0_dp, shear = 1.0_dp, rotation = 1.0_dp
+        character(len=16) :: u_disp = '', u_length = '', u_pressure = '', u_moment = '', &
+                             u_shear = ''
+    end type scales_t
+
+    public :: summary_entries, entry_keys
+
+contains
+
+    !> The table for a solved case.
+    pure function summary_entries(m, s, extent) result(e)
+        type(model_t), intent(in) :: m
+        type(summary_t), intent(in) :: s
+        real(dp), intent(in) :: extent      !! contact extent t (SPEC §9)
+        type(entry_t), allocatable :: e(:)
+        type(scales_t) :: k
+        logical :: beam
+        beam = m%kind == MODEL_BEAM
+        k = print_scales(m)
+        e = [ent('settlement_max', 'max settlement', k%u_disp, s%w_max%value*k%disp), &
+             ent('settlement_max_x', '  at', k%u_length, s%w_max%x*k%length), &
+             ent('settlement_min', 'min settlement', k%u_disp, s%w_min%value*k%disp), &
+             ent('settlement_min_x', '  at', k%u_length, s%w_min%x*k%length), &
+             ent('differential_settlement', 'differential settlement (max - min)', k%u_disp, &
+                 s%w_differential*k%disp), &
+             ent('tilt', 'tilt (w(l/2) - w(-l/2))/l (plate: 0)', 'rad', s%tilt*k%rotation), &
+             ent('angular_distortion', 'max angular distortion |dw/dx - tilt|', 'rad', &
+                 s%angular_distortion%value*k%rotation), &
+             ent('angular_distortion_x', '  at', k%u_length, s%angular_distortion%x*k%length), &
+             ent('contact_extent_t', 'contact extent t (largest t >= 0 in contact)', '', extent), &
+             ent(choose(beam, 'contact_length', 'contact_area'), &
+                 choose(beam, 'contact length', 'contact area'), &
+                 choose(beam, k%u_length, area_unit(k)), &
+                 merge(s%contact_length*k%length, s%contact_area*k%length**2, beam)), &
+             ent('pressure_mean', 'mean contact pressure V / contact area', k%u_pressure, &
+                 s%mean_pressure*k%pressure), &
+             ent('pressure_max', 'max station pressure (edge: mesh dependent)', k%u_pressure, &
+                 s%pressure_max%value*k%pressure), &
+             ent('pressure_max_x', '  at', k%u_length, s%pressure_max%x*k%length), &
+             ent('edge_distance', 'distance d from the edge (= h)', k%u_length, &
+                 s%edge_distance*k%length)]
+        if (beam) e = [e, ent('pressure_near_left_end', 'pressure at d from the left end', &
+                              k%u_pressure, s%edge_pressure(1)*k%pressure, s%edge_in_contact(1))]
+        e = [e, ent(choose(beam, 'pressure_near_right_end', 'pressure_near_rim'), &
+                    choose(beam, 'pressure at d from the right end', 'pressure at d from the rim'), &
+                    k%u_pressure, s%edge_pressure(2)*k%pressure, &
+                    s%edge_in_contact(2))]
+        e = [e, moment_entries(m, s, k), &
+             ent('shear_force_max', choose(beam, 'max |Q| (signed)', 'max |Q_r| (signed)'), &
+                 k%u_shear, s%q_abs_max%value*k%shear), &
+             ent('shear_force_max_x', '  at', k%u_length, s%q_abs_max%x*k%length), &
+             ent('sliding_utilisation', 'sliding utilisation H/(f V)', '', s%utilisation, &
+                 s%utilisation >= 0.0_dp .and. beam), &
+             ent('linear_solves', 'linear solves', '', real(s%linear_solves, dp))]
+    end function summary_entries
+
+    !> The keys of summary_entries for a model (the sweep CSV header).
+    pure function entry_keys(m) result(keys)
+        type(model_t), intent(in) :: m
+        character(len=32), allocatable :: keys(:)
+        type(summary_t) :: empty
+        type(entry_t), allocatable :: e(:)
+        integer :: i
+        e = summary_entries(m, empty, 0.0_dp)
+        keys = [(e(i)%key, i=1, size(e))]
+    end function entry_keys
+
+    pure function moment_entries(m, s, k) result(e)
+        type(model_t), intent(in) :: m
+        type(summary_t), intent(in) :: s
+        type(scales_t), intent(in) :: k
+        type(entry_t), allocatable :: e(:)
+        character(len=4) :: sym
+        sym = merge('M   ', 'M_r ', m%kind == MODEL_BEAM)
+        e = [ent('moment_sagging', 'max sagging '//trim(sym)//' (bottom in tension)', k%u_moment, &
+                 s%m_sag%value*k%moment), &
+             ent('moment_sagging_x', '  at', k%u_length, s%m_sag%x*k%length), &
+             ent('moment_hogging', 'max hogging '//trim(sym)//' (top in tension)', k%u_moment, &
+                 s%m_hog%value*k%moment), &
+             ent('moment_hogging_x', '  at', k%u_length, s%m_hog%x*k%length)]
+        if (m%kind == MODEL_BEAM) return
+        e = [e, ent('hoop_moment_sagging', 'max sagging M_theta', k%u_moment, &
+                    s%mt_sag%value*k%moment), &
+             ent('hoop_moment_sagging_x', '  at', k%u_length, s%mt_sag%x*k%length), &
+             ent('hoop_moment_hogging', 'max hogging M_theta', k%u_moment, &
+                 s%mt_hog%value*k%moment), &
+             ent('hoop_moment_hogging_x', '  at', k%u_length, s%mt_hog%x*k%length)]
+    end function moment_entries
+
+    !> Physical display units, or the nondimensional scales of SPEC §6 for a NONDIM deck.
+    pure function print_scales(m) result(k)
+        type(model_t), intent(in) :: m
+        type(scales_t) :: k
+        type(units_t) :: un
+        real(dp) :: f, l, rig
+        if (m%nondim) then
+            f = total_vertical_load(m)
+            l = m%length
+            rig = flexural_rigidity(m)
+            k%length = 1.0_dp/l
+            if (m%kind == MODEL_BEAM) then
+                k%disp = rig/(f*l**3)
+                k%pressure = l*m%b/f       ! Sigma = l sigma / F, sigma = b p
+                k%moment = 1.0_dp/(f*l)
+                k%shear = 1.0_dp/f
+            else
+                k%disp = rig/(f*l**2)
+                k%pressure = pi*l**2/f
+                k%moment = 1.0_dp/f
+                k%shear = l/f
+            end if
+            k%rotation = k%disp/k%length
+            return
+        end if
+        un = case_units(m)
+        k%disp = un%disp_factor
+        k%u_disp = un%disp
+        k%u_length = un%length
+        k%u_pressure = un%pressure
+        k%u_moment = un%moment
+        k%u_shear = un%force
+        if (m%kind /= MODEL_BEAM) then
+            k%u_moment = trim(un%moment)//'/'//trim(un%length)
+            k%u_shear = un%line_load
+        end if
+    end function print_scales
+
+    pure function area_unit(k) result(unit)
+        type(scales_t), intent(in) :: k
+        character(len=16) :: unit
+        unit = ''
+        if (len_trim(k%u_length) > 0) unit = trim(k%u_length)//'^2'
+    end function area_unit
+
+    !> a if cond, else b (MERGE needs equal lengths).
+    pure function choose(cond, a, b) result(text)
+        logical, intent(in) :: cond
+        character(len=*), intent(in) :: a, b
+        character(len=:), allocatable :: text
+        if (cond) then
+            text = a
+        else
+            text = b
+        end if
+    end function choose
+
+    pure function ent(key, label, unit, value, defined) result(e)
+        character(len=*), intent(in) :: key, label, unit
+        real(dp), intent(in) :: value
+        logical, intent(in), optional :: defined
+        type(entry_t) :: e
+        e%key = key
+        e%label = label
+        e%unit = unit
+        e%value = value
+        if (present(defined)) e%defined = defined
+    end function ent
+end module summary_table
