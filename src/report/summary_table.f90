@@ -26,7 +26,7 @@ module summary_table
         real(dp) :: disp = 1.0_dp, length = 1.0_dp, pressure = 1.0_dp
         real(dp) :: moment = 1.0_dp, shear = 1.0_dp, rotation = 1.0_dp
         character(len=16) :: u_disp = '', u_length = '', u_pressure = '', u_moment = '', &
-                             u_shear = ''
+                             u_shear = '', u_rotation = ''
     end type scales_t
 
     public :: summary_entries, entry_keys
@@ -49,8 +49,8 @@ contains
              ent('settlement_min_x', '  at', k%u_length, s%w_min%x*k%length), &
              ent('differential_settlement', 'differential settlement (max - min)', k%u_disp, &
                  s%w_differential*k%disp), &
-             ent('tilt', 'tilt (w(l/2) - w(-l/2))/l (plate: 0)', 'rad', s%tilt*k%rotation), &
-             ent('angular_distortion', 'max angular distortion |dw/dx - tilt|', 'rad', &
+             ent('tilt', 'tilt (w(l/2) - w(-l/2))/l (plate: 0)', k%u_rotation, s%tilt*k%rotation), &
+             ent('angular_distortion', 'max angular distortion |dw/dx - tilt|', k%u_rotation, &
                  s%angular_distortion%value*k%rotation), &
              ent('angular_distortion_x', '  at', k%u_length, s%angular_distortion%x*k%length), &
              ent('contact_extent_t', 'contact extent t (largest t >= 0 in contact)', '', extent), &
@@ -145,6 +145,7 @@ contains
         k%u_pressure = un%pressure
         k%u_moment = un%moment
         k%u_shear = un%force
+        k%u_rotation = 'rad'
         if (m%kind /= MODEL_BEAM) then
             k%u_moment = trim(un%moment)//'/'//trim(un%length)
             k%u_shear = un%line_load
