@@ -13,6 +13,7 @@ program tester
     use test_report_writer, only: collect_report_writer
     use test_convergence, only: collect_convergence
     use test_paper, only: collect_paper
+    use test_design_values, only: collect_design_values
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -62,6 +63,10 @@ program tester
     if (wanted('convergence')) then
         call collect_convergence(tests)
         call run_suite('convergence', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('design_values')) then
+        call collect_design_values(tests)
+        call run_suite('design_values', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)

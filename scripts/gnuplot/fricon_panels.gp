@@ -1,55 +1,184 @@
-# fricon figure: four panels from a station data file (columns as in README / SPEC 9).
-# usage (from the project root):
-#   gnuplot -c scripts/gnuplot/fricon_panels.gp DATA PNG TITLE MODEL
-# MODEL is BEAM or PLATE (decides the resultant columns).
-data = ARG1
-png = ARG2
-title = ARG3
-model = ARG4
-set terminal pngcairo size 1400,1000 font 'Sans,11' noenhanced
+# fricon figure of one case: six panels from the station file of the case.
+# Called (from the project root) by output/CASE.gp, which fricon writes and which defines:
+#   data, png, title, model ('BEAM' or 'PLATE'), csv (1: comma-separated with one header line,
+#   0: the whitespace .dat with '#' comments),
+#   column numbers c_x c_w c_gap c_p c_s c_state c_m c_mt c_q c_slip c_n c_nt (0: no such column;
+#   taken by fricon from its station column table),
+#   axis labels lab_x lab_w lab_p lab_s lab_m lab_q lab_slip lab_n and legend names key_w key_p
+#   key_s key_m key_mt key_q key_slip key_n key_nt, the pressure unit p_unit,
+#   line_width (beam width b: right axis of the pressure panel in line load; 0: none), lab_line,
+#   p_mean (mean contact pressure V / contact area, plotted unit), clip_factor, edge_d (the
+#   summary's edge distance, plotted unit), friction (f),
+#   n_loads and the arrays load_kind ('P' point, 'M' moment, 'R' ring, 'D' patch), load_x1,
+#   load_x2 (plotted unit).
+#
+# Clip rule (pressure panel): the curve is clipped at
+#   p_clip = max(clip_factor * p_mean, largest station pressure at least edge_d from a free edge)
+# so only the edge spike within edge_d of an edge (where the singularity of the half-space and
+# the mesh decide the value) is cut; a clipped station is drawn as a red triangle on the clip
+# line and the true peak of each end is written beside it. The shear traction is clipped the
+# same way at max(f * p_clip, largest |traction| at least edge_d from a free edge).
+
+set terminal pngcairo size 1600,1100 font 'Sans,11' noenhanced
 set output png
-set multiplot layout 2,2 title title font 'Sans,14'
-set grid
-set format y '%g'
-set key box opaque font ',9' samplen 2
-set autoscale fix
-set offsets 0, 0, graph 0.08, graph 0.08
-xlab = (model eq 'BEAM') ? 't = x/l' : 't = r/a'
-set xlabel xlab
+if (csv) { set datafile separator comma; skip_rows = 1 } else { set datafile separator whitespace; skip_rows = 0 }
+set datafile missing NaN
 
-set title 'Settlement W (down positive) and soil surface W + gap'
-set ylabel 'W'
-set yrange [*:*] reverse
-plot data u 1:3 w lp pt 7 ps 0.5 lw 2 lc rgb '#1f77b4' t 'W (structure)', \
-     data u 1:($3+$7) w l dt 2 lw 1.5 lc rgb '#7f7f7f' t 'W + gap (soil surface)'
-set yrange [*:*] noreverse
+# ---- edges, clip levels ------------------------------------------------------------------
+stats data skip skip_rows u c_x nooutput
+x_lo = STATS_min
+x_hi = STATS_max
+is_beam = (model eq 'BEAM')
+near_edge(x) = (x > x_hi - edge_d) || (is_beam && x < x_lo + edge_d)
+stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : column(c_p)) nooutput
+p_inner = STATS_max
+stats data skip skip_rows u c_x:c_p nooutput
+p_top = STATS_max_y
+p_clip = (clip_factor*p_mean > p_inner) ? clip_factor*p_mean : p_inner
+p_rule = (clip_factor*p_mean > p_inner) ? sprintf('%g x mean %.4g', clip_factor, p_mean) : 'largest value away from the edges'
+p_cut = (p_top > p_clip*1.0001)
+stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : abs(column(c_s))) nooutput
+s_inner = STATS_max
+stats data skip skip_rows u (abs(column(c_s))) nooutput
+s_top = STATS_max
+s_clip = (friction*p_clip > s_inner) ? friction*p_clip : s_inner
+s_cut = (s_top > s_clip*1.0001) && (s_clip > 1e-6*p_clip)
+if (!s_cut && s_top > s_clip) s_clip = s_top
+clip_p(v) = (v > p_clip) ? p_clip : v
+clip_s(v) = (v > s_clip) ? s_clip : ((v < -s_clip) ? -s_clip : v)
+x_mid = is_beam ? 0.5*(x_lo + x_hi) : x_lo - 1
 
-set title 'Contact tractions on the soil'
-set autoscale y
-set key outside bottom center horizontal
-set bmargin 6
-set ylabel 'Sigma'
-plot data u 1:6 w lp pt 7 ps 0.5 lw 2 lc rgb '#d62728' t 'Sigma_z (pressure)', \
-     data u 1:5 w lp pt 5 ps 0.5 lw 2 lc rgb '#2ca02c' t 'Sigma_x (shear)', \
-     data u 1:(($9==0)?0:1/0) w p pt 6 ps 1.2 lc rgb '#000000' t 'lift-off', \
-     data u 1:(($9==2)?$5:1/0) w p pt 4 ps 1.2 lc rgb '#ff7f0e' t 'slip'
-
-set title 'Bending moment'
-unset bmargin
-set autoscale y
-set key inside top right vertical
-if (model eq 'BEAM') {
-    set ylabel 'M/(F l)   (> 0 hogging)'
-    plot data u 1:11 w lp pt 7 ps 0.5 lw 2 lc rgb '#9467bd' t 'M/(F l)'
-} else {
-    set ylabel 'M/F   (> 0 top in tension)'
-    plot data u 1:12 w lp pt 7 ps 0.5 lw 2 lc rgb '#9467bd' t 'M_r/F', \
-         data u 1:13 w lp pt 5 ps 0.5 lw 2 lc rgb '#8c564b' t 'M_theta/F'
+# ---- lift-off zones (state 0), from one pass over the stations ------------------------------
+zones = ''
+prev_state = -1
+prev_x = 0
+zone_start = 0
+stats data skip skip_rows u (st = column(c_state), xx = column(c_x), \
+    ((st == 0 && prev_state != 0) ? (zone_start = (prev_state < 0) ? xx : 0.5*(xx + prev_x)) : 0), \
+    ((st != 0 && prev_state == 0) ? (zones = zones.sprintf(' %.12g %.12g', zone_start, 0.5*(xx + prev_x))) : 0), \
+    prev_state = st, prev_x = xx, 0) nooutput
+if (prev_state == 0) { zones = zones.sprintf(' %.12g %.12g', zone_start, prev_x) }
+n_zones = words(zones)/2
+do for [k=1:n_zones] {
+    set object k rect from first real(word(zones, 2*k-1)), graph 0 to first real(word(zones, 2*k)), graph 1 \
+        behind fc rgb '#c8c8c8' fs solid 0.45 noborder
 }
 
-set title 'Horizontal displacement and slip'
-set autoscale y
-set ylabel 'U, slip'
-plot data u 1:2 w lp pt 7 ps 0.5 lw 2 lc rgb '#17becf' t 'U (mid-plane)', \
-     data u 1:8 w l lw 2 dt 2 lc rgb '#bcbd22' t 'slip = u_b - u_f'
+# ---- loads: dashed orange verticals (point, ring, moment), an orange band on top (patch) ----
+c_load = '#e07000'
+do for [k=1:n_loads] {
+    if (load_kind[k] eq 'D') {
+        set object 100+k rect from first load_x1[k], graph 0.955 to first load_x2[k], graph 1 \
+            front fc rgb c_load fs solid 0.55 noborder
+        set arrow 100+2*k from first load_x1[k], graph 0 to first load_x1[k], graph 1 nohead back dt 3 lw 1 lc rgb c_load
+        set arrow 101+2*k from first load_x2[k], graph 0 to first load_x2[k], graph 1 nohead back dt 3 lw 1 lc rgb c_load
+    } else {
+        set arrow 100+2*k from first load_x1[k], graph 0 to first load_x1[k], graph 1 nohead back dt 2 lw 1.5 lc rgb c_load
+        set arrow 101+2*k from first load_x1[k], graph 1 to first load_x1[k], graph 0.93 head filled size graph 0.012,25 front lw 2 lc rgb c_load
+    }
+}
+load_text(k) = (load_kind[k] eq 'P') ? 'point load' : (load_kind[k] eq 'R') ? 'ring load' : \
+               (load_kind[k] eq 'M') ? 'moment' : 'patch load'
+
+set multiplot layout 3,2 title title font 'Sans,14'
+set grid
+set format y '%g'
+set format y2 '%g'
+set key outside bottom center horizontal samplen 2.5 font ',10' spacing 1.0 nobox
+set autoscale xfix
+set xrange [x_lo:x_hi]
+set xlabel lab_x offset 0,0.6
+set offsets 0, 0, graph 0.10, graph 0.06
+zero_line = "0 w l lw 1 lc rgb '#606060' notitle"
+dummy_zone = (n_zones > 0) ? "NaN w boxes fs solid 0.45 noborder fc rgb '#c8c8c8' t 'lift-off zone'" : "NaN notitle"
+dummy_load = "NaN w l dt 2 lw 1.5 lc rgb c_load t 'load position'"
+
+# 1 settlement, down positive; soil surface where it leaves the structure
+set title 'Settlement (down positive)'
+set ylabel lab_w
+set yrange [*:*] reverse
+plot data skip skip_rows u c_x:c_w w lp pt 7 ps 0.45 lw 2 lc rgb '#1f77b4' t key_w.' (structure)', \
+     '' skip skip_rows u c_x:(column(c_w) + column(c_gap)) w l dt 2 lw 1.5 lc rgb '#404040' t 'soil surface', \
+     @dummy_zone, @dummy_load
+set yrange [*:*] noreverse
+
+# 2 contact pressure, edge spike clipped and marked
+set title p_cut ? sprintf('Contact pressure (clipped at %.4g %s: %s)', p_clip, p_unit, p_rule) : 'Contact pressure'
+set ylabel lab_p
+if (line_width > 0) {
+    set y2label lab_line
+    set y2tics
+    set ytics nomirror
+    set link y2 via y*line_width inverse y/line_width
+}
+if (p_cut) {
+    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? 1/0 : column(c_p)) nooutput
+    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip right offset -0.8,-0.2 front tc rgb '#c00000'
+    if (is_beam) {
+        stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? column(c_p) : 1/0) nooutput
+        if (STATS_max_y > p_clip*1.0001) {
+            set label 202 sprintf(' peak %.4g %s', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip left offset 0.8,-0.2 front tc rgb '#c00000'
+        }
+    }
+}
+plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \
+     '' skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t (p_cut ? 'clipped (true peak written)' : ''), \
+     @zero_line, @dummy_zone, @dummy_load
+unset label 201
+unset label 202
+unset y2label
+unset y2tics
+unset link y2
+set ytics mirror
+
+# 3 shear traction with the friction limit +-f p
+set title s_cut ? sprintf('Shear traction on the soil (clipped at %.4g %s)', s_clip, p_unit) : 'Shear traction on the soil'
+set ylabel lab_s
+if (s_cut) {
+    stats data skip skip_rows u c_x:(abs(column(c_s))) nooutput
+    set label 203 sprintf(' peak |%s| %.4g %s ', key_s, STATS_max_y, p_unit) at graph 0.5, graph 0.08 center front tc rgb '#c00000'
+}
+plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \
+     '' skip skip_rows u c_x:((column(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps 1.1 lc rgb '#ff7f0e' t 'slipping station', \
+     '' skip skip_rows u c_x:((abs(column(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t (s_cut ? 'clipped' : ''), \
+     '' skip skip_rows u c_x:(clip_s(friction*column(c_p))) w l dt 3 lw 1.2 lc rgb '#505050' t (friction > 0 ? sprintf('+-f %s (f = %g)', key_p, friction) : ''), \
+     '' skip skip_rows u c_x:(friction > 0 ? clip_s(-friction*column(c_p)) : 1/0) w l dt 3 lw 1.2 lc rgb '#505050' notitle, \
+     @zero_line, @dummy_zone, @dummy_load
+unset label 203
+
+# 4 bending moments
+set title 'Bending moment (> 0 hogging, top in tension)'
+set ylabel lab_m
+if (c_mt > 0) {
+    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw 2 lc rgb '#9467bd' t key_m, \
+         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2 dt 2 lc rgb '#8c564b' t key_mt, \
+         @zero_line, @dummy_zone, @dummy_load
+} else {
+    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw 2 lc rgb '#9467bd' t key_m, \
+         @zero_line, @dummy_zone, @dummy_load
+}
+
+# 5 shear force
+set title 'Shear force'
+set ylabel lab_q
+plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc rgb '#17becf' t key_q, \
+     @zero_line, @dummy_zone, @dummy_load
+
+# 6 slip (left axis) and membrane / axial force (right axis)
+set title 'Interface slip and axial force'
+set ylabel lab_slip
+set y2label lab_n
+set y2tics
+set ytics nomirror
+set autoscale y2
+if (c_nt > 0) {
+    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 lw 2 lc rgb '#bcbd22' t key_slip, \
+         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc rgb '#1f3f7f' t key_n, \
+         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 dt 2 lc rgb '#7f1f3f' t key_nt, \
+         @zero_line, @dummy_zone, @dummy_load
+} else {
+    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 lw 2 lc rgb '#bcbd22' t key_slip, \
+         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc rgb '#1f3f7f' t key_n, \
+         @zero_line, @dummy_zone, @dummy_load
+}
 unset multiplot

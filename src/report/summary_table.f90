@@ -25,8 +25,9 @@ module summary_table
     type :: scales_t
         real(dp) :: disp = 1.0_dp, length = 1.0_dp, pressure = 1.0_dp
         real(dp) :: moment = 1.0_dp, shear = 1.0_dp, rotation = 1.0_dp
-        character(len=16) :: u_disp = '', u_length = '', u_pressure = '', u_moment = '', &
-                             u_shear = '', u_rotation = ''
+        ! (no initialisers: gfortran 12 writes blank character constants of a type that
+        ! travels through several modules into .mod files it cannot read back)
+        character(len=16) :: u_disp, u_length, u_pressure, u_moment, u_shear, u_rotation
     end type scales_t
 
     public :: summary_entries, entry_keys
@@ -119,6 +120,12 @@ contains
         type(scales_t) :: k
         type(units_t) :: un
         real(dp) :: f, l, rig
+        k%u_disp = ''
+        k%u_length = ''
+        k%u_pressure = ''
+        k%u_moment = ''
+        k%u_shear = ''
+        k%u_rotation = ''
         if (m%nondim) then
             f = total_vertical_load(m)
             l = m%length
