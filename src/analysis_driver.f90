@@ -187,52 +187,77 @@ contains
         end do
     end function console_summary
 
-    !> gnuplot renders the PNG to a temporary name, moved into place on success.
+    !> gnuplot runs the case's script (base.gp, written by write_plot_script) and renders the
+    !! PNG to a temporary name, moved into place on success.
     subroutine render_png(base, m, note)
         character(len=*), intent(in) :: base
         type(model_t), intent(in) :: m
         character(len=:), allocatable, intent(out) :: note
         integer :: exit_status, cmd_status
         note = ''
-        if (index(base, "'") > 0) then
+        if (index(base, "'") > 0 .or. index(base, '"') > 0) then
             note = 'figure not rendered: the output path contains a quote'
             return
         end if
-        call execute_command_line("gnuplot -c scripts/gnuplot/fricon_panels.gp '"//base// &
-            ".dat' '"//base//".png.tmp' 'fricon: "//trim(shell_safe(m%title))//"' '"// &
-            trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"' && mv -f '"//base//".png.tmp' '"// &
-            base//".png'", exitstat=exit_status, cmdstat=cmd_status)
+        call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
+            ".gp' && mv -f '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
+            cmdstat=cmd_status)
         if (cmd_status /= 0 .or. exit_status /= 0) then
-            note = 'figure '//base//'.png not rendered: gnuplot failed or is not installed '// &
-                   '(run scripts/setup.sh; run fricon from the project root)'
+            note = 'figure '//base//'.png not rendered: gnuplot failed on '//base//'.gp ('// &
+                   trim(merge('data '//base//'.dat', 'data '//base//'.csv', m%nondim))// &
+                   ') or is not installed (run scripts/setup.sh; run fricon from the project root)'
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
     end subroutine render_png
 
     !> output/STEM_sweep.gp (and .png): the solved cases overlaid (scripts/gnuplot/fricon_sweep.gp).
+    !! The columns, axis labels, units and load positions are those of the first solved case's
+    !! script (loaded with settings_only set: the cases of a sweep share them); this script adds
+    !! the data files (CSV for physical decks, .dat for NONDIM decks), the legend labels (the
+    !! swept values) and each case's mean contact pressure for the clip rule.
     subroutine write_sweep_plot(base, m, results, err)
         character(len=*), intent(in) :: base
         type(model_t), intent(in) :: m
         type(case_result_t), intent(in) :: results(:)
         type(error_t), allocatable, intent(out) :: err
-        character(len=:), allocatable :: files, labels, out_dir
-        integer :: u, i, exit_status, cmd_status
+        character(len=:), allocatable :: files, labels, means, out_dir, first
+        character(len=32) :: buf
+        integer :: u, i, k, exit_status, cmd_status
+        if (index(base, "'") > 0 .or. index(base, '"') > 0) return
         out_dir = base(1:index(base, '/', back=.true.))
         files = ''
         labels = ''
+        means = ''
+        first = ''
         do i = 1, size(results)
             if (results(i)%status /= EXIT_OK) cycle
-            files = files//' '//out_dir//results(i)%name//'.dat'
+            if (len(first) == 0) first = out_dir//results(i)%name//'.gp'
+            files = files//' '//out_dir//results(i)%name//trim(merge('.dat', '.csv', m%nondim))
             labels = labels//' '//one_word(results(i)%label)
+            buf = '0'
+            if (allocated(results(i)%entries)) then
+                do k = 1, size(results(i)%entries)
+                    if (trim(results(i)%entries(k)%key) == 'pressure_mean') &
+                        write (buf, '(es15.7e3)') results(i)%entries(k)%value
+                end do
+            end if
+            means = means//' '//trim(adjustl(buf))
         end do
         if (len(files) == 0) return
         call open_temporary(base//'.gp', u, err)
         if (allocated(err)) return
         write (u, '(a)') '# fricon sweep figure: run from the project root as  gnuplot '//base//'.gp'
+        write (u, '(a)') '# columns, labels, units and loads: those of the first solved case'
+        write (u, '(a)') 'settings_only = 1'
+        write (u, '(a)') "load '"//first//"'"
+        write (u, '(a)') 'undefine settings_only'
         write (u, '(a)') 'files = "'//files(2:)//'"'
         write (u, '(a)') 'labels = "'//labels(2:)//'"'
-        write (u, '(a)') "call 'scripts/gnuplot/fricon_sweep.gp' '"//base//".png' '"// &
-            trim(shell_safe(m%title))//" (sweep)' '"//trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"'"
+        write (u, '(a)') '# mean contact pressure V / contact area of each case (plotted unit)'
+        write (u, '(a)') 'p_means = "'//means(2:)//'"'
+        write (u, '(a)') "call 'scripts/gnuplot/fricon_sweep.gp' '"//base//".png' 'fricon: "// &
+            trim(shell_safe(m%title))//" (sweep)' '"//trim(merge('BEAM ', 'PLATE', &
+            m%kind == MODEL_BEAM))//"'"
         call commit_file(base//'.gp', u, err)
         if (allocated(err)) return
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
@@ -242,17 +267,19 @@ contains
             call execute_command_line("rm -f '"//base//".png.tmp'")
     end subroutine write_sweep_plot
 
-    !> A sweep label as one gnuplot word: 'case 002 of 006: RHO=0.01 F=0.5' -> 'RHO=0.01,F=0.5'.
+    !> A sweep label as one quoted gnuplot word (for word() and the legend):
+    !! 'case 002 of 006: RHO=0.01 F=0.5' -> 'RHO=0.01 F=0.5' in single quotes.
     pure function one_word(label) result(word)
         character(len=*), intent(in) :: label
         character(len=:), allocatable :: word
         integer :: i
         word = trim(adjustl(label(index(label, ':') + 1:)))
         do i = 1, len(word)
-            if (word(i:i) == ' ') word(i:i) = ','
-            if (word(i:i) == '"') word(i:i) = ''''
+            if (index('"''`$\', word(i:i)) > 0) word(i:i) = ' '
         end do
+        word = trim(adjustl(word))
         if (len(word) == 0) word = 'case'
+        word = "'"//word//"'"
     end function one_word
 
     !> output/STEM_summary.csv: one row per case, with the key results of summary_table

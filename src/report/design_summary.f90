@@ -35,6 +35,8 @@ module design_summary
     type, public :: summary_t
         type(located_t) :: w_max, w_min               !! settlement [L]
         real(dp) :: w_differential = 0.0_dp           !! w_max - w_min [L]
+        real(dp) :: w_mean = 0.0_dp                   !! mean over the base (plate: by area) [L]
+        real(dp) :: subgrade_modulus = 0.0_dp         !! (V / base area) / w_mean [F/L^3]
         real(dp) :: tilt = 0.0_dp                     !! beam (w(l/2) - w(-l/2))/l; plate 0 [rad]
         type(located_t) :: slope_max                  !! largest |dw/dx| between stations [rad]
         type(located_t) :: angular_distortion         !! largest |dw/dx - tilt| [rad]
@@ -83,6 +85,7 @@ contains
         s%w_min = located_max(tab, -tab%val(Q_W, :))
         s%w_min%value = -s%w_min%value
         s%w_differential = s%w_max%value - s%w_min%value
+        call mean_settlement(m, tab, s)
         s%tilt = 0.0_dp
         if (m%kind == MODEL_BEAM) s%tilt = (tab%val(Q_W, tab%n) - tab%val(Q_W, 1))/m%length
         pairs: do i = 1, tab%n - 1
@@ -94,6 +97,29 @@ contains
                 located_t(abs(slope - s%tilt), 0.5_dp*(tab%val(Q_X, i) + tab%val(Q_X, i + 1)))
         end do pairs
     end subroutine settlement_values
+
+    !> Mean settlement over the base (trapezoid over the stations, weight 2 pi r for the plate)
+    !! and the secant modulus of subgrade reaction (V / base area) / w_mean.
+    pure subroutine mean_settlement(m, tab, s)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(inout) :: s
+        real(dp) :: wa, wb, w_sum, wt_sum, dx, base
+        integer :: i
+        w_sum = 0.0_dp
+        wt_sum = 0.0_dp
+        do i = 1, tab%n - 1
+            dx = tab%val(Q_X, i + 1) - tab%val(Q_X, i)
+            wa = merge(1.0_dp, tab%val(Q_X, i), m%kind == MODEL_BEAM)
+            wb = merge(1.0_dp, tab%val(Q_X, i + 1), m%kind == MODEL_BEAM)
+            w_sum = w_sum + 0.5_dp*(wa*tab%val(Q_W, i) + wb*tab%val(Q_W, i + 1))*dx
+            wt_sum = wt_sum + 0.5_dp*(wa + wb)*dx
+        end do
+        s%w_mean = w_sum/wt_sum
+        base = merge(m%length*m%b, pi*m%length**2, m%kind == MODEL_BEAM)
+        s%subgrade_modulus = 0.0_dp
+        if (s%w_mean > 0.0_dp) s%subgrade_modulus = total_vertical_load(m)/base/s%w_mean
+    end subroutine mean_settlement
 
     !> Intervals, contact length and area, mean, largest and near-edge pressures.
     pure subroutine contact_values(m, tab, s)

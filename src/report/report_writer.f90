@@ -227,19 +227,237 @@ contains
         text = trim(adjustl(buf))
     end function json_number
 
-    !> output/CASE.gp: calls the data-driven panel script (run gnuplot from the project root).
-    subroutine write_plot_script(path, dat_path, png_path, m, err)
+    !> output/CASE.gp: everything the figure needs (data file, column numbers from the column
+    !! table, axis labels with units, load positions, the pressure clip inputs), then a call of
+    !! the panel template scripts/gnuplot/fricon_panels.gp (run gnuplot from the project root).
+    !! Physical decks plot the CSV in display units, NONDIM decks the nondimensional .dat.
+    !! `label` (a sweep case's 'case 002 of 006: RHO=0.001 F=0.5') becomes the second title line;
+    !! `s` gives the mean contact pressure of the clip rule (else V over the whole footprint).
+    subroutine write_plot_script(path, dat_path, png_path, m, err, label, s)
+        use model, only: LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+        use station_columns, only: column_index
         character(len=*), intent(in) :: path, dat_path, png_path
         type(model_t), intent(in) :: m
         type(error_t), allocatable, intent(out) :: err
-        integer :: u
+        character(len=*), intent(in), optional :: label
+        type(summary_t), intent(in), optional :: s
+        type(column_t), allocatable :: cols(:)
+        type(units_t) :: un
+        character(len=:), allocatable :: data_path, title
+        character(len=1) :: kind_letter
+        logical :: beam, phys
+        integer :: u, k, ix, ip
+        real(dp) :: width, p_mean, xs
+        beam = m%kind == MODEL_BEAM
+        phys = .not. m%nondim
+        un = case_units(m)
+        if (phys) then
+            cols = physical_columns(m)
+            data_path = dat_path
+            if (len(dat_path) >= 4) data_path = dat_path(1:len(dat_path) - 4)//'.csv'
+        else
+            cols = nondim_columns(m)
+            data_path = dat_path
+        end if
+        ix = column_index(cols, pick('x', 'r', 't'))
+        ip = column_index(cols, pick('p_z', 'sigma_z', 'Sigma_z'))
+        xs = cols(ix)%to_unit
+        ! mean contact pressure V / contact area, stored units (beam: line load), then plotted
+        width = merge(m%b, 1.0_dp, beam)
+        if (present(s)) then
+            p_mean = s%mean_pressure*width
+        else if (beam) then
+            p_mean = total_vertical_load(m)/m%length
+        else
+            p_mean = total_vertical_load(m)/(pi*m%length**2)
+        end if
+        p_mean = p_mean*cols(ip)%to_unit
+        title = 'fricon: '//trim(shell_safe(m%title))
+        if (present(label)) then
+            if (index(label, ':') > 0) title = title//"'.""\n"".'"//trim(shell_safe(label))
+        end if
+
         call open_temporary(path, u, err)
         if (allocated(err)) return
         write (u, '(a)') '# fricon figure: run from the project root as  gnuplot '//path
-        write (u, '(a)') "call 'scripts/gnuplot/fricon_panels.gp' '"//dat_path//"' '"// &
-            png_path//"' '"//trim(shell_safe(m%title))//"' '"// &
-            trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM))//"'"
+        write (u, '(a)') '# (fricon itself renders it with png_override set to a temporary name)'
+        write (u, '(a)') "data = '"//data_path//"'"
+        write (u, '(a)') "png = exists(""png_override"") ? png_override : '"//png_path//"'"
+        write (u, '(a)') "title = '"//title//"'"
+        write (u, '(a)') "model = '"//trim(merge('BEAM ', 'PLATE', beam))//"'"
+        write (u, '(a)') 'csv = '//itoa(merge(1, 0, phys))
+        write (u, '(a)') '# columns of '//data_path//' (station column table)'
+        call put_col('c_x', pick('x', 'r', 't'))
+        call put_col('c_w', pick('w', 'w', 'W'))
+        call put_col('c_gap', 'gap')
+        call put_col('c_p', pick('p_z', 'sigma_z', 'Sigma_z'))
+        call put_col('c_s', pick('p_x', 'sigma_x', 'Sigma_x'))
+        call put_col('c_state', 'state')
+        call put_col('c_slip', 'slip')
+        if (beam) then
+            call put_col('c_m', pick('M', '', 'M/(Fl)'))
+            call put_col('c_mt', '')
+            call put_col('c_q', pick('Q', '', 'Q/F'))
+            call put_col('c_n', pick('N', '', 'N/F'))
+            call put_col('c_nt', '')
+        else
+            call put_col('c_m', pick('', 'M_r', 'M_r/F'))
+            call put_col('c_mt', pick('', 'M_t', 'M_t/F'))
+            call put_col('c_q', pick('', 'Q_r', 'Q_r*a/F'))
+            call put_col('c_n', pick('', 'N_r', 'N_r*a/F'))
+            call put_col('c_nt', pick('', 'N_t', 'N_t*a/F'))
+        end if
+        write (u, '(a)') '# axis labels and legend names'
+        call put_text('lab_x', heading(pick('x', 'r', 't'), merge('x ', 'r ', beam)))
+        call put_text('lab_w', heading(pick('w', 'w', 'W'), 'settlement'))
+        call put_text('lab_p', heading(pick('p_z', 'sigma_z', 'Sigma_z'), 'contact pressure'))
+        call put_text('lab_s', heading(pick('p_x', 'sigma_x', 'Sigma_x'), 'shear traction'))
+        call put_text('lab_slip', heading('slip', 'slip u_b - u_f'))
+        if (beam) then
+            call put_text('lab_m', heading(pick('M', '', 'M/(Fl)'), 'bending moment'))
+            call put_text('lab_q', heading(pick('Q', '', 'Q/F'), 'shear force'))
+            call put_text('lab_n', heading(pick('N', '', 'N/F'), 'axial force'))
+        else
+            call put_text('lab_m', heading(pick('', 'M_r', 'M_r/F'), 'moments', &
+                                           pick('', 'M_r, M_theta', 'M_r/F, M_theta/F')))
+            call put_text('lab_q', heading(pick('', 'Q_r', 'Q_r*a/F'), 'radial shear force'))
+            call put_text('lab_n', heading(pick('', 'N_r', 'N_r*a/F'), 'membrane forces', &
+                                           pick('', 'N_r, N_theta', 'N_r*a/F, N_theta*a/F')))
+        end if
+        call put_text('key_w', symbol_of(pick('w', 'w', 'W')))
+        call put_text('key_p', symbol_of(pick('p_z', 'sigma_z', 'Sigma_z')))
+        call put_text('key_s', symbol_of(pick('p_x', 'sigma_x', 'Sigma_x')))
+        call put_text('key_slip', 'slip')
+        if (beam) then
+            call put_text('key_m', symbol_of(pick('M', '', 'M/(Fl)')))
+            call put_text('key_mt', '')
+            call put_text('key_q', symbol_of(pick('Q', '', 'Q/F')))
+            call put_text('key_n', symbol_of(pick('N', '', 'N/F')))
+            call put_text('key_nt', '')
+        else
+            call put_text('key_m', symbol_of(pick('', 'M_r', 'M_r/F')))
+            call put_text('key_mt', pick('', 'M_theta', 'M_theta/F'))
+            call put_text('key_q', symbol_of(pick('', 'Q_r', 'Q_r*a/F')))
+            call put_text('key_n', symbol_of(pick('', 'N_r', 'N_r*a/F')))
+            call put_text('key_nt', pick('', 'N_theta', 'N_theta*a/F'))
+        end if
+        call put_text('p_unit', trim(cols(ip)%unit))
+        if (beam .and. phys) then
+            write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
+            call put_num('line_width', m%b)
+            call put_text('lab_line', 'line load b p_z ['//trim(un%line_load)//']')
+        else
+            call put_num('line_width', 0.0_dp)
+            call put_text('lab_line', '')
+        end if
+        write (u, '(a)') '# clip rule: p_clip = max(clip_factor p_mean, largest pressure at least edge_d'
+        write (u, '(a)') '# from a free edge); p_mean = V / contact area, edge_d = h (design summary)'
+        call put_num('p_mean', p_mean)
+        call put_num('clip_factor', 2.5_dp)
+        call put_num('edge_d', m%h*xs)
+        call put_num('friction', m%f)
+        write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
+        k = 0
+        if (allocated(m%loads)) k = size(m%loads)
+        write (u, '(a)') 'n_loads = '//itoa(k)
+        if (k > 0) then
+            write (u, '(a)', advance='no') 'array load_kind['//itoa(k)//'] = ['
+            do k = 1, size(m%loads)
+                select case (m%loads(k)%kind)
+                case (LOAD_PATCH)
+                    kind_letter = 'D'
+                case (LOAD_MOMENT)
+                    kind_letter = 'M'
+                case (LOAD_RING)
+                    kind_letter = 'R'
+                case default
+                    kind_letter = 'P'
+                end select
+                write (u, '(a)', advance='no') "'"//kind_letter//"'"//after(k)
+            end do
+            write (u, '(a)') ''
+            write (u, '(a)', advance='no') 'array load_x1['//itoa(size(m%loads))//'] = ['
+            do k = 1, size(m%loads)
+                write (u, '(a)', advance='no') num(m%loads(k)%x1*xs)//after(k)
+            end do
+            write (u, '(a)') ''
+            write (u, '(a)', advance='no') 'array load_x2['//itoa(size(m%loads))//'] = ['
+            do k = 1, size(m%loads)
+                write (u, '(a)', advance='no') num(merge(m%loads(k)%x2, m%loads(k)%x1, &
+                    m%loads(k)%kind == LOAD_PATCH)*xs)//after(k)
+            end do
+            write (u, '(a)') ''
+        end if
+        write (u, '(a)') "if (!exists('settings_only')) call 'scripts/gnuplot/fricon_panels.gp'"
         call commit_file(path, u, err)
+
+    contains
+
+        !> The key of a column: beam (physical), plate (physical), or NONDIM deck.
+        function pick(beam_key, plate_key, nondim_key) result(key)
+            character(len=*), intent(in) :: beam_key, plate_key, nondim_key
+            character(len=:), allocatable :: key
+            if (.not. phys) then
+                key = nondim_key
+            else if (beam) then
+                key = beam_key
+            else
+                key = plate_key
+            end if
+        end function pick
+
+        !> 'settlement w [mm]': words, the column's symbol and its unit (none if a pure number).
+        function heading(key, words, symbols) result(text)
+            character(len=*), intent(in) :: key, words
+            character(len=*), intent(in), optional :: symbols   !! instead of the column's symbol
+            character(len=:), allocatable :: text
+            integer :: i
+            i = column_index(cols, key)
+            text = trim(words)//' '//trim(cols(i)%symbol)
+            if (present(symbols)) text = trim(words)//' '//symbols
+            if (len_trim(cols(i)%unit) > 0) text = text//' ['//trim(cols(i)%unit)//']'
+        end function heading
+
+        function symbol_of(key) result(text)
+            character(len=*), intent(in) :: key
+            character(len=:), allocatable :: text
+            text = trim(cols(column_index(cols, key))%symbol)
+        end function symbol_of
+
+        subroutine put_col(name, key)
+            character(len=*), intent(in) :: name, key
+            integer :: i
+            i = 0
+            if (len(key) > 0) i = column_index(cols, key)
+            write (u, '(a)') name//' = '//itoa(i)
+        end subroutine put_col
+
+        subroutine put_text(name, text)
+            character(len=*), intent(in) :: name, text
+            write (u, '(a)') name//" = '"//trim(shell_safe(text))//"'"
+        end subroutine put_text
+
+        subroutine put_num(name, x)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: x
+            write (u, '(a)') name//' = '//num(x)
+        end subroutine put_num
+
+        !> ', ' between the items of a gnuplot array, ']' after the last.
+        function after(k) result(text)
+            integer, intent(in) :: k
+            character(len=:), allocatable :: text
+            text = ']'
+            if (k < size(m%loads)) text = ', '
+        end function after
+
+        function num(x) result(text)
+            real(dp), intent(in) :: x
+            character(len=:), allocatable :: text
+            character(len=32) :: buf
+            write (buf, '(es22.14e3)') x
+            text = trim(adjustl(buf))
+        end function num
     end subroutine write_plot_script
 
     !> Text safe inside single quotes of a shell or gnuplot command: quotes, backquote, $ and

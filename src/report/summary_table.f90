@@ -27,7 +27,8 @@ module summary_table
         real(dp) :: moment = 1.0_dp, shear = 1.0_dp, rotation = 1.0_dp
         ! (no initialisers: gfortran 12 writes blank character constants of a type that
         ! travels through several modules into .mod files it cannot read back)
-        character(len=16) :: u_disp, u_length, u_pressure, u_moment, u_shear, u_rotation
+        character(len=16) :: u_disp, u_length, u_pressure, u_moment, u_shear, u_rotation, &
+                             u_subgrade
     end type scales_t
 
     public :: summary_entries, entry_keys
@@ -50,6 +51,9 @@ contains
              ent('settlement_min_x', '  at', k%u_length, s%w_min%x*k%length), &
              ent('differential_settlement', 'differential settlement (max - min)', k%u_disp, &
                  s%w_differential*k%disp), &
+             ent('settlement_mean', 'mean settlement over the base', k%u_disp, s%w_mean*k%disp), &
+             ent('subgrade_modulus', 'secant subgrade modulus (V/A)/w_mean', k%u_subgrade, &
+                 s%subgrade_modulus, .not. m%nondim .and. s%w_mean > 0.0_dp), &
              ent('tilt', 'tilt (w(l/2) - w(-l/2))/l (plate: 0)', k%u_rotation, s%tilt*k%rotation), &
              ent('angular_distortion', 'max angular distortion |dw/dx - tilt|', k%u_rotation, &
                  s%angular_distortion%value*k%rotation), &
@@ -126,6 +130,7 @@ contains
         k%u_moment = ''
         k%u_shear = ''
         k%u_rotation = ''
+        k%u_subgrade = ''
         if (m%nondim) then
             f = total_vertical_load(m)
             l = m%length
@@ -153,6 +158,7 @@ contains
         k%u_moment = un%moment
         k%u_shear = un%force
         k%u_rotation = 'rad'
+        k%u_subgrade = trim(un%force)//'/'//trim(un%length)//'^3'
         if (m%kind /= MODEL_BEAM) then
             k%u_moment = trim(un%moment)//'/'//trim(un%length)
             k%u_shear = un%line_load
