@@ -23,9 +23,9 @@ contains
         c = column_index(cols, key)
         if (c == 0) error stop 'station_test_support: no such column'
         if (i == 0) then
-            nd = cols(c)%to_nondim
+            nd = cols(c)%scale
         else
-            nd = tab%val(cols(c)%quantity, i)*cols(c)%to_nondim
+            nd = tab%val(cols(c)%quantity, i)*cols(c)%scale
         end if
     end function nd
 

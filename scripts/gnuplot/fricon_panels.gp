@@ -87,7 +87,9 @@ set format y2 '%g'
 set key outside bottom center horizontal samplen 2.5 font ',10' spacing 1.0 nobox
 set autoscale xfix
 set xrange [x_lo:x_hi]
-set xlabel lab_x offset 0,0.6
+set xlabel lab_x
+set lmargin 12
+set rmargin 11
 set offsets 0, 0, graph 0.10, graph 0.06
 zero_line = "0 w l lw 1 lc rgb '#606060' notitle"
 dummy_zone = (n_zones > 0) ? "NaN w boxes fs solid 0.45 noborder fc rgb '#c8c8c8' t 'lift-off zone'" : "NaN notitle"
@@ -121,9 +123,9 @@ if (p_cut) {
         }
     }
 }
+clip_marks = p_cut ? "data skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped (true peak written)'" : "NaN notitle"
 plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \
-     '' skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t (p_cut ? 'clipped (true peak written)' : ''), \
-     @zero_line, @dummy_zone, @dummy_load
+     @clip_marks, @zero_line, @dummy_zone, @dummy_load
 unset label 201
 unset label 202
 unset y2label
@@ -138,12 +140,13 @@ if (s_cut) {
     stats data skip skip_rows u c_x:(abs(column(c_s))) nooutput
     set label 203 sprintf(' peak |%s| %.4g %s ', key_s, STATS_max_y, p_unit) at graph 0.5, graph 0.08 center front tc rgb '#c00000'
 }
+stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) nooutput
+n_slip = STATS_sum
+slip_marks = (n_slip > 0) ? "data skip skip_rows u c_x:((column(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps 1.1 lc rgb '#ff7f0e' t 'slipping station'" : "NaN notitle"
+clip_marks = s_cut ? "data skip skip_rows u c_x:((abs(column(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped'" : "NaN notitle"
+envelope = (friction > 0) ? "data skip skip_rows u c_x:(clip_s(friction*column(c_p))) w l dt 3 lw 1.2 lc rgb '#505050' t sprintf('+-f %s (f = %g)', key_p, friction), data skip skip_rows u c_x:(clip_s(-friction*column(c_p))) w l dt 3 lw 1.2 lc rgb '#505050' notitle" : "NaN notitle"
 plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \
-     '' skip skip_rows u c_x:((column(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps 1.1 lc rgb '#ff7f0e' t 'slipping station', \
-     '' skip skip_rows u c_x:((abs(column(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t (s_cut ? 'clipped' : ''), \
-     '' skip skip_rows u c_x:(clip_s(friction*column(c_p))) w l dt 3 lw 1.2 lc rgb '#505050' t (friction > 0 ? sprintf('+-f %s (f = %g)', key_p, friction) : ''), \
-     '' skip skip_rows u c_x:(friction > 0 ? clip_s(-friction*column(c_p)) : 1/0) w l dt 3 lw 1.2 lc rgb '#505050' notitle, \
-     @zero_line, @dummy_zone, @dummy_load
+     @slip_marks, @clip_marks, @envelope, @zero_line, @dummy_zone, @dummy_load
 unset label 203
 
 # 4 bending moments

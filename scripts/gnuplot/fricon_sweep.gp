@@ -1,38 +1,118 @@
-# fricon sweep figure: the cases of a SWEEP deck overlaid, four panels.
-# The calling script (output/STEM_sweep.gp, written by fricon) defines
-#   files  = "a.dat b.dat ..."   (whitespace-separated data files)
-#   labels = "l1 l2 ..."         (one word per file)
+# fricon sweep figure: the cases of a SWEEP deck overlaid, six panels, one colour per case.
+# The calling script (output/STEM_sweep.gp, written by fricon) loads the first case's script
+# with settings_only set (columns c_*, labels lab_*, key_*, p_unit, clip_factor, edge_d and
+# the load arrays, as described in fricon_panels.gp), then defines
+#   files   = "a.csv b.csv ..."         (whitespace-separated data files)
+#   labels  = "'RHO=0.001 F=0' ..."     (one quoted phrase per file: the legend)
+#   p_means = "v1 v2 ..."               (mean contact pressure of each case; optional)
 # and calls:  call 'scripts/gnuplot/fricon_sweep.gp' PNG TITLE MODEL
+# Without the case settings (e.g. scripts/paper.sh) the files are nondimensional .dat files
+# in the column layout of README (t U W Psi Sigma_x Sigma_z gap slip state, then resultants).
 # A variable png_override (gnuplot -e) replaces PNG (fricon renders to a temporary name).
+# Pressure clip: max(clip_factor * largest mean pressure of the cases, largest station pressure
+# at least edge_d from a free edge over all cases); clipped stations are marked.
 png = exists("png_override") ? png_override : ARG1
 title = ARG2
 model = ARG3
-set terminal pngcairo size 1400,1000 font 'Sans,11' noenhanced
+is_beam = (model eq 'BEAM')
+if (!exists("c_x")) {
+    csv = 0
+    c_x = 1; c_w = 3; c_s = 5; c_p = 6; c_state = 9; c_slip = 8
+    if (is_beam) { c_m = 11; c_mt = 0; c_q = 12 } else { c_m = 12; c_mt = 13; c_q = 14 }
+    lab_x = is_beam ? 't = x/l' : 't = r/a'
+    lab_w = 'settlement W'; lab_p = 'contact pressure Sigma_z'; lab_s = 'shear traction Sigma_x'
+    lab_slip = 'slip'
+    lab_m = is_beam ? 'bending moment M/(Fl)' : 'moments M_r/F, M_theta/F'
+    lab_q = is_beam ? 'shear force Q/F' : 'radial shear force Q_r*a/F'
+    key_mt = 'M_theta/F'
+    p_unit = ''
+    clip_factor = 2.5
+    edge_d = 0
+    n_loads = 0
+}
+if (!exists("p_means")) { p_means = '' }
+set terminal pngcairo size 1600,1150 font 'Sans,11' noenhanced
 set output png
-set multiplot layout 2,2 title title font 'Sans,14'
-set grid
-set format y '%g'
-set key box opaque font ',9' samplen 2
-set autoscale fix
-set offsets 0, 0, graph 0.08, graph 0.08
-set xlabel ((model eq 'BEAM') ? 't = x/l' : 't = r/a')
+if (csv) { set datafile separator comma; skip_rows = 1 } else { set datafile separator whitespace; skip_rows = 0 }
 n = words(files)
 
-set title 'Settlement W (down positive)'
-set ylabel 'W'
+# 12 distinguishable colours; dash types change after every 12 cases
+array palette[12] = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', \
+                     '#e377c2', '#17becf', '#000000', '#bcbd22', '#7f7f7f', '#0b3d91']
+colour(i) = palette[(i - 1)%12 + 1]
+dash(i) = (i - 1)/12%5 + 1
+
+# ---- clip level over all cases -----------------------------------------------------------
+p_clip = 0
+p_top = 0
+do for [i=1:n] {
+    f = word(files, i)
+    stats f skip skip_rows u c_x nooutput
+    x_lo = STATS_min; x_hi = STATS_max
+    stats f skip skip_rows u ((column(c_x) > x_hi - edge_d || (is_beam && column(c_x) < x_lo + edge_d)) ? 0 : column(c_p)) nooutput
+    if (STATS_max > p_clip) { p_clip = STATS_max }
+    stats f skip skip_rows u c_p nooutput
+    if (STATS_max > p_top) { p_top = STATS_max }
+    if (words(p_means) >= i) { if (clip_factor*real(word(p_means, i)) > p_clip) { p_clip = clip_factor*real(word(p_means, i)) } }
+}
+p_cut = (p_top > p_clip*1.0001)
+clip_p(v) = (v > p_clip) ? p_clip : v
+
+# ---- loads ---------------------------------------------------------------------------------
+c_load = '#e07000'
+do for [k=1:n_loads] {
+    if (load_kind[k] eq 'D') {
+        set object 100+k rect from first load_x1[k], graph 0.955 to first load_x2[k], graph 1 \
+            front fc rgb c_load fs solid 0.55 noborder
+    } else {
+        set arrow 100+2*k from first load_x1[k], graph 0 to first load_x1[k], graph 1 nohead back dt 2 lw 1.2 lc rgb c_load
+    }
+}
+
+# ---- layout: six panels, one legend below them all -------------------------------------------
+key_rows = int((n + 3)/4)
+bottom = 0.05 + 0.028*key_rows
+set multiplot layout 3,2 title title font 'Sans,14' margins 0.07,0.97,bottom,0.91 spacing 0.08,0.09
+set grid
+set format y '%g'
+set xlabel lab_x offset 0,0.5
+set autoscale xfix
+set offsets 0, 0, graph 0.08, graph 0.05
+zero_line = "0 w l lw 1 lc rgb '#606060' notitle"
+
+set title 'Settlement (down positive)'
+set ylabel lab_w
 set yrange [*:*] reverse
-plot for [i=1:n] word(files, i) u 1:3 w l lw 2 t word(labels, i)
+set key at screen 0.5, 0.012 center bottom horizontal maxrows key_rows width 2 samplen 3 font ',10' box opaque
+plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_w w l lw 2 lc rgb colour(i) dt dash(i) t word(labels, i)
 set yrange [*:*] noreverse
+unset key
 
-set title 'Contact pressure Sigma_z'
-set ylabel 'Sigma_z'
-plot for [i=1:n] word(files, i) u 1:6 w l lw 2 t word(labels, i)
+set title p_cut ? sprintf('Contact pressure (clipped at %.4g %s; red triangles: clipped)', p_clip, p_unit) : 'Contact pressure'
+set ylabel lab_p
+plot for [i=1:n] word(files, i) skip skip_rows u c_x:(clip_p(column(c_p))) w l lw 2 lc rgb colour(i) dt dash(i) notitle, \
+     for [i=1:n] word(files, i) skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.5 lc rgb colour(i) notitle, \
+     @zero_line
 
-set title 'Shear traction Sigma_x'
-set ylabel 'Sigma_x'
-plot for [i=1:n] word(files, i) u 1:5 w l lw 2 t word(labels, i)
+set title 'Shear traction on the soil'
+set ylabel lab_s
+plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
 
-set title 'Horizontal displacement U'
-set ylabel 'U'
-plot for [i=1:n] word(files, i) u 1:2 w l lw 2 t word(labels, i)
+set title 'Bending moment '.(c_mt > 0 ? 'M_r' : 'M').' (> 0 hogging)'
+set ylabel lab_m
+plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_m w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
+
+if (c_mt > 0) {
+    set title 'Hoop moment M_theta (> 0 hogging)'
+    set ylabel lab_m
+    plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_mt w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
+} else {
+    set title 'Interface slip'
+    set ylabel lab_slip
+    plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_slip w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
+}
+
+set title 'Shear force'
+set ylabel lab_q
+plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_q w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
 unset multiplot

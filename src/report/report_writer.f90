@@ -32,34 +32,7 @@ contains
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         type(error_t), allocatable, intent(out) :: err
-        type(column_t), allocatable :: cols(:)
-        integer :: u, i, c
-        cols = nondim_columns(m)
-        call open_temporary(path, u, err)
-        if (allocated(err)) return
-        write (u, '(a)') '# fricon station data: '//trim(m%title)
-        write (u, '(a)') '# all columns nondimensional (SPEC 6); a station at a concentrated '// &
-            'load appears twice (left and right limit)'
-        do c = 1, size(cols)
-            write (u, '(a,i0,a)') '# ', c, ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
-        end do
-        write (u, '(a)', advance='no') '#'
-        do c = 1, size(cols)
-            write (u, '(1x,a)', advance='no') trim(cols(c)%symbol)
-        end do
-        write (u, '(a)') ''
-        do i = 1, tab%n
-            do c = 1, size(cols)
-                if (cols(c)%integer_valued) then
-                    write (u, '(i3)', advance='no') nint(tab%val(cols(c)%quantity, i))
-                else
-                    write (u, '(es16.7e3)', advance='no') &
-                        tab%val(cols(c)%quantity, i)*cols(c)%to_nondim
-                end if
-            end do
-            write (u, '(a)') ''
-        end do
-        call commit_file(path, u, err)
+        call write_station_file(path, trim(m%title), nondim_columns(m), tab, ' ', err)
     end subroutine write_data_file
 
     !> output/CASE.csv (physical decks): a header line `key [unit]`, one row per station.
@@ -68,29 +41,60 @@ contains
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         type(error_t), allocatable, intent(out) :: err
-        type(column_t), allocatable :: cols(:)
-        integer :: u, i, c
-        cols = physical_columns(m)
+        call write_station_file(path, trim(m%title), physical_columns(m), tab, ',', err)
+    end subroutine write_physical_csv
+
+    !> A station file: whitespace with `#` header lines (sep ' '), or CSV with one header line.
+    subroutine write_station_file(path, title, cols, tab, sep, err)
+        character(len=*), intent(in) :: path, title
+        type(column_t), intent(in) :: cols(:)
+        type(station_table_t), intent(in) :: tab
+        character(len=1), intent(in) :: sep
+        type(error_t), allocatable, intent(out) :: err
+        integer :: u, c
         call open_temporary(path, u, err)
         if (allocated(err)) return
-        do c = 1, size(cols)
-            if (c > 1) write (u, '(a)', advance='no') ','
-            write (u, '(a)', advance='no') trim(column_heading(cols(c)))
-        end do
-        write (u, '(a)') ''
-        do i = 1, tab%n
+        if (sep == ' ') then
+            write (u, '(a)') '# fricon station data: '//title
+            write (u, '(a)') '# all columns nondimensional (SPEC 6); a station at a concentrated '// &
+                'load appears twice (left and right limit)'
             do c = 1, size(cols)
-                if (c > 1) write (u, '(a)', advance='no') ','
+                write (u, '(a,i0,a)') '# ', c, ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
+            end do
+            write (u, '(a)', advance='no') '#'
+            do c = 1, size(cols)
+                write (u, '(1x,a)', advance='no') trim(cols(c)%symbol)
+            end do
+        else
+            do c = 1, size(cols)
+                if (c > 1) write (u, '(a)', advance='no') sep
+                write (u, '(a)', advance='no') trim(column_heading(cols(c)))
+            end do
+        end if
+        write (u, '(a)') ''
+        call write_rows(u, cols, tab, sep)
+        call commit_file(path, u, err)
+    end subroutine write_station_file
+
+    !> One line per station: the columns' values separated by `sep` (the state as an integer).
+    subroutine write_rows(u, cols, tab, sep)
+        integer, intent(in) :: u
+        type(column_t), intent(in) :: cols(:)
+        type(station_table_t), intent(in) :: tab
+        character(len=1), intent(in) :: sep
+        integer :: i, c
+        rows: do i = 1, tab%n
+            do c = 1, size(cols)
+                if (c > 1 .and. sep /= ' ') write (u, '(a)', advance='no') sep
                 if (cols(c)%integer_valued) then
-                    write (u, '(i0)', advance='no') nint(tab%val(cols(c)%quantity, i))
+                    write (u, '(i3)', advance='no') nint(tab%val(cols(c)%quantity, i))
                 else
-                    write (u, '(es15.7e3)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%to_unit
+                    write (u, '(es16.7e3)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
                 end if
             end do
             write (u, '(a)') ''
-        end do
-        call commit_file(path, u, err)
-    end subroutine write_physical_csv
+        end do rows
+    end subroutine write_rows
 
     !> `key [unit]`, or `key` for a pure number.
     pure function column_heading(c) result(text)
@@ -261,7 +265,7 @@ contains
         end if
         ix = column_index(cols, pick('x', 'r', 't'))
         ip = column_index(cols, pick('p_z', 'sigma_z', 'Sigma_z'))
-        xs = cols(ix)%to_unit
+        xs = cols(ix)%scale
         ! mean contact pressure V / contact area, stored units (beam: line load), then plotted
         width = merge(m%b, 1.0_dp, beam)
         if (present(s)) then
@@ -271,7 +275,7 @@ contains
         else
             p_mean = total_vertical_load(m)/(pi*m%length**2)
         end if
-        p_mean = p_mean*cols(ip)%to_unit
+        p_mean = p_mean*cols(ip)%scale
         title = 'fricon: '//trim(shell_safe(m%title))
         if (present(label)) then
             if (index(label, ':') > 0) title = title//"'.""\n"".'"//trim(shell_safe(label))
@@ -308,11 +312,12 @@ contains
             call put_col('c_nt', pick('', 'N_t', 'N_t*a/F'))
         end if
         write (u, '(a)') '# axis labels and legend names'
-        call put_text('lab_x', heading(pick('x', 'r', 't'), merge('x ', 'r ', beam)))
+        call put_text('lab_x', heading(pick('x', 'r', 't'), '', &
+                                       pick('x', 'r', trim(merge('t = x/l', 't = r/a', beam)))))
         call put_text('lab_w', heading(pick('w', 'w', 'W'), 'settlement'))
         call put_text('lab_p', heading(pick('p_z', 'sigma_z', 'Sigma_z'), 'contact pressure'))
         call put_text('lab_s', heading(pick('p_x', 'sigma_x', 'Sigma_x'), 'shear traction'))
-        call put_text('lab_slip', heading('slip', 'slip u_b - u_f'))
+        call put_text('lab_slip', heading('slip', 'slip u_b - u_f', ''))
         if (beam) then
             call put_text('lab_m', heading(pick('M', '', 'M/(Fl)'), 'bending moment'))
             call put_text('lab_q', heading(pick('Q', '', 'Q/F'), 'shear force'))
@@ -406,15 +411,19 @@ contains
             end if
         end function pick
 
-        !> 'settlement w [mm]': words, the column's symbol and its unit (none if a pure number).
+        !> 'settlement w [mm]': words, the column's symbol (or `symbols`) and its unit (none
+        !! for a pure number).
         function heading(key, words, symbols) result(text)
             character(len=*), intent(in) :: key, words
-            character(len=*), intent(in), optional :: symbols   !! instead of the column's symbol
-            character(len=:), allocatable :: text
+            character(len=*), intent(in), optional :: symbols
+            character(len=:), allocatable :: text, sym
             integer :: i
             i = column_index(cols, key)
-            text = trim(words)//' '//trim(cols(i)%symbol)
-            if (present(symbols)) text = trim(words)//' '//symbols
+            sym = trim(cols(i)%symbol)
+            if (present(symbols)) sym = trim(symbols)
+            text = trim(words)
+            if (len(sym) > 0 .and. len(text) > 0) text = text//' '
+            text = text//sym
             if (len_trim(cols(i)%unit) > 0) text = text//' ['//trim(cols(i)%unit)//']'
         end function heading
 
@@ -653,9 +662,9 @@ contains
                 if (cols(c)%integer_valued) then
                     write (u, '(a13)', advance='no') trim(state_word(nint(tab%val(Q_STATE, i))))
                 else if (c == 1) then
-                    write (u, '(f13.5)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%to_unit
+                    write (u, '(f13.5)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
                 else
-                    write (u, '(es13.4)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%to_unit
+                    write (u, '(es13.4)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
                 end if
             end do
             if (iand(tab%flag(i), FLAG_TENSION) /= 0) write (u, '(a)', advance='no') ' !T'

@@ -38,8 +38,8 @@ module station_columns
         character(len=16) :: unit = ''      !! display unit ('' for a pure number)
         character(len=60) :: meaning = ''   !! one line for README and file headers
         integer :: quantity = Q_X           !! which stored quantity (Q_*)
-        real(dp) :: to_nondim = 1.0_dp      !! nondimensional value = stored * to_nondim
-        real(dp) :: to_unit = 1.0_dp        !! displayed value = stored * to_unit
+        real(dp) :: scale = 1.0_dp          !! printed value = stored * scale (nondimensional
+                                            !! for nondim_columns, display units for physical)
         logical :: integer_valued = .false. !! the state code
         logical :: in_report = .true.       !! also a column of the report's table
     end type column_t
@@ -180,8 +180,7 @@ contains
         c%unit = unit
         c%meaning = meaning
         c%quantity = quantity
-        c%to_unit = factor
-        c%to_nondim = factor
+        c%scale = factor
     end function col
 
     !> Position of the column named `key` in `cols`; 0 if absent.
