@@ -3,7 +3,7 @@ module report_writer
     use kinds, only: dp, pi
     use errors, only: error_t
     use atomic_files, only: open_temporary, commit_file
-    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_SZ, flexural_rigidity, &
+    use model, only: model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, flexural_rigidity, &
                      relative_stiffness, soil_shear_modulus, friction_compliance, &
                      total_vertical_load
     use shape_functions, only: interp_name
@@ -511,7 +511,7 @@ contains
                              tab, .true.)
             if (.not. m%nondim) call write_table(u, ' 6. STATIONS (physical units)', &
                                                  physical_columns(m), tab, .false.)
-            call write_station_notes(u, tab)
+            call write_station_notes(u, m, tab)
             call write_summary(u, m, s, tab)
             call write_checks(u, m, sol, tab, s)
         end if
@@ -673,8 +673,9 @@ contains
         end do rows
     end subroutine write_table
 
-    subroutine write_station_notes(u, tab)
+    subroutine write_station_notes(u, m, tab)
         integer, intent(in) :: u
+        type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         write (u, '(/,a)') '   Station values: tractions are the mean over the elements meeting at '// &
             'the station (the forces the equations carry);'
@@ -683,6 +684,9 @@ contains
         write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the section; '// &
             'a station at a concentrated load'
         write (u, '(a)') '   appears twice (left and right limit).'
+        if (m%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) write (u, '(a)') &
+            '   A POINT load on the axis makes Q_r unbounded there (Q_r = -P/(2 pi r)); the r = 0 '// &
+            'station shows the symmetry value 0, and max |Q_r| depends on the mesh.'
         if (any(tab%flag /= 0)) write (u, '(a)') '   FLAGGED rows: !T tension beyond the '// &
             'penalty''s O(eta); !O lifted off with a negative pointwise gap (discretisation).'
     end subroutine write_station_notes
