@@ -77,13 +77,20 @@ param() { # param REPORT PATTERN -> the number at the end of the first matching 
         dof=$(awk -F'displacements ' '/unknowns: displacements/{split($2, a, ","); print a[1]; exit}' "$rep")
         awk -v name="$case_name" -v model="$model" -v rho="$rho" -v beta="${beta:--}" \
             -v zeta="$zeta" -v f="$f" -v eps="$eps" -v dof="$dof" '
+            # columns by name from the header line of symbols; the tractions are the
+            # finite-element values Sigma_x^h, Sigma_z^h (the paper's nodal values)
+            $1 == "#" && $2 == "t" { for (i = 2; i <= NF; i++) col[$i] = i - 1; next }
             /^#/ { next }
+            $1 == t_prev && n > 0 { next }          # a load station listed twice
             {
+                t_prev = $1
+                U = $(col["U"]); W = $(col["W"]); SX = $(col["Sigma_x^h"]); SZ = $(col["Sigma_z^h"])
                 t = $1 + 0; a = (t < 0 ? -t : t)
-                if (n == 0 || a < best) { best = a; w0 = $3; sx0 = $5; sz0 = $6; u0 = $2 }
-                sx = ($5 < 0 ? -$5 : $5); if (n == 0 || sx > mx) mx = sx
-                if (n == 0 || $6 > mz) mz = $6
-                if ($9 == 1 || $9 == 2) { if (!c || t < lo) lo = t; if (!c || t > hi) hi = t; c = 1 }
+                if (n == 0 || a < best) { best = a; w0 = W; sx0 = SX; sz0 = SZ; u0 = U }
+                sx = (SX < 0 ? -SX : SX); if (n == 0 || sx > mx) mx = sx
+                if (n == 0 || SZ > mz) mz = SZ
+                st = $(col["state"])
+                if (st == 1 || st == 2) { if (!c || t < lo) lo = t; if (!c || t > hi) hi = t; c = 1 }
                 n++
             }
             END {
@@ -153,16 +160,24 @@ awk '
 errors() { # errors REF CASE [GRID] -> n L2(U W Sx Sz) L1(U W Sx Sz) L2in(W Sz)
     # GRID > 0: only the common stations with t a multiple of 1/GRID.
     # L2in: the L2 error over the common stations with |t| <= 0.4 (away from the beam ends).
-    awk -v grid="${3:-0}" 'FNR == 1 { nf++ }
+    awk -v grid="${3:-0}" 'FNR == 1 { nf++; t_prev = "" }
+        # columns 2..6 = U W Psi Sigma_x Sigma_z, the tractions taken as the finite-element
+        # values Sigma_x^h, Sigma_z^h (found by name in the header line of symbols)
+        $1 == "#" && $2 == "t" { for (i = 2; i <= NF; i++) col[$i] = i - 1
+                                 pick[2] = col["U"]; pick[3] = col["W"]; pick[4] = col["Psi"]
+                                 pick[5] = col["Sigma_x^h"]; pick[6] = col["Sigma_z^h"]; next }
         /^#/ { next }
-        nf == 1 { k = sprintf("%.6f", $1); for (c = 2; c <= 6; c++) r[k, c] = $c; have[k] = 1; next }
+        $1 == t_prev { next }                    # a load station listed twice
+        { t_prev = $1 }
+        nf == 1 { k = sprintf("%.6f", $1); for (c = 2; c <= 6; c++) r[k, c] = $(pick[c]); have[k] = 1; next }
         {
             k = sprintf("%.6f", $1); if (!(k in have)) next
             if (grid > 0) { g = $1 * grid; g = g - int(g + (g < 0 ? -0.5 : 0.5)); if (g > 1e-6 || g < -1e-6) next }
             n++
             inner = ($1 <= 0.400001 && $1 >= -0.400001)
             for (c = 2; c <= 6; c++) {
-                d = $c - r[k, c]; a2[c] += d * d; b2[c] += r[k, c] * r[k, c]
+                v = $(pick[c])
+                d = v - r[k, c]; a2[c] += d * d; b2[c] += r[k, c] * r[k, c]
                 a1[c] += (d < 0 ? -d : d); b1[c] += (r[k, c] < 0 ? -r[k, c] : r[k, c])
                 if (inner) { i2[c] += d * d; j2[c] += r[k, c] * r[k, c] }
             }

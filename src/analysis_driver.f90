@@ -308,6 +308,8 @@ contains
                         write (u, '(a)', advance='no') ','
                     else if (.not. r%entries(k)%defined) then
                         write (u, '(a)', advance='no') ','
+                    else if (r%entries(k)%integer_valued) then
+                        write (u, '(",",i0)', advance='no') nint(r%entries(k)%value)
                     else
                         write (u, '(",",es15.7)', advance='no') r%entries(k)%value
                     end if

@@ -80,11 +80,11 @@ do for [k=1:n_loads] {
 load_text(k) = (load_kind[k] eq 'P') ? 'point load' : (load_kind[k] eq 'R') ? 'ring load' : \
                (load_kind[k] eq 'M') ? 'moment' : 'patch load'
 
-set multiplot layout 3,2 title title font 'Sans,14'
+set multiplot layout 3,2 title title."\n" font 'Sans,14'
 set grid
 set format y '%g'
 set format y2 '%g'
-set key outside bottom center horizontal samplen 2.5 font ',10' spacing 1.0 nobox
+set key outside top center horizontal samplen 2.5 font ',10' spacing 1.0 nobox
 set autoscale xfix
 set xrange [x_lo:x_hi]
 set xlabel lab_x

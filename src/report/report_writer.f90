@@ -143,8 +143,12 @@ contains
         write (u, '(a)') '  },'
         write (u, '(a)') '  "results": {'
         do i = 1, size(e)
-            write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '//json_number(e(i)%value, &
-                e(i)%defined)//','
+            if (e(i)%integer_valued) then
+                write (u, '(a,i0,a)') '    '//json_string(trim(e(i)%key))//': ', nint(e(i)%value), ','
+            else
+                write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '// &
+                    json_number(e(i)%value, e(i)%defined)//','
+            end if
         end do
         call write_json_intervals(u, m, s%intervals)
         write (u, '(a)') '  },'
@@ -705,7 +709,7 @@ contains
         do i = 1, size(e)
             if (.not. e(i)%defined) then
                 write (u, '(3x,a,t52,a)') e(i)%label, 'n/a'
-            else if (e(i)%key == 'linear_solves') then
+            else if (e(i)%integer_valued) then
                 write (u, '(3x,a,t52,i14)') e(i)%label, nint(e(i)%value)
             else
                 write (u, '(3x,a,t52,es14.5,2x,a)') e(i)%label, e(i)%value, trim(e(i)%unit)

@@ -19,6 +19,7 @@ module summary_table
         character(len=16) :: unit = ''      !! display unit ('' for a pure number)
         real(dp) :: value = 0.0_dp
         logical :: defined = .true.         !! false: not applicable (printed as null / blank)
+        logical :: integer_valued = .false. !! a count
     end type entry_t
 
     !> Scale factors from deck units to what is printed.
@@ -83,6 +84,7 @@ contains
              ent('sliding_utilisation', 'sliding utilisation H/(f V)', '', s%utilisation, &
                  s%utilisation >= 0.0_dp .and. beam), &
              ent('linear_solves', 'linear solves', '', real(s%linear_solves, dp))]
+        e(size(e))%integer_valued = .true.
     end function summary_entries
 
     !> The keys of summary_entries for a model (the sweep CSV header).
