@@ -18,11 +18,19 @@ program tester
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
     integer :: n_pass, n_fail
+    character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
+        'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
+        'design_values paper '
 
     want_suite = ''
     want_test = ''
     if (command_argument_count() >= 1) call get_command_argument(1, want_suite)
     if (command_argument_count() >= 2) call get_command_argument(2, want_test)
+    if (len_trim(want_suite) > 0 .and. index(suites, ' '//trim(want_suite)//' ') == 0) then
+        write (*, '(a)') 'unknown test suite "'//trim(want_suite)//'"; suites:'//suites
+        write (*, '(a)') '0 passed, 1 failed'
+        stop 1
+    end if
     call gsl_start()
     n_pass = 0
     n_fail = 0
