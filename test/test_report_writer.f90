@@ -95,24 +95,31 @@ contains
         call check_close(err, total, 1.0_dp, 5.0e-2_dp, 0.0_dp, 'int Sigma_z 2t dt from .dat')
     end subroutine test_data_file
 
-    !> A swept value out of range (nu = 0.7): status 1 before anything is solved, and the
-    !! output directory stays empty (not even the valid first case is written).
+    !> run_analysis validates every case before it solves any: a sweep whose second case puts
+    !! its load off the beam (L = 6 m with a POINT load at x = 4 m, |x| <= 3 m) gives status 1
+    !! and an empty output directory, not even case 1 is written. parse_deck refuses such a
+    !! deck already (tested in deck_reader), so the test parses SWEEP L 10 8 and then sets the
+    !! second value to 6: a deck the parser would not produce, reaching the driver's own check.
     subroutine test_input_error(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
-        type(error_t), allocatable :: parse_err
         integer :: status, n_files, u, ios
+        character(len=80), allocatable :: lines(:)
         call clean_dir()
-        call parse_deck('bad.dat', plate_deck(' ', [card('SWEEP', ['NU  ', '0.2 ', '0.7 '])]), &
-                        deck, parse_err)
-        if (.not. allocated(parse_err)) then
-            call run_analysis(deck, dir, output_unit, error_unit, status)
-            call check(err, status == EXIT_INPUT, 'swept nu = 0.7 was not an input error')
-            if (allocated(err)) return
-        else
-            call check(err, parse_err%code == EXIT_INPUT, 'wrong exit code for a bad deck')
-            if (allocated(err)) return
+        lines = [character(len=80) :: card('MODEL', ['BEAM']), card('UNITS', ['kN', 'm ']), &
+                 card('GEOMETRY', ['10.0', '0.8 ', '1.0 ']), card('STRUCTURE', ['3.0E7', '0.2  ']), &
+                 card('SOIL', ['3.0E4', '0.3  ']), card('FRICTION', ['0.5']), &
+                 card('LOAD', ['POINT ', '1000.0', '      ', '4.0   ']), &
+                 card('SWEEP', ['L   ', '10.0', '8.0 ']), card('END', [' '])]
+        call parse_deck('bad.dat', lines, deck, err)
+        if (allocated(err)) then
+            err%message = 'the valid sweep deck was refused by parse_deck: '//err%message
+            return
         end if
+        deck%sweeps(1)%values(2) = 6.0_dp
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_INPUT, 'a load off the beam in case 2 was not an input error')
+        if (allocated(err)) return
         call execute_command_line('ls -A '//dir//' | wc -l > build/test_count.txt')
         open (newunit=u, file='build/test_count.txt', status='old', action='read')
         read (u, *, iostat=ios) n_files
