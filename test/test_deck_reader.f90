@@ -71,6 +71,10 @@ contains
                  new_unittest('sweep_bad_values', test_sweep_values), &
                  new_unittest('nondim_loads_add_to_one', test_nondim_total), &
                  new_unittest('several_errors_listed', test_several_errors), &
+                 new_unittest('utf8_comment_width_and_bom', test_utf8_bom), &
+                 new_unittest('non_ascii_in_card', test_non_ascii_card), &
+                 new_unittest('hash_comment_hint', test_hash_hint), &
+                 new_unittest('free_format_hint', test_free_format), &
                  new_unittest('fuzz_odd_lines', test_fuzz_lines), &
                  new_unittest('fuzz_random_bytes', test_fuzz_random)]
     end subroutine collect_deck_reader
@@ -817,6 +821,69 @@ contains
         lines = [character(len=w) :: lines(1:2), '* comment with a'//achar(9)//'tab', lines(3:)]
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:3:17: TAB'], err)
     end subroutine test_tab
+
+    !> Issue 9: a 76-character comment holding 'kN/m²' (77 bytes, the ² is two) is accepted,
+    !! an 81-character one is not; a UTF-8 byte-order mark before the first card is ignored.
+    subroutine test_utf8_bom(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        character(len=w), allocatable :: lines(:)
+        character(len=*), parameter :: sq = char(194)//char(178)   ! U+00B2, 2 bytes
+        character(len=*), parameter :: bom = char(239)//char(187)//char(191)
+        lines = beam_physical()
+        lines = [character(len=w) :: '* pressure in kN/m'//sq//' '//repeat('.', 56), lines]
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        lines(1) = '* pressure in kN/m'//sq//' '//repeat('.', 61)          ! 81 characters
+        call expect_error(lines, [character(len=80) :: 'test/bad.dat:1:', &
+                          'comment is 81 characters long'], err)
+        if (allocated(err)) return
+        lines = beam_physical()
+        lines(1) = bom//lines(1)
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, deck%base%kind == MODEL_BEAM, 'MODEL after a BOM not read')
+    end subroutine test_utf8_bom
+
+    !> A non-ASCII character in a card (not a comment) is an error naming its column.
+    subroutine test_non_ascii_card(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=w), allocatable :: lines(:)
+        lines = beam_physical()
+        lines(3)(25:26) = char(194)//char(178)
+        call expect_error(lines, [character(len=100) :: 'test/bad.dat:3:25: non-ASCII '// &
+                          'character in column 25'], err)
+    end subroutine test_non_ascii_card
+
+    !> '#' or '!' in column 1: an unknown card with a hint on the comment marks.
+    subroutine test_hash_hint(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=w), allocatable :: lines(:)
+        lines = beam_physical()
+        lines = [character(len=w) :: '# my deck', '! another', lines]
+        call expect_error(lines, [character(len=100) :: 'test/bad.dat:1:1: unknown card', &
+                          'test/bad.dat:2:1: unknown card', 'a comment starts with * or $'], err)
+    end subroutine test_hash_hint
+
+    !> Issue 9: a free-format deck gave 15 errors including a misleading 'missing MODEL card'.
+    !! Now each line says that fields are 10 columns wide, and no card it contains is reported
+    !! missing as well.
+    subroutine test_free_format(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=w), allocatable :: lines(:)
+        type(deck_t) :: deck
+        type(error_t), allocatable :: perr
+        lines = [character(len=w) :: 'MODEL BEAM', 'GEOMETRY 10.0 0.8 1.0', 'STRUCTURE 3.0E7 0.2', &
+                 'SOIL 3.0E4 0.3', 'FRICTION 0.5', 'LOAD POINT 1000.0', 'END']
+        call expect_error(lines, [character(len=100) :: 'test/bad.dat:1:7-10: MODEL', &
+                          'test/bad.dat:2:10: GEOMETRY', 'fields are 10 columns wide: f1 is '// &
+                          'columns 11-20', 'test/bad.dat:3:11-20: STRUCTURE E', &
+                          'expected one number, got ''3.0E7 0.2'''], err)
+        if (allocated(err)) return
+        call parse_deck(bad, lines, deck, perr)
+        call check(err, index(perr%message, 'missing') == 0, 'a card that is present was '// &
+                   'also reported missing:'//nl//perr%message)
+    end subroutine test_free_format
 
     subroutine test_long_card(err)
         type(error_t), allocatable, intent(out) :: err

@@ -89,6 +89,9 @@ module deck_reader
 
     integer, parameter :: max_cases = 100000        !! largest number of SWEEP combinations
     integer, parameter :: max_line_kept = 1024      !! longer lines are cut (they are errors)
+    character(len=*), parameter :: utf8_bom = achar(239)//achar(187)//achar(191)
+    character(len=*), parameter :: field_hint = 'fields are 10 columns wide: f1 is columns '// &
+        '11-20, f2 21-30, f3 31-40, ... (free format is not read; see the column ruler in README)'
     integer, parameter :: max_lines = 100000        !! longer files are not decks
     real(dp), parameter :: unit_load_tol = 1.0e-6_dp  !! NONDIM: |sum F_z - 1| allowed
 
@@ -109,6 +112,7 @@ module deck_reader
         type(card_t), allocatable :: cards(:)
         integer :: n = 0                         !! cards(1:n) in use
         integer :: first_line(n_cards) = 0       !! line of the first card of each kind
+        integer :: unreadable_line(n_cards) = 0  !! a card of that kind whose name line was bad
         integer :: end_line = 0                  !! line of END (0: none yet)
         integer :: last_line = 0                 !! number of lines of the deck
         type(diagnostics_t) :: diag              !! the input errors
@@ -176,17 +180,23 @@ contains
         type(deck_t), intent(out) :: deck               !! the deck (partial on error)
         type(error_t), allocatable, intent(out) :: err
         type(state_t) :: st
+        character(len=len(text_lines)), allocatable :: lines(:)
         integer :: i
 
         deck%path = name
         deck%stem = stem_of(name)
         allocate (deck%lines(size(text_lines)))
-        do i = 1, size(text_lines)
-            deck%lines(i) = text_lines(i)
+        lines = text_lines
+        ! a UTF-8 byte-order mark (some editors write one) is not part of the first card
+        if (size(lines) > 0) then
+            if (lines(1)(1:min(3, len(lines(1)))) == utf8_bom) lines(1) = lines(1)(4:)
+        end if
+        do i = 1, size(lines)
+            deck%lines(i) = lines(i)
         end do
         allocate (st%cards(16), st%load_cards(0), st%sweeps(0), st%sweep_cards(0))
         allocate (st%m%loads(0))
-        call scan_lines(st, text_lines)
+        call scan_lines(st, lines)
         call read_model_card(st)
         call check_card_set(st)
         call read_cards(st)
@@ -286,8 +296,11 @@ contains
         st%last_line = size(text_lines)
         lines: do i = 1, size(text_lines)
             if (len_trim(text_lines(i)) == 0) cycle lines
+            if (is_comment(text_lines(i))) then
+                call check_comment(st, i, text_lines(i))
+                cycle lines
+            end if
             if (.not. line_is_clean(st, i, text_lines(i))) cycle lines
-            if (is_comment(text_lines(i))) cycle lines
             if (st%end_line > 0) then
                 call add_diagnostic(st%diag, i, 1, len_trim(text_lines(i)), 'card after END '// &
                     '(line '//int_text(st%end_line)//'): one problem per deck, END is the '// &
@@ -311,6 +324,29 @@ contains
         end if
     end function is_comment
 
+    !> A comment may hold any text (UTF-8 too) but no TAB or control character, in at most 80
+    !! characters (counted as characters, not bytes: a UTF-8 continuation byte adds none).
+    subroutine check_comment(st, i, text)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: text
+        integer :: c, n_chars, code
+        n_chars = 0
+        chars: do c = 1, len_trim(text)
+            code = iachar(text(c:c))
+            if (code == 9 .or. code < 32 .or. code == 127) then
+                call add_diagnostic(st%diag, i, c, c, merge('TAB character    ', &
+                    'control character', code == 9)//' in a comment (column '//int_text(c)// &
+                    '): use blanks', echo_text(text))
+                return
+            end if
+            if (code < 128 .or. code >= 192) n_chars = n_chars + 1   ! not a continuation byte
+        end do chars
+        if (n_chars > card_width) call add_diagnostic(st%diag, i, card_width + 1, &
+            len_trim(text), 'comment is '//int_text(n_chars)//' characters long; a card '// &
+            'has at most 80', echo_text(text))
+    end subroutine check_comment
+
     !> TAB, control characters and cards longer than 80 columns are errors of the line.
     logical function line_is_clean(st, i, text)
         type(state_t), intent(inout) :: st
@@ -331,6 +367,13 @@ contains
             int_text(tab)//': cards have fixed columns, use blanks', echo_text(text))
         if (ctrl > 0) call add_diagnostic(st%diag, i, ctrl, ctrl, 'control character (code '// &
             int_text(iachar(text(ctrl:ctrl)))//') in column '//int_text(ctrl), echo_text(text))
+        c = scan(text(1:n), non_ascii())
+        if (c > 0) then
+            call add_diagnostic(st%diag, i, c, c, 'non-ASCII character in column '// &
+                int_text(c)//': cards hold ASCII only (a comment, * in column 1, may hold '// &
+                'any text)', echo_text(text))
+            ctrl = c
+        end if
         if (n > max_line_kept) then
             call add_diagnostic(st%diag, i, card_width + 1, max_line_kept, 'card is more '// &
                 'than '//int_text(max_line_kept)//' columns long; a card has at most 80 '// &
@@ -341,6 +384,15 @@ contains
         end if
         line_is_clean = tab == 0 .and. ctrl == 0 .and. n <= card_width
     end function line_is_clean
+
+    !> The bytes 128-255.
+    pure function non_ascii() result(set)
+        character(len=128) :: set
+        integer :: k
+        do k = 1, 128
+            set(k:k) = achar(127 + k)
+        end do
+    end function non_ascii
 
     !> Identify the card name of a clean line (columns 1-10) and record the card.
     subroutine classify_card(st, i, text)
@@ -359,14 +411,19 @@ contains
         p = index(name, ' ')
         if (p == 0) p = name_width + 1
         id = card_id(to_upper(name(1:p - 1)))
-        if (id == 0) then
+        if (id == 0 .and. index('#!/', name(1:1)) > 0) then
+            call add_diagnostic(st%diag, i, 1, 1, 'unknown card '''//trim(name)//''': a '// &
+                'comment starts with * or $ in column 1, or C and a blank (# and ! are not '// &
+                'comment marks)', echo_text(card))
+        else if (id == 0) then
             call add_diagnostic(st%diag, i, 1, len_trim(name), 'unknown card '''//trim(name)// &
                 ''' (expected '//card_list//')', echo_text(card))
         else if (len_trim(name(p:)) > 0) then
             p = p - 1 + verify(name(p:), ' ')
             call add_diagnostic(st%diag, i, p, name_width, trim(card_names(id))//': text '''// &
-                trim(name(p:))//''' in columns '//int_text(p)//'-10 belongs in the fields, '// &
-                'which start in column 11', echo_text(card))
+                trim(name(p:))//''' in columns '//int_text(p)//'-10 belongs in the fields; '// &
+                field_hint, echo_text(card))
+            if (st%unreadable_line(id) == 0) st%unreadable_line(id) = i
         else if (st%first_line(id) > 0 .and. id /= C_LOAD .and. id /= C_SWEEP) then
             call add_diagnostic(st%diag, i, 1, len_trim(name), 'duplicate '// &
                 trim(card_names(id))//' card (first given at line '// &
@@ -431,7 +488,8 @@ contains
         integer :: k, s
         k = first_card(st, C_MODEL)
         if (k == 0) then
-            call deck_error(st, 'missing MODEL card (expected MODEL BEAM or MODEL PLATE)')
+            if (missing(st, C_MODEL)) call deck_error(st, 'missing MODEL card (expected '// &
+                                                      'MODEL BEAM or MODEL PLATE)')
             return
         end if
         call take_word(st, st%cards(k), 1, 'MODEL kind', 'BEAM PLATE', .true., word, s)
@@ -463,14 +521,14 @@ contains
                             'or GEOMETRY, STRUCTURE and SOIL (physical data)')
         else
             do k = 1, 3
-                if (st%first_line(physical(k)) == 0) call deck_error(st, 'missing '// &
+                if (missing(st, physical(k))) call deck_error(st, 'missing '// &
                     trim(card_names(physical(k)))//' card (a physical deck needs GEOMETRY, '// &
                     'STRUCTURE and SOIL)')
             end do
         end if
-        if (st%first_line(C_FRICTION) == 0) call deck_error(st, 'missing FRICTION card '// &
+        if (missing(st, C_FRICTION)) call deck_error(st, 'missing FRICTION card '// &
             '(FRICTION f eps_bar; f = 0 for a frictionless interface)')
-        if (st%first_line(C_LOAD) == 0) call deck_error(st, 'missing LOAD card (at least '// &
+        if (missing(st, C_LOAD)) call deck_error(st, 'missing LOAD card (at least '// &
             'one load is required)')
         if (st%end_line == 0 .and. st%last_line == 0) then
             call deck_error(st, 'missing END card (the deck is empty)')
@@ -479,6 +537,14 @@ contains
                             int_text(st%last_line)//' without END)')
         end if
     end subroutine check_card_set
+
+    !> No card of this kind, not even one whose name line could not be read (that one has its
+    !! own error already; a second 'missing' error would mislead).
+    pure logical function missing(st, id)
+        type(state_t), intent(in) :: st
+        integer, intent(in) :: id
+        missing = st%first_line(id) == 0 .and. st%unreadable_line(id) == 0
+    end function missing
 
     !> Second pass: read every card's fields.
     subroutine read_cards(st)
@@ -1080,7 +1146,10 @@ contains
         real(dp) :: x
         integer :: s
         call read_real_field(field_text(cd%text, j), x, s)
-        if (s == FIELD_BAD) then
+        if (s == FIELD_BAD .and. index(field_value(cd, j), ' ') > 0) then
+            call field_error(st, cd, j, what//': expected one number, got '''// &
+                             field_value(cd, j)//'''; '//field_hint)
+        else if (s == FIELD_BAD) then
             call field_error(st, cd, j, what//': expected a finite number such as 0.3, '// &
                              '30.0E6 or 1.0D-6, got '''//field_value(cd, j)//'''')
         else if (s == FIELD_RANGE) then
