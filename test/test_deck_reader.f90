@@ -74,6 +74,7 @@ contains
                  new_unittest('utf8_comment_width_and_bom', test_utf8_bom), &
                  new_unittest('non_ascii_in_card', test_non_ascii_card), &
                  new_unittest('hash_comment_hint', test_hash_hint), &
+                 new_unittest('pressure_load_kind', test_pressure_load), &
                  new_unittest('free_format_hint', test_free_format), &
                  new_unittest('fuzz_odd_lines', test_fuzz_lines), &
                  new_unittest('fuzz_random_bytes', test_fuzz_random)]
@@ -855,6 +856,35 @@ contains
                           'character in column 25'], err)
     end subroutine test_non_ascii_card
 
+    !> LOAD PRESSURE q x1 x2 is a PATCH of total q (x2 - x1) on a beam (100 kN/m over 2 m:
+    !! 200 kN, with q_x 10 kN/m: 20 kN) and q pi (x2^2 - x1^2) on a plate (50 kPa over the disk
+    !! r <= 2 m: 200 pi kN); q_x on a plate is an error.
+    subroutine test_pressure_load(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        character(len=w), allocatable :: lines(:)
+        lines = beam_physical()
+        lines(6) = card('LOAD', 'PRESSURE', '100.0', '10.0', '-1.0', '1.0')
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, deck%base%loads(1)%kind == LOAD_PATCH, 'PRESSURE is not a patch')
+        if (allocated(err)) return
+        call check_close(err, deck%base%loads(1)%fz, 200.0_dp, 1.0e-14_dp, 0.0_dp, 'beam total')
+        if (allocated(err)) return
+        call check_close(err, deck%base%loads(1)%fx, 20.0_dp, 1.0e-14_dp, 0.0_dp, 'beam F_x')
+        if (allocated(err)) return
+        lines = plate_physical()
+        lines(6) = card('LOAD', 'PRESSURE', '50.0', '', '0.0', '2.0')
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check_close(err, deck%base%loads(1)%fz, 200.0_dp*acos(-1.0_dp), 1.0e-14_dp, 0.0_dp, &
+                         'plate total')
+        if (allocated(err)) return
+        lines(6) = card('LOAD', 'PRESSURE', '50.0', '5.0', '0.0', '2.0')
+        call expect_error(lines, [character(len=80) :: 'test/bad.dat:6:31-40:', &
+                          'cannot carry a horizontal force'], err)
+    end subroutine test_pressure_load
+
     !> '#' or '!' in column 1: an unknown card with a hint on the comment marks.
     subroutine test_hash_hint(err)
         type(error_t), allocatable, intent(out) :: err
@@ -911,7 +941,7 @@ contains
         if (allocated(err)) return
         lines(6) = card('LOAD', '', '1000.0')
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:6:11-20: LOAD kind is '// &
-                          'required', 'POINT, PATCH, MOMENT, RING or RADIAL'], err)
+                          'required', 'POINT, PATCH, PRESSURE, MOMENT, RING or RADIAL'], err)
     end subroutine test_blank_required
 
     subroutine test_missing_end(err)

@@ -28,7 +28,7 @@
 !!
 !! SWEEP cases are numbered 1..case_count with the last SWEEP card varying fastest.
 module deck_reader
-    use kinds, only: dp
+    use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_INPUT, EXIT_INTERNAL
     use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
                      LOAD_PATCH, LOAD_MOMENT, LOAD_RING
@@ -726,8 +726,8 @@ contains
         n_before = st%diag%n
         associate (cd => st%cards(k))
             ld%line = cd%line
-            call take_word(st, cd, 1, 'LOAD kind', 'POINT PATCH MOMENT RING RADIAL', .true., &
-                           word, s)
+            call take_word(st, cd, 1, 'LOAD kind', 'POINT PATCH PRESSURE MOMENT RING RADIAL', &
+                           .true., word, s)
             call read_load_numbers(st, cd, word, ld)
             if (s == FIELD_OK .and. st%kind_known) call check_load_on_model(st, cd, word, ld)
             call check_unused(st, cd, 5)
@@ -747,7 +747,7 @@ contains
         character(len=*), intent(in) :: word    !! load kind ('' if unreadable)
         type(load_t), intent(inout) :: ld
         logical :: patch
-        patch = word == 'PATCH' .or. word == 'RADIAL'
+        patch = word == 'PATCH' .or. word == 'RADIAL' .or. word == 'PRESSURE'
         select case (word)
         case ('POINT', 'MOMENT')
             ld%kind = merge(LOAD_MOMENT, LOAD_POINT, word == 'MOMENT')
@@ -756,7 +756,12 @@ contains
         case default
             ld%kind = LOAD_PATCH
         end select
-        if (word == 'RADIAL') then
+        if (word == 'PRESSURE') then
+            call take_real(st, cd, 2, 'LOAD q_z (vertical load per unit length (beam) or area '// &
+                           '(plate))', 0, .true., ld%fz)
+            call take_real(st, cd, 3, 'LOAD q_x (horizontal load per unit length)', 0, .false., &
+                           ld%fx)
+        else if (word == 'RADIAL') then
             call take_real(st, cd, 2, 'LOAD F_z (total vertical force)', 0, .false., ld%fz)
             call take_real(st, cd, 3, 'LOAD F_x (total radial traction of the annulus)', 0, &
                            .true., ld%fx)
@@ -770,8 +775,8 @@ contains
         if (patch .or. len_trim(word) == 0) then
             call take_real(st, cd, 5, 'LOAD x2 (end of the patch)', 0, patch, ld%x2)
         else
-            call forbid_field(st, cd, 5, 'LOAD x2 is used only by PATCH and RADIAL; it must '// &
-                              'be blank for '//trim(word))
+            call forbid_field(st, cd, 5, 'LOAD x2 is used only by PATCH, PRESSURE and RADIAL; '// &
+                              'it must be blank for '//trim(word))
         end if
     end subroutine read_load_numbers
 
@@ -785,6 +790,7 @@ contains
             'no horizontal force: LOAD F_x must be blank or 0')
         if (word == 'RADIAL' .and. ld%fz /= 0.0_dp) call field_error(st, cd, 2, 'a RADIAL load '// &
             'is a radial top traction only: LOAD F_z must be blank or 0')
+        if (word == 'PRESSURE') call pressure_to_patch(st%m%kind, ld)
         if (st%m%kind == MODEL_BEAM) then
             if (word == 'RING' .or. word == 'RADIAL') call field_error(st, cd, 1, trim(word)// &
                 ' is a plate load; a beam takes POINT, PATCH or MOMENT')
@@ -803,6 +809,21 @@ contains
             field_value(cd, 4)//' (a load on the circle r = x1 is LOAD RING)')
         if (word == 'RADIAL') ld%fz = 0.0_dp
     end subroutine check_load_on_model
+
+    !> LOAD PRESSURE gives intensities; the model keeps a PATCH of the same totals: q (x2 - x1)
+    !! on the beam (force per length), q pi (x2^2 - x1^2) on the plate (force per area).
+    pure subroutine pressure_to_patch(kind, ld)
+        integer, intent(in) :: kind
+        type(load_t), intent(inout) :: ld
+        real(dp) :: extent
+        if (kind == MODEL_BEAM) then
+            extent = ld%x2 - ld%x1
+        else
+            extent = pi*(ld%x2**2 - ld%x1**2)
+        end if
+        ld%fz = ld%fz*extent
+        ld%fx = ld%fx*extent
+    end subroutine pressure_to_patch
 
     !> SWEEP name v1 .. v6: accepted (appended) only when the card has no error.
     subroutine read_sweep(st, k)
