@@ -11,6 +11,7 @@ module test_deck_reader
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck, case_count, case_model, &
                            default_deck_lines
+    use plausibility, only: input_warnings, settlement_warnings, warning_length
     implicit none
     private
     public :: collect_deck_reader
@@ -75,6 +76,7 @@ contains
                  new_unittest('non_ascii_in_card', test_non_ascii_card), &
                  new_unittest('hash_comment_hint', test_hash_hint), &
                  new_unittest('pressure_load_kind', test_pressure_load), &
+                 new_unittest('plausibility_warnings', test_plausibility), &
                  new_unittest('free_format_hint', test_free_format), &
                  new_unittest('fuzz_odd_lines', test_fuzz_lines), &
                  new_unittest('fuzz_random_bytes', test_fuzz_random)]
@@ -884,6 +886,35 @@ contains
         call expect_error(lines, [character(len=80) :: 'test/bad.dat:6:31-40:', &
                           'cannot carry a horizontal force'], err)
     end subroutine test_pressure_load
+
+    !> Issue 9's plausible slips: FRICTION 30.0 (an angle: tan 30 degrees = 0.577), E in GPa
+    !! with E_f in MPa (30 and 30: E/E_f = 1), a settlement beyond the thickness (0.6 m on a
+    !! 0.5 m beam): warnings, and none for the sound example deck.
+    subroutine test_plausibility(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        character(len=w), allocatable :: lines(:)
+        character(len=warning_length), allocatable :: warn(:)
+        lines = beam_physical()
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        warn = [input_warnings(deck%base), settlement_warnings(deck%base, 0.01_dp)]
+        call check(err, size(warn) == 0, 'a sound deck got a warning')
+        if (allocated(err)) return
+        lines(5) = card('FRICTION', '30.0')
+        lines(3) = card('STRUCTURE', '30.0', '0.2')
+        lines(4) = card('SOIL', '30.0', '0.3')
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        warn = input_warnings(deck%base)
+        call check(err, size(warn) == 2, 'expected two warnings')
+        if (allocated(err)) return
+        call check(err, index(warn(1), 'f = 0.577') > 0 .and. index(warn(2), 'E/E_f') > 0, &
+                   'warning text: '//trim(warn(1))//' / '//trim(warn(2)))
+        if (allocated(err)) return
+        warn = settlement_warnings(deck%base, 0.6_dp)
+        call check(err, size(warn) == 1, 'a settlement of 0.6 m on a 0.5 m beam: no warning')
+    end subroutine test_plausibility
 
     !> '#' or '!' in column 1: an unknown card with a hint on the comment marks.
     subroutine test_hash_hint(err)
