@@ -2,11 +2,19 @@
 !! Exit status: 0 solved, 1 input or file error, 2 analysis failed, 3 internal error.
 program fricon
     use iso_fortran_env, only: error_unit, output_unit
+    use iso_c_binding, only: c_int
     use errors, only: error_t, EXIT_OK
     use gsl_wrappers, only: gsl_start
     use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines
     use analysis_driver, only: run_analysis
     implicit none
+    interface
+        ! void exit(int status);  (the C library: ends without the runtime's "STOP n" line)
+        subroutine c_exit(status) bind(c, name='exit')
+            import :: c_int
+            integer(c_int), value :: status
+        end subroutine c_exit
+    end interface
     type(deck_t) :: deck
     type(error_t), allocatable :: err
     character(len=80), allocatable :: lines(:)
@@ -46,19 +54,12 @@ contains
         dir = 'output/'//deck_path(i + 6:j - 1)
     end function output_directory
 
-    !> Fortran 2008 allows only constant stop codes, hence the select.
+    !> Flush and end with the exit status, without the runtime's "STOP n" line on standard
+    !! error (a Fortran STOP with a code prints one).
     subroutine finish(code)
         integer, intent(in) :: code
         flush (output_unit)
-        select case (code)
-        case (EXIT_OK)
-            stop
-        case (1)
-            stop 1
-        case (2)
-            stop 2
-        case default
-            stop 3
-        end select
+        flush (error_unit)
+        call c_exit(int(code, c_int))
     end subroutine finish
 end program fricon
