@@ -13,6 +13,7 @@ module analysis_driver
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
                              write_plot_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
+    use plausibility, only: warning_length, input_warnings, settlement_warnings
     implicit none
     private
 
@@ -23,6 +24,7 @@ module analysis_driver
         real(dp) :: rho = 0.0_dp
         integer :: n_outer = 0, n_inner = 0
         type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
+        character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
     end type case_result_t
 
     public :: run_analysis, solve_case
@@ -40,7 +42,7 @@ contains
         character(len=200), allocatable :: labels(:)
         type(case_result_t), allocatable :: results(:)
         type(error_t), allocatable :: err
-        integer :: i, n
+        integer :: i, n, k
         character(len=:), allocatable :: name, label
 
         n = case_count(deck)
@@ -71,6 +73,10 @@ contains
             end if
             if (len(results(i)%message) > 0 .and. results(i)%status == EXIT_OK) &
                 write (err_unit, '(a)') 'WARNING: '//name//': '//results(i)%message
+            do k = 1, size(results(i)%warnings)
+                write (err_unit, '(a)') 'WARNING: '//name//' ('//deck%path//'): '// &
+                    trim(results(i)%warnings(k))
+            end do
             status = max(status, results(i)%status)
         end do cases_loop
         if (n > 1) then
@@ -110,6 +116,7 @@ contains
         result%label = label
         result%message = ''
         result%rho = relative_stiffness(m)
+        result%warnings = input_warnings(m)
         call new_discretization(m, d, err)
         if (.not. allocated(err)) call solve_contact(m, d, sol, err)
         result%n_outer = sol%n_outer
@@ -120,12 +127,14 @@ contains
             result%message = err%message
             call remove_stale(base)
             call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, &
-                              err%message, '', err_report)
+                              err%message, report_notes(result%warnings, ''), err_report)
             call write_summary_json(base//'.json', name, deck%path, m, err%code, err%message, &
                                     s, sol, tab, err_report)
             return
         end if
         s = summarise(m, sol, tab)
+        result%warnings = [character(len=warning_length) :: result%warnings, &
+                           settlement_warnings(m, s%w_max%value)]
         result%entries = summary_entries(m, s, contact_extent(tab, m%length))
         call write_data_file(base//'.dat', m, tab, err)
         if (.not. allocated(err) .and. .not. m%nondim) call write_physical_csv(base//'.csv', m, &
@@ -133,7 +142,7 @@ contains
         if (.not. allocated(err)) call write_summary_json(base//'.json', name, deck%path, m, &
                                                           EXIT_OK, '', s, sol, tab, err)
         if (.not. allocated(err)) call write_plot_script(base//'.gp', base//'.dat', &
-                                                         base//'.png', m, err)
+                                                         base//'.png', m, err, label, s)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
@@ -142,12 +151,24 @@ contains
         call render_png(base, m, note)
         result%message = note
         call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, '', &
-                          note, err)
+                          report_notes(result%warnings, note), err)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
         end if
     end subroutine solve_case
+
+    !> The report's closing lines: each warning, then the note (if any).
+    pure function report_notes(warnings, note) result(lines)
+        character(len=*), intent(in) :: warnings(:), note
+        character(len=warning_length + 10), allocatable :: lines(:)
+        integer :: k
+        allocate (lines(size(warnings) + merge(1, 0, len_trim(note) > 0)))
+        do k = 1, size(warnings)
+            lines(k) = 'WARNING: '//warnings(k)
+        end do
+        if (len_trim(note) > 0) lines(size(lines)) = 'NOTE: '//note
+    end function report_notes
 
     !> Results of an earlier run of the same case that a failed run must not leave beside its
     !! ANALYSIS FAILED report.

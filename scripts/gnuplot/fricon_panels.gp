@@ -4,20 +4,23 @@
 #   0: the whitespace .dat with '#' comments),
 #   column numbers c_x c_w c_gap c_p c_s c_state c_m c_mt c_q c_slip c_n c_nt (0: no such column;
 #   taken by fricon from its station column table),
-#   axis labels lab_x lab_w lab_p lab_s lab_m lab_q lab_slip lab_n and legend names key_w key_p
+#   axis labels lab_x lab_w lab_p lab_s lab_m (lab_mr, lab_mt: sweep) lab_q lab_slip lab_n,
+#   legend names key_w key_p
 #   key_s key_m key_mt key_q key_slip key_n key_nt, the pressure unit p_unit,
 #   line_width (beam width b: right axis of the pressure panel in line load; 0: none), lab_line,
-#   p_mean (mean contact pressure V / contact area, plotted unit), clip_factor, edge_d (the
-#   summary's edge distance, plotted unit), friction (f),
+#   p_mean (mean contact pressure V / contact area, plotted unit), clip_factor, clip_inner,
+#   edge_d (the summary's edge distance, plotted unit), friction (f),
 #   n_loads and the arrays load_kind ('P' point, 'M' moment, 'R' ring, 'D' patch), load_x1,
 #   load_x2 (plotted unit).
 #
 # Clip rule (pressure panel): the curve is clipped at
-#   p_clip = max(clip_factor * p_mean, largest station pressure at least edge_d from a free edge)
+#   p_clip = max(clip_factor * p_mean, clip_inner * largest station pressure at least edge_d
+#            from a free edge)
 # so only the edge spike within edge_d of an edge (where the singularity of the half-space and
-# the mesh decide the value) is cut; a clipped station is drawn as a red triangle on the clip
-# line and the true peak of each end is written beside it. The shear traction is clipped the
-# same way at max(f * p_clip, largest |traction| at least edge_d from a free edge).
+# the mesh decide the value) can be cut, and every pressure away from the edges stays whole;
+# a clipped station is drawn as a red triangle on the clip line and the true peak of each end
+# is written beside it. The shear traction is clipped the same way at
+# max(f * p_clip, clip_inner * largest |traction| at least edge_d from a free edge).
 
 set terminal pngcairo size 1600,1100 font 'Sans,11' noenhanced
 set output png
@@ -31,14 +34,14 @@ x_hi = STATS_max
 is_beam = (model eq 'BEAM')
 near_edge(x) = (x > x_hi - edge_d) || (is_beam && x < x_lo + edge_d)
 stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : column(c_p)) nooutput
-p_inner = STATS_max
+p_inner = clip_inner*STATS_max
 stats data skip skip_rows u c_x:c_p nooutput
 p_top = STATS_max_y
 p_clip = (clip_factor*p_mean > p_inner) ? clip_factor*p_mean : p_inner
-p_rule = (clip_factor*p_mean > p_inner) ? sprintf('%g x mean %.4g', clip_factor, p_mean) : 'largest value away from the edges'
+p_rule = (clip_factor*p_mean > p_inner) ? sprintf('%g x mean %.4g', clip_factor, p_mean) : sprintf('%g x largest value away from the edges', clip_inner)
 p_cut = (p_top > p_clip*1.0001)
 stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : abs(column(c_s))) nooutput
-s_inner = STATS_max
+s_inner = clip_inner*STATS_max
 stats data skip skip_rows u (abs(column(c_s))) nooutput
 s_top = STATS_max
 s_clip = (friction*p_clip > s_inner) ? friction*p_clip : s_inner
@@ -77,8 +80,15 @@ do for [k=1:n_loads] {
         set arrow 101+2*k from first load_x1[k], graph 1 to first load_x1[k], graph 0.93 head filled size graph 0.012,25 front lw 2 lc rgb c_load
     }
 }
-load_text(k) = (load_kind[k] eq 'P') ? 'point load' : (load_kind[k] eq 'R') ? 'ring load' : \
-               (load_kind[k] eq 'M') ? 'moment' : 'patch load'
+# the kind of each concentrated load, written beside its arrow on the settlement panel
+load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] eq 'R') ? 'ring' : (load_kind[k] eq 'M') ? 'M' : ''
+do for [k=1:n_loads] {
+    if (load_kind[k] eq 'M') {
+        set label 300+k load_word(k) at first load_x1[k], graph 0.955 right offset -0.6,0 front tc rgb c_load
+    } else {
+        set label 300+k load_word(k) at first load_x1[k], graph 0.955 left offset 0.6,0 front tc rgb c_load
+    }
+}
 
 set multiplot layout 3,2 title title."\n" font 'Sans,14'
 set grid
@@ -103,6 +113,7 @@ plot data skip skip_rows u c_x:c_w w lp pt 7 ps 0.45 lw 2 lc rgb '#1f77b4' t key
      '' skip skip_rows u c_x:(column(c_w) + column(c_gap)) w l dt 2 lw 1.5 lc rgb '#404040' t 'soil surface', \
      @dummy_zone, @dummy_load
 set yrange [*:*] noreverse
+do for [k=1:n_loads] { unset label 300+k }
 
 # 2 contact pressure, edge spike clipped and marked
 set title p_cut ? sprintf('Contact pressure (clipped at %.4g %s: %s)', p_clip, p_unit, p_rule) : 'Contact pressure'
@@ -115,11 +126,11 @@ if (line_width > 0) {
 }
 if (p_cut) {
     stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? 1/0 : column(c_p)) nooutput
-    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip right offset -0.8,-0.2 front tc rgb '#c00000'
+    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip right offset -1.5,-1.1 front tc rgb '#c00000'
     if (is_beam) {
         stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? column(c_p) : 1/0) nooutput
         if (STATS_max_y > p_clip*1.0001) {
-            set label 202 sprintf(' peak %.4g %s', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip left offset 0.8,-0.2 front tc rgb '#c00000'
+            set label 202 sprintf(' peak %.4g %s', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip left offset 1.5,-1.1 front tc rgb '#c00000'
         }
     }
 }
@@ -170,6 +181,9 @@ plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc rgb '#17becf' t key
 # 6 slip (left axis) and membrane / axial force (right axis)
 set title 'Interface slip and axial force'
 set ylabel lab_slip
+stats data skip skip_rows u (abs(column(c_w))) nooutput
+slip_span = 0.01*STATS_max
+set yrange [*<-slip_span:slip_span<*]
 set y2label lab_n
 set y2tics
 set ytics nomirror

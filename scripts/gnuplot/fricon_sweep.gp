@@ -9,8 +9,9 @@
 # Without the case settings (e.g. scripts/paper.sh) the files are nondimensional .dat files
 # in the column layout of README (t U W Psi Sigma_x Sigma_z gap slip state, then resultants).
 # A variable png_override (gnuplot -e) replaces PNG (fricon renders to a temporary name).
-# Pressure clip: max(clip_factor * largest mean pressure of the cases, largest station pressure
-# at least edge_d from a free edge over all cases); clipped stations are marked.
+# Pressure clip (the rule of fricon_panels.gp over all cases): max(clip_factor * the largest
+# mean pressure of the cases, clip_inner * the largest station pressure at least edge_d from a
+# free edge); clipped stations are marked with a triangle on the clip line.
 png = exists("png_override") ? png_override : ARG1
 title = ARG2
 model = ARG3
@@ -22,11 +23,13 @@ if (!exists("c_x")) {
     lab_x = is_beam ? 't = x/l' : 't = r/a'
     lab_w = 'settlement W'; lab_p = 'contact pressure Sigma_z'; lab_s = 'shear traction Sigma_x'
     lab_slip = 'slip'
-    lab_m = is_beam ? 'bending moment M/(Fl)' : 'moments M_r/F, M_theta/F'
+    lab_mr = is_beam ? 'bending moment M/(Fl)' : 'radial moment M_r/F'
+    lab_mt = 'hoop moment M_theta/F'
     lab_q = is_beam ? 'shear force Q/F' : 'radial shear force Q_r*a/F'
     key_mt = 'M_theta/F'
     p_unit = ''
-    clip_factor = 2.5
+    clip_factor = 1.5
+    clip_inner = 1.25
     edge_d = 0
     n_loads = 0
 }
@@ -50,7 +53,7 @@ do for [i=1:n] {
     stats f skip skip_rows u c_x nooutput
     x_lo = STATS_min; x_hi = STATS_max
     stats f skip skip_rows u ((column(c_x) > x_hi - edge_d || (is_beam && column(c_x) < x_lo + edge_d)) ? 0 : column(c_p)) nooutput
-    if (STATS_max > p_clip) { p_clip = STATS_max }
+    if (clip_inner*STATS_max > p_clip) { p_clip = clip_inner*STATS_max }
     stats f skip skip_rows u c_p nooutput
     if (STATS_max > p_top) { p_top = STATS_max }
     if (words(p_means) >= i) { if (clip_factor*real(word(p_means, i)) > p_clip) { p_clip = clip_factor*real(word(p_means, i)) } }
@@ -71,7 +74,7 @@ do for [k=1:n_loads] {
 
 # ---- layout: six panels, one legend below them all -------------------------------------------
 key_rows = int((n + 3)/4)
-bottom = 0.05 + 0.028*key_rows
+bottom = 0.05 + 0.032*key_rows
 set multiplot layout 3,2 title title font 'Sans,14' margins 0.07,0.97,bottom,0.91 spacing 0.08,0.09
 set grid
 set format y '%g'
@@ -83,7 +86,7 @@ zero_line = "0 w l lw 1 lc rgb '#606060' notitle"
 set title 'Settlement (down positive)'
 set ylabel lab_w
 set yrange [*:*] reverse
-set key at screen 0.5, 0.012 center bottom horizontal maxrows key_rows width 2 samplen 3 font ',10' box opaque
+set key at screen 0.5, 0.012 center bottom horizontal maxrows key_rows width 2 samplen 3 spacing 1.25 font ',10' box opaque
 plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_w w l lw 2 lc rgb colour(i) dt dash(i) t word(labels, i)
 set yrange [*:*] noreverse
 unset key
@@ -99,12 +102,12 @@ set ylabel lab_s
 plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
 
 set title 'Bending moment '.(c_mt > 0 ? 'M_r' : 'M').' (> 0 hogging)'
-set ylabel lab_m
+set ylabel lab_mr
 plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_m w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
 
 if (c_mt > 0) {
     set title 'Hoop moment M_theta (> 0 hogging)'
-    set ylabel lab_m
+    set ylabel lab_mt
     plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_mt w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
 } else {
     set title 'Interface slip'

@@ -326,12 +326,17 @@ contains
             call put_text('lab_m', heading(pick('M', '', 'M/(Fl)'), 'bending moment'))
             call put_text('lab_q', heading(pick('Q', '', 'Q/F'), 'shear force'))
             call put_text('lab_n', heading(pick('N', '', 'N/F'), 'axial force'))
+            call put_text('lab_mr', heading(pick('M', '', 'M/(Fl)'), 'bending moment'))
+            call put_text('lab_mt', '')
         else
             call put_text('lab_m', heading(pick('', 'M_r', 'M_r/F'), 'moments', &
                                            pick('', 'M_r, M_theta', 'M_r/F, M_theta/F')))
             call put_text('lab_q', heading(pick('', 'Q_r', 'Q_r*a/F'), 'radial shear force'))
             call put_text('lab_n', heading(pick('', 'N_r', 'N_r*a/F'), 'membrane forces', &
                                            pick('', 'N_r, N_theta', 'N_r*a/F, N_theta*a/F')))
+            call put_text('lab_mr', heading(pick('', 'M_r', 'M_r/F'), 'radial moment'))
+            call put_text('lab_mt', heading(pick('', 'M_t', 'M_t/F'), 'hoop moment', &
+                                            pick('', 'M_theta', 'M_theta/F')))
         end if
         call put_text('key_w', symbol_of(pick('w', 'w', 'W')))
         call put_text('key_p', symbol_of(pick('p_z', 'sigma_z', 'Sigma_z')))
@@ -359,10 +364,11 @@ contains
             call put_num('line_width', 0.0_dp)
             call put_text('lab_line', '')
         end if
-        write (u, '(a)') '# clip rule: p_clip = max(clip_factor p_mean, largest pressure at least edge_d'
-        write (u, '(a)') '# from a free edge); p_mean = V / contact area, edge_d = h (design summary)'
+        write (u, '(a)') '# clip rule: p_clip = max(clip_factor p_mean, clip_inner x the largest pressure'
+        write (u, '(a)') '# at least edge_d from a free edge); p_mean = V / contact area, edge_d = h'
         call put_num('p_mean', p_mean)
-        call put_num('clip_factor', 2.5_dp)
+        call put_num('clip_factor', 1.5_dp)
+        call put_num('clip_inner', 1.25_dp)
         call put_num('edge_d', m%h*xs)
         call put_num('friction', m%f)
         write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
@@ -486,8 +492,9 @@ contains
     end function shell_safe
 
     !> The text report. `failure` non-empty: ANALYSIS FAILED banner, log only.
-    subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, s, failure, note, err)
-        character(len=*), intent(in) :: path, deck_path, label, failure, note
+    subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, s, failure, notes, err)
+        character(len=*), intent(in) :: path, deck_path, label, failure
+        character(len=*), intent(in) :: notes(:)   !! 'WARNING: ...' and 'NOTE: ...' lines
         character(len=*), intent(in) :: lines(:)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -495,7 +502,7 @@ contains
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(in) :: s
         type(error_t), allocatable, intent(out) :: err
-        integer :: u
+        integer :: u, i
         call open_temporary(path, u, err)
         if (allocated(err)) return
         write (u, '(a)') repeat('=', 100)
@@ -519,7 +526,10 @@ contains
             call write_summary(u, m, s, tab)
             call write_checks(u, m, sol, tab, s)
         end if
-        if (len_trim(note) > 0) write (u, '(/,a)') ' NOTE: '//note
+        if (any(len_trim(notes) > 0)) write (u, '(a)') ''
+        do i = 1, size(notes)
+            if (len_trim(notes(i)) > 0) write (u, '(a)') ' '//trim(notes(i))
+        end do
         call commit_file(path, u, err)
     end subroutine write_report
 
