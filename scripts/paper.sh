@@ -59,7 +59,8 @@ param() { # param REPORT PATTERN -> the number at the end of the first matching 
     echo "# reports and data files. t = 0 is the beam's middle section or the plate's axis."
     echo "# w_soil = settlement at t = 0 in soil units w E_f L/((1-nu_f^2) F) = 2 W(0)/rho (plate,"
     echo "# L = a) or 32 W(0)/(pi rho) (beam, L = l). extent: contact region [t_min, t_max] of the"
-    echo "# stations in contact (state 1 or 2). dof: displacement unknowns (report 'unknowns')."
+    echo "# stations whose finite-element pressure Sigma_z^h is positive; Sigma_x, Sigma_z are the"
+    echo "# finite-element (nodal) values. dof: displacement unknowns (report 'unknowns')."
     printf '%-22s %-5s %-9s %-9s %-9s %-5s %-8s %-12s %-12s %-12s %-12s %-12s %-12s %-12s %-17s %s\n' \
         case model rho beta zeta f eps_bar 'W(0)' 'Sigma_x(0)' 'Sigma_z(0)' 'U(0)' \
         'max|Sigma_x|' 'max Sigma_z' w_soil extent dof
@@ -78,7 +79,7 @@ param() { # param REPORT PATTERN -> the number at the end of the first matching 
         awk -v name="$case_name" -v model="$model" -v rho="$rho" -v beta="${beta:--}" \
             -v zeta="$zeta" -v f="$f" -v eps="$eps" -v dof="$dof" '
             # columns by name from the header line of symbols; the tractions are the
-            # finite-element values Sigma_x^h, Sigma_z^h (the paper's nodal values)
+            # finite-element values Sigma_x^h, Sigma_z^h (the nodal values the paper prints)
             $1 == "#" && $2 == "t" { for (i = 2; i <= NF; i++) col[$i] = i - 1; next }
             /^#/ { next }
             $1 == t_prev && n > 0 { next }          # a load station listed twice
@@ -89,8 +90,8 @@ param() { # param REPORT PATTERN -> the number at the end of the first matching 
                 if (n == 0 || a < best) { best = a; w0 = W; sx0 = SX; sz0 = SZ; u0 = U }
                 sx = (SX < 0 ? -SX : SX); if (n == 0 || sx > mx) mx = sx
                 if (n == 0 || SZ > mz) mz = SZ
-                st = $(col["state"])
-                if (st == 1 || st == 2) { if (!c || t < lo) lo = t; if (!c || t > hi) hi = t; c = 1 }
+                # contact extent from the finite-element nodal pressure (as the paper reads it)
+                if (SZ > 0) { if (!c || t < lo) lo = t; if (!c || t > hi) hi = t; c = 1 }
                 n++
             }
             END {
@@ -229,7 +230,7 @@ errors() { # errors REF CASE [GRID] -> n L2(U W Sx Sz) L1(U W Sx Sz) L2in(W Sz)
 } >"$out/errors.txt"
 
 # ---------------------------------------------------------------------------------------
-# Cross-deck overlays (four panels W, Sigma_z, Sigma_x, U, as the sweep figures).
+# Cross-deck overlays (the six panels of the sweep figures; tractions: finite-element values).
 # ---------------------------------------------------------------------------------------
 overlay() { # overlay NAME TITLE "file label file label ..."
     local name=$1 title=$2 files="" labels="" gp
@@ -240,8 +241,16 @@ overlay() { # overlay NAME TITLE "file label file label ..."
     done
     [ -n "$files" ] || return 0
     gp="$out/$name.gp"
+    # the finite-element tractions Sigma_x^h, Sigma_z^h (what the interpolations compare),
+    # found by name in the header line of symbols of the first file
+    set -- $files
+    cols=$(awk '$1 == "#" && $2 == "t" { for (i = 2; i <= NF; i++) c[$i] = i - 1
+                                         print c["Sigma_x^h"], c["Sigma_z^h"]; exit }' "$1")
+    set -- $cols
     {
         echo "# cross-deck overlay written by scripts/paper.sh: gnuplot $gp (from the project root)"
+        echo "# tractions: the finite-element values Sigma_x^h (column $1), Sigma_z^h (column $2)"
+        echo "c_s = $1; c_p = $2"
         echo "files = \"${files# }\""
         echo "labels = \"${labels# }\""
         echo "call 'scripts/gnuplot/fricon_sweep.gp' '$out/$name.png' '$title' 'BEAM'"

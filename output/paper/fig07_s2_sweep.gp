@@ -1,4 +1,10 @@
 # fricon sweep figure: run from the project root as  gnuplot output/paper/fig07_s2_sweep.gp
+# columns, labels, units and loads: those of the first solved case
+settings_only = 1
+load 'output/paper/fig07_s2_001.gp'
+undefine settings_only
 files = "output/paper/fig07_s2_001.dat output/paper/fig07_s2_002.dat output/paper/fig07_s2_003.dat output/paper/fig07_s2_004.dat output/paper/fig07_s2_005.dat"
-labels = "RHO=0.00025 RHO=0.001 RHO=0.0025 RHO=0.01 RHO=0.1"
-call 'scripts/gnuplot/fricon_sweep.gp' 'output/paper/fig07_s2_sweep.png' 'Fig. 7: beam N_e 20, displacements P1, interactions S2 (sweep)' 'BEAM'
+labels = "'RHO=0.00025' 'RHO=0.001' 'RHO=0.0025' 'RHO=0.01' 'RHO=0.1'"
+# mean contact pressure V / contact area of each case (plotted unit)
+p_means = "1.5533981E+000 1.2598425E+000 1.0561056E+000 1.0000000E+000 1.0000000E+000"
+call 'scripts/gnuplot/fricon_sweep.gp' 'output/paper/fig07_s2_sweep.png' 'fricon: Fig. 7: beam N_e 20, displacements P1, interactions S2 (sweep)' 'BEAM'

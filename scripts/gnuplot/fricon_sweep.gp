@@ -7,7 +7,8 @@
 #   p_means = "v1 v2 ..."               (mean contact pressure of each case; optional)
 # and calls:  call 'scripts/gnuplot/fricon_sweep.gp' PNG TITLE MODEL
 # Without the case settings (e.g. scripts/paper.sh) the files are nondimensional .dat files
-# in the column layout of README (t U W Psi Sigma_x Sigma_z gap slip state, then resultants).
+# in the column layout of README (t U W Psi Sigma_x Sigma_z gap slip state, then resultants);
+# c_s and c_p, if defined, choose the shear-traction and pressure columns.
 # A variable png_override (gnuplot -e) replaces PNG (fricon renders to a temporary name).
 # Pressure clip (the rule of fricon_panels.gp over all cases): max(clip_factor * the largest
 # mean pressure of the cases, clip_inner * the largest station pressure at least edge_d from a
@@ -18,7 +19,10 @@ model = ARG3
 is_beam = (model eq 'BEAM')
 if (!exists("c_x")) {
     csv = 0
-    c_x = 1; c_w = 3; c_s = 5; c_p = 6; c_state = 9; c_slip = 8
+    c_x = 1; c_w = 3; c_state = 9; c_slip = 8
+    # the tractions may be chosen by the caller (scripts/paper.sh: the finite-element columns)
+    if (!exists("c_s")) { c_s = 5 }
+    if (!exists("c_p")) { c_p = 6 }
     if (is_beam) { c_m = 11; c_mt = 0; c_q = 12 } else { c_m = 12; c_mt = 13; c_q = 14 }
     lab_x = is_beam ? 't = x/l' : 't = r/a'
     lab_w = 'settlement W'; lab_p = 'contact pressure Sigma_z'; lab_s = 'shear traction Sigma_x'
