@@ -11,7 +11,7 @@ module analysis_driver
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries, entry_keys
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
-                             write_plot_script, write_report, shell_safe
+                             write_plot_script, write_sweep_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
     use plausibility, only: warning_length, input_warnings, settlement_warnings
     implicit none
@@ -22,6 +22,7 @@ module analysis_driver
         character(len=:), allocatable :: name, label, message
         integer :: status = EXIT_OK
         real(dp) :: rho = 0.0_dp
+        real(dp) :: mean_pressure = 0.0_dp         !! V / contact area [F/L^2] (figures)
         integer :: n_outer = 0, n_inner = 0
         type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
         character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
@@ -81,8 +82,8 @@ contains
         end do cases_loop
         if (n > 1) then
             call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', cases(1), results, err)
-            if (.not. allocated(err)) call write_sweep_plot(out_dir//'/'//deck%stem//'_sweep', &
-                                                            cases(1), results, err)
+            if (.not. allocated(err)) call write_sweep_plot(out_dir, deck%stem, cases, results, &
+                                                            err)
         end if
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//err%message
@@ -136,19 +137,19 @@ contains
         result%warnings = [character(len=warning_length) :: result%warnings, &
                            settlement_warnings(m, s%w_max%value)]
         result%entries = summary_entries(m, s, contact_extent(tab, m%length))
+        result%mean_pressure = s%mean_pressure
         call write_data_file(base//'.dat', m, tab, err)
         if (.not. allocated(err) .and. .not. m%nondim) call write_physical_csv(base//'.csv', m, &
                                                                                tab, err)
         if (.not. allocated(err)) call write_summary_json(base//'.json', name, deck%path, m, &
                                                           EXIT_OK, '', s, sol, tab, err)
-        if (.not. allocated(err)) call write_plot_script(base//'.gp', base//'.dat', &
-                                                         base//'.png', m, err, label, s)
+        if (.not. allocated(err)) call write_plot_script(base//'.gp', name, m, label, s, err)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
             return
         end if
-        call render_png(base, m, note)
+        call render_png(base, note)
         result%message = note
         call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, '', &
                           report_notes(result%warnings, note), err)
@@ -208,11 +209,10 @@ contains
         end do
     end function console_summary
 
-    !> gnuplot runs the case's script (base.gp, written by write_plot_script) and renders the
-    !! PNG to a temporary name, moved into place on success.
-    subroutine render_png(base, m, note)
+    !> gnuplot runs the figure script base.gp and renders the PNG to a temporary name, moved
+    !! into place on success; `note` says why a figure was not drawn.
+    subroutine render_png(base, note)
         character(len=*), intent(in) :: base
-        type(model_t), intent(in) :: m
         character(len=:), allocatable, intent(out) :: note
         integer :: exit_status, cmd_status
         note = ''
@@ -220,72 +220,48 @@ contains
             note = 'figure not rendered: the output path contains a quote'
             return
         end if
+        call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exit_status, &
+                                  cmdstat=cmd_status)
+        if (cmd_status /= 0 .or. exit_status /= 0) then
+            note = 'figure '//base//'.png not drawn: gnuplot is not installed (the script '// &
+                   base//'.gp is written; scripts/setup.sh installs gnuplot)'
+            return
+        end if
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
             ".gp' && mv -f '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
             cmdstat=cmd_status)
         if (cmd_status /= 0 .or. exit_status /= 0) then
-            note = 'figure '//base//'.png not rendered: gnuplot failed on '//base//'.gp ('// &
-                   trim(merge('data '//base//'.dat', 'data '//base//'.csv', m%nondim))// &
-                   ') or is not installed (run scripts/setup.sh; run fricon from the project root)'
+            note = 'figure '//base//'.png not drawn: gnuplot failed on '//base//'.gp'
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
     end subroutine render_png
 
-    !> output/STEM_sweep.gp (and .png): the solved cases overlaid (scripts/gnuplot/fricon_sweep.gp).
-    !! The columns, axis labels, units and load positions are those of the first solved case's
-    !! script (loaded with settings_only set: the cases of a sweep share them); this script adds
-    !! the data files (CSV for physical decks, .dat for NONDIM decks), the legend labels (the
-    !! swept values) and each case's mean contact pressure for the clip rule.
-    subroutine write_sweep_plot(base, m, results, err)
-        character(len=*), intent(in) :: base
-        type(model_t), intent(in) :: m
+    !> output/STEM_sweep.gp and .png: the solved cases overlaid (report_writer
+    !! write_sweep_script: the first solved case's settings, the case files, the legend labels
+    !! of the swept values and each case's mean contact pressure for the clip rule).
+    subroutine write_sweep_plot(out_dir, stem, cases, results, err)
+        character(len=*), intent(in) :: out_dir, stem
+        type(model_t), intent(in) :: cases(:)
         type(case_result_t), intent(in) :: results(:)
         type(error_t), allocatable, intent(out) :: err
-        character(len=:), allocatable :: files, labels, means, out_dir, first
-        character(len=32) :: buf
-        integer :: u, i, k, exit_status, cmd_status
-        if (index(base, "'") > 0 .or. index(base, '"') > 0) return
-        out_dir = base(1:index(base, '/', back=.true.))
-        files = ''
-        labels = ''
-        means = ''
-        first = ''
+        character(len=200), allocatable :: names(:), labels(:)
+        real(dp), allocatable :: means(:)
+        character(len=:), allocatable :: note
+        integer :: i, first
+        allocate (names(0), labels(0), means(0))
+        first = 0
         do i = 1, size(results)
             if (results(i)%status /= EXIT_OK) cycle
-            if (len(first) == 0) first = out_dir//results(i)%name//'.gp'
-            files = files//' '//out_dir//results(i)%name//trim(merge('.dat', '.csv', m%nondim))
-            labels = labels//' '//one_word(results(i)%label)
-            buf = '0'
-            if (allocated(results(i)%entries)) then
-                do k = 1, size(results(i)%entries)
-                    if (trim(results(i)%entries(k)%key) == 'pressure_mean') &
-                        write (buf, '(es15.7e3)') results(i)%entries(k)%value
-                end do
-            end if
-            means = means//' '//trim(adjustl(buf))
+            if (first == 0) first = i
+            names = [character(len=200) :: names, results(i)%name]
+            labels = [character(len=200) :: labels, one_word(results(i)%label)]
+            means = [means, results(i)%mean_pressure]
         end do
-        if (len(files) == 0) return
-        call open_temporary(base//'.gp', u, err)
+        if (first == 0) return
+        call write_sweep_script(out_dir//'/'//stem//'_sweep.gp', stem, cases(first), names, &
+                                labels, means, err)
         if (allocated(err)) return
-        write (u, '(a)') '# fricon sweep figure: run from the project root as  gnuplot '//base//'.gp'
-        write (u, '(a)') '# columns, labels, units and loads: those of the first solved case'
-        write (u, '(a)') 'settings_only = 1'
-        write (u, '(a)') "load '"//first//"'"
-        write (u, '(a)') 'undefine settings_only'
-        write (u, '(a)') 'files = "'//files(2:)//'"'
-        write (u, '(a)') 'labels = "'//labels(2:)//'"'
-        write (u, '(a)') '# mean contact pressure V / contact area of each case (plotted unit)'
-        write (u, '(a)') 'p_means = "'//means(2:)//'"'
-        write (u, '(a)') "call 'scripts/gnuplot/fricon_sweep.gp' '"//base//".png' 'fricon: "// &
-            trim(shell_safe(m%title))//" (sweep)' '"//trim(merge('BEAM ', 'PLATE', &
-            m%kind == MODEL_BEAM))//"'"
-        call commit_file(base//'.gp', u, err)
-        if (allocated(err)) return
-        call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
-            ".gp' && mv -f '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
-            cmdstat=cmd_status)
-        if (cmd_status /= 0 .or. exit_status /= 0) &
-            call execute_command_line("rm -f '"//base//".png.tmp'")
+        call render_png(out_dir//'/'//stem//'_sweep', note)
     end subroutine write_sweep_plot
 
     !> A sweep label as one quoted gnuplot word (for word() and the legend):

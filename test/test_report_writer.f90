@@ -7,6 +7,7 @@ module test_report_writer
     use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use deck_reader, only: deck_t, parse_deck
     use analysis_driver, only: run_analysis
+    use figure_templates, only: panel_template, sweep_template
     implicit none
     private
     public :: collect_report_writer
@@ -20,7 +21,8 @@ contains
         tests = [new_unittest('data_file_columns_and_equilibrium', test_data_file), &
                  new_unittest('input_error_writes_nothing', test_input_error), &
                  new_unittest('failed_case_report_only', test_failed_case), &
-                 new_unittest('sweep_summary', test_sweep)]
+                 new_unittest('sweep_summary', test_sweep), &
+                 new_unittest('embedded_templates_match', test_templates)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -184,4 +186,41 @@ contains
         close (u)
         call check(err, n == 5, 'summary should have a header and 4 rows')
     end subroutine test_sweep
+    !> The gnuplot templates embedded in the program (src/report/figure_templates.f90) are the
+    !! files scripts/gnuplot/*.gp line for line: after editing a template, run
+    !! scripts/embed_templates.sh.
+    subroutine test_templates(err)
+        type(error_t), allocatable, intent(out) :: err
+        call compare_file('scripts/gnuplot/fricon_panels.gp', panel_template(), err)
+        if (allocated(err)) return
+        call compare_file('scripts/gnuplot/fricon_sweep.gp', sweep_template(), err)
+    end subroutine test_templates
+
+    subroutine compare_file(path, lines, err)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: lines(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=1000) :: line
+        integer :: u, ios, n
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'cannot open '//path)
+        if (allocated(err)) return
+        n = 0
+        lines_loop: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit lines_loop
+            n = n + 1
+            if (n > size(lines)) exit lines_loop
+            if (trim(line) /= trim(lines(n))) exit lines_loop
+        end do lines_loop
+        close (u)
+        call check(err, ios /= 0 .and. n == size(lines), path//' differs from the embedded '// &
+                   'template at line '//trim(itoa(n))//': run scripts/embed_templates.sh')
+    end subroutine compare_file
+
+    pure function itoa(i) result(text)
+        integer, intent(in) :: i
+        character(len=12) :: text
+        write (text, '(i0)') i
+    end function itoa
 end module test_report_writer

@@ -1,11 +1,11 @@
 # fricon sweep figure: the cases of a SWEEP deck overlaid, six panels, one colour per case.
-# The calling script (output/STEM_sweep.gp, written by fricon) loads the first case's script
-# with settings_only set (columns c_*, labels lab_*, key_*, p_unit, clip_factor, edge_d and
-# the load arrays, as described in fricon_panels.gp), then defines
+# fricon writes output/STEM_sweep.gp with the settings of the first solved case (columns c_*,
+# labels lab_*, key_*, p_unit, clip_factor, edge_d and the load arrays, as described in
+# fricon_panels.gp), sweep_png, title and model, then this template; it defines
 #   files   = "a.csv b.csv ..."         (whitespace-separated data files)
 #   labels  = "'RHO=0.001 F=0' ..."     (one quoted phrase per file: the legend)
 #   p_means = "v1 v2 ..."               (mean contact pressure of each case; optional)
-# and calls:  call 'scripts/gnuplot/fricon_sweep.gp' PNG TITLE MODEL
+# (scripts/paper.sh instead calls  call 'scripts/gnuplot/fricon_sweep.gp' PNG TITLE MODEL)
 # Without the case settings (e.g. scripts/paper.sh) the files are nondimensional .dat files
 # in the column layout of README (t U W Psi Sigma_x Sigma_z gap slip state, then resultants);
 # c_s and c_p, if defined, choose the shear-traction and pressure columns.
@@ -13,9 +13,10 @@
 # Pressure clip (the rule of fricon_panels.gp over all cases): max(clip_factor * the largest
 # mean pressure of the cases, clip_inner * the largest station pressure at least edge_d from a
 # free edge); clipped stations are marked with a triangle on the clip line.
-png = exists("png_override") ? png_override : ARG1
-title = ARG2
-model = ARG3
+# fricon writes sweep_png, title and model into the sweep script; paper.sh passes them as
+# the arguments of a call
+if (!exists("sweep_png")) { sweep_png = ARG1; title = ARG2; model = ARG3 }
+png = exists("png_override") ? png_override : sweep_png
 is_beam = (model eq 'BEAM')
 if (!exists("c_x")) {
     csv = 0

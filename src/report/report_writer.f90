@@ -11,15 +11,16 @@ module report_writer
     use contact_solver, only: solution_t
     use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
     use station_columns, only: column_t, nondim_columns, physical_columns, case_units, &
-                               units_t, Q_STATE
+                               column_index, units_t, Q_STATE
     use station_results, only: station_table_t, contact_extent, FLAG_TENSION, FLAG_OVERLAP
     use design_summary, only: summary_t, interval_t
+    use figure_templates, only: panel_template, sweep_template
     use summary_table, only: entry_t, summary_entries
     implicit none
     private
 
     public :: write_data_file, write_physical_csv, write_summary_json, write_plot_script, &
-              write_report, shell_safe, json_string
+              write_sweep_script, write_report, shell_safe, json_string
 
     character(len=*), parameter :: state_word(0:2) = ['lift-off', 'stick   ', 'slip    ']
 
@@ -235,66 +236,148 @@ contains
         text = trim(adjustl(buf))
     end function json_number
 
-    !> output/CASE.gp: everything the figure needs (data file, column numbers from the column
-    !! table, axis labels with units, load positions, the pressure clip inputs), then a call of
-    !! the panel template scripts/gnuplot/fricon_panels.gp (run gnuplot from the project root).
-    !! Physical decks plot the CSV in display units, NONDIM decks the nondimensional .dat.
-    !! `label` (a sweep case's 'case 002 of 006: RHO=0.001 F=0.5') becomes the second title line;
-    !! `s` gives the mean contact pressure of the clip rule (else V over the whole footprint).
-    subroutine write_plot_script(path, dat_path, png_path, m, err, label, s)
-        use model, only: LOAD_PATCH, LOAD_MOMENT, LOAD_RING
-        use station_columns, only: column_index
-        character(len=*), intent(in) :: path, dat_path, png_path
+    !> output/CASE.gp: the figure of one case, self-contained: the settings of the case
+    !! (write_figure_settings) and the panel template (embedded in the program). The data file
+    !! (CASE.csv for physical decks, CASE.dat for NONDIM decks) and the PNG are named relative
+    !! to the script's own folder, so `gnuplot CASE.gp` draws from any working folder.
+    subroutine write_plot_script(path, name, m, label, s, err)
+        character(len=*), intent(in) :: path     !! the script, e.g. output/default.gp
+        character(len=*), intent(in) :: name     !! the case, e.g. default or sweep_002
         type(model_t), intent(in) :: m
+        character(len=*), intent(in) :: label    !! 'case 002 of 006: RHO=0.001 F=0.5' or ''
+        type(summary_t), intent(in) :: s
         type(error_t), allocatable, intent(out) :: err
-        character(len=*), intent(in), optional :: label
-        type(summary_t), intent(in), optional :: s
+        character(len=:), allocatable :: title
+        integer :: u
+        title = 'fricon: '//trim(shell_safe(m%title))
+        if (index(label, ':') > 0) title = title//"'.""\n"".'"//trim(shell_safe(label))
+        call open_temporary(path, u, err)
+        if (allocated(err)) return
+        write (u, '(a)') '# fricon figure of case '//name//': gnuplot '//name//'.gp draws '// &
+            name//'.png (from any folder)'
+        call write_script_folder(u)
+        write (u, '(a)') "data = gp_dir.'"//name//trim(merge('.dat', '.csv', m%nondim))//"'"
+        write (u, '(a)') "png = exists(""png_override"") ? png_override : gp_dir.'"//name//".png'"
+        write (u, '(a)') "title = '"//title//"'"
+        call write_figure_settings(u, m, s%mean_pressure)
+        call write_lines(u, panel_template())
+        call commit_file(path, u, err)
+    end subroutine write_plot_script
+
+    !> STEM_sweep.gp: the solved cases of a sweep overlaid, self-contained: the settings of
+    !! the first case (the cases of a sweep share columns, units and loads), the case files and
+    !! their legend labels and mean pressures, and the sweep template.
+    subroutine write_sweep_script(path, stem, m, names, labels, means, err)
+        character(len=*), intent(in) :: path, stem
+        type(model_t), intent(in) :: m              !! the first solved case
+        character(len=*), intent(in) :: names(:)    !! case names (files NAME.csv or NAME.dat)
+        character(len=*), intent(in) :: labels(:)   !! legend phrases in single quotes, e.g.
+                                                    !! 'RHO=0.001 F=0.5' (one gnuplot word)
+        real(dp), intent(in) :: means(:)            !! mean contact pressure of each case
+        type(error_t), allocatable, intent(out) :: err
+        type(column_t), allocatable :: cols(:)
+        integer :: u, i
+        call open_temporary(path, u, err)
+        if (allocated(err)) return
+        write (u, '(a)') '# fricon sweep figure: gnuplot '//stem//'_sweep.gp draws '//stem// &
+            '_sweep.png (from any folder)'
+        call write_script_folder(u)
+        call write_figure_settings(u, m, means(1))
+        write (u, '(a)') "files = ''"
+        write (u, '(a)') "labels = ''"
+        write (u, '(a)') "p_means = ''"
+        if (m%nondim) then
+            cols = nondim_columns(m)
+        else
+            cols = physical_columns(m)
+        end if
+        do i = 1, size(names)
+            write (u, '(a)') "files = files.' '.gp_dir.'"//trim(names(i))// &
+                trim(merge('.dat', '.csv', m%nondim))//"'"
+            write (u, '(a)') 'labels = labels." '//trim(labels(i))//'"'
+            write (u, '(a)') "p_means = p_means.' "//num(means(i)*pressure_scale(m, cols))//"'"
+        end do
+        write (u, '(a)') "sweep_png = gp_dir.'"//stem//"_sweep.png'"
+        write (u, '(a)') "title = 'fricon: "//trim(shell_safe(m%title))//" (sweep)'"
+        call write_lines(u, sweep_template())
+        call commit_file(path, u, err)
+    end subroutine write_sweep_script
+
+    !> A number for a gnuplot script (full precision).
+    pure function num(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        write (buf, '(es22.14e3)') x
+        text = trim(adjustl(buf))
+    end function num
+
+    !> gp_dir: the folder of the running script (gnuplot sets ARG0 to its path), '' for the
+    !! current one; data and figure are named relative to it.
+    subroutine write_script_folder(u)
+        integer, intent(in) :: u
+        write (u, '(a)') "gp_dir = ''"
+        write (u, '(a)') "do for [i_ = strlen(ARG0):1:-1] { if (gp_dir eq '' && ARG0[i_:i_] "// &
+            "eq '/') { gp_dir = ARG0[1:i_] } }"
+    end subroutine write_script_folder
+
+    subroutine write_lines(u, lines)
+        integer, intent(in) :: u
+        character(len=*), intent(in) :: lines(:)
+        integer :: i
+        do i = 1, size(lines)
+            write (u, '(a)') trim(lines(i))
+        end do
+    end subroutine write_lines
+
+    !> Factor from a pressure (force/length^2) to the plotted pressure column: that column's
+    !! scale applied to the traction the model stores (a beam's line load is b times the
+    !! pressure).
+    pure real(dp) function pressure_scale(m, cols) result(f)
+        type(model_t), intent(in) :: m
+        type(column_t), intent(in) :: cols(:)
+        character(len=7) :: key
+        if (m%nondim) then
+            key = 'Sigma_z'
+        else
+            key = merge('p_z    ', 'sigma_z', m%kind == MODEL_BEAM)
+        end if
+        f = cols(column_index(cols, trim(key)))%scale*merge(m%b, 1.0_dp, m%kind == MODEL_BEAM)
+    end function pressure_scale
+
+    !> The settings a panel or sweep template reads: model, data format, column numbers
+    !! (from the station column table), axis labels and legend names with units, the clip
+    !! rule, the friction coefficient and the load positions.
+    subroutine write_figure_settings(u, m, mean_pressure)
+        use model, only: LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+        integer, intent(in) :: u
+        type(model_t), intent(in) :: m
+        real(dp), intent(in) :: mean_pressure      !! V / contact area [F/L^2]; 0: V / base
         type(column_t), allocatable :: cols(:)
         type(units_t) :: un
-        character(len=:), allocatable :: data_path, title
         character(len=1) :: kind_letter
         logical :: beam, phys
-        integer :: u, k, ix, ip
-        real(dp) :: width, p_mean, xs
+        integer :: k, ix
+        real(dp) :: p_mean, xs
         beam = m%kind == MODEL_BEAM
         phys = .not. m%nondim
         un = case_units(m)
         if (phys) then
             cols = physical_columns(m)
-            data_path = dat_path
-            if (len(dat_path) >= 4) data_path = dat_path(1:len(dat_path) - 4)//'.csv'
         else
             cols = nondim_columns(m)
-            data_path = dat_path
         end if
         ix = column_index(cols, pick('x', 'r', 't'))
-        ip = column_index(cols, pick('p_z', 'sigma_z', 'Sigma_z'))
         xs = cols(ix)%scale
-        ! mean contact pressure V / contact area, stored units (beam: line load), then plotted
-        width = merge(m%b, 1.0_dp, beam)
-        if (present(s)) then
-            p_mean = s%mean_pressure*width
-        else if (beam) then
-            p_mean = total_vertical_load(m)/m%length
-        else
-            p_mean = total_vertical_load(m)/(pi*m%length**2)
+        if (mean_pressure > 0.0_dp) then
+            p_mean = mean_pressure*pressure_scale(m, cols)
+        else      ! no contact area known: the load over the base
+            p_mean = total_vertical_load(m)/merge(m%length*m%b, pi*m%length**2, beam)* &
+                     pressure_scale(m, cols)
         end if
-        p_mean = p_mean*cols(ip)%scale
-        title = 'fricon: '//trim(shell_safe(m%title))
-        if (present(label)) then
-            if (index(label, ':') > 0) title = title//"'.""\n"".'"//trim(shell_safe(label))
-        end if
-
-        call open_temporary(path, u, err)
-        if (allocated(err)) return
-        write (u, '(a)') '# fricon figure: run from the project root as  gnuplot '//path
-        write (u, '(a)') '# (fricon itself renders it with png_override set to a temporary name)'
-        write (u, '(a)') "data = '"//data_path//"'"
-        write (u, '(a)') "png = exists(""png_override"") ? png_override : '"//png_path//"'"
-        write (u, '(a)') "title = '"//title//"'"
         write (u, '(a)') "model = '"//trim(merge('BEAM ', 'PLATE', beam))//"'"
         write (u, '(a)') 'csv = '//itoa(merge(1, 0, phys))
-        write (u, '(a)') '# columns of '//data_path//' (station column table)'
+        write (u, '(a)') '# columns of the data file (station column table)'
         call put_col('c_x', pick('x', 'r', 't'))
         call put_col('c_w', pick('w', 'w', 'W'))
         call put_col('c_gap', 'gap')
@@ -355,7 +438,8 @@ contains
             call put_text('key_n', symbol_of(pick('', 'N_r', 'N_r*a/F')))
             call put_text('key_nt', pick('', 'N_theta', 'N_theta*a/F'))
         end if
-        call put_text('p_unit', trim(cols(ip)%unit))
+        call put_text('p_unit', &
+                      trim(cols(column_index(cols, pick('p_z', 'sigma_z', 'Sigma_z')))%unit))
         if (beam .and. phys) then
             write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
             call put_num('line_width', m%b)
@@ -403,8 +487,6 @@ contains
             end do
             write (u, '(a)') ''
         end if
-        write (u, '(a)') "if (!exists('settings_only')) call 'scripts/gnuplot/fricon_panels.gp'"
-        call commit_file(path, u, err)
 
     contains
 
@@ -470,14 +552,7 @@ contains
             if (k < size(m%loads)) text = ', '
         end function after
 
-        function num(x) result(text)
-            real(dp), intent(in) :: x
-            character(len=:), allocatable :: text
-            character(len=32) :: buf
-            write (buf, '(es22.14e3)') x
-            text = trim(adjustl(buf))
-        end function num
-    end subroutine write_plot_script
+    end subroutine write_figure_settings
 
     !> Text safe inside single quotes of a shell or gnuplot command: quotes, backquote, $ and
     !! backslash become blanks.
