@@ -1,12 +1,14 @@
-!> fricon: `fricon [DECK]`. Without a deck, solves the embedded default raft (input/default.dat).
-!! Exit status: 0 solved, 1 input or file error, 2 analysis failed, 3 internal error.
+!> fricon [options] [DECK...]: solves each deck (without a deck, the embedded default raft).
+!! Exit status: the worst of the decks: 0 solved, 1 input or file error, 2 analysis failed,
+!! 3 internal error.
 program fricon
     use iso_fortran_env, only: error_unit, output_unit
     use iso_c_binding, only: c_int
-    use errors, only: error_t, EXIT_OK
+    use errors, only: error_t, EXIT_OK, EXIT_INPUT
     use gsl_wrappers, only: gsl_start
     use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines
-    use analysis_driver, only: run_analysis
+    use analysis_driver, only: run_analysis, run_options_t
+    use output_paths, only: stderr_is_terminal
     implicit none
     interface
         ! void exit(int status);  (the C library: ends without the runtime's "STOP n" line)
@@ -15,35 +17,183 @@ program fricon
             integer(c_int), value :: status
         end subroutine c_exit
     end interface
-    type(deck_t) :: deck
-    type(error_t), allocatable :: err
-    character(len=80), allocatable :: lines(:)
-    character(len=1024) :: path
-    integer :: status
+    character(len=*), parameter :: version = '0.2.0'   !! as in fpm.toml
+    type(run_options_t) :: options
+    character(len=1024), allocatable :: decks(:)
+    character(len=1024) :: out_dir
+    integer :: status, k, deck_status
+    logical :: quiet, progress_forced
 
-    path = ''
+    call read_arguments(decks, out_dir, options, quiet, progress_forced)
+    options%progress = progress_forced .or. (.not. quiet .and. stderr_is_terminal())
     call gsl_start()
-    if (command_argument_count() >= 1) then
-        call get_command_argument(1, path)
-        call read_deck(trim(path), deck, err)
+    status = EXIT_OK
+    if (size(decks) == 0) then
+        call run_default(trim(out_dir), options, status)
     else
-        call default_deck_lines(lines)
-        call parse_deck('input/default.dat', lines, deck, err)
+        call check_distinct_outputs(decks, out_dir)
+        do k = 1, size(decks)
+            call run_deck(trim(decks(k)), trim(out_dir), options, deck_status)
+            if (size(decks) > 1) write (output_unit, '(a,i0,a)') 'fricon: '//trim(decks(k))// &
+                ': exit status ', deck_status, ' ('//trim(outcome(deck_status))//')'
+            status = max(status, deck_status)
+        end do
     end if
-    if (allocated(err)) then
-        write (error_unit, '(a)') 'ERROR: '//err%message
-        call finish(err%code)
-    end if
-    call run_analysis(deck, output_directory(trim(path)), output_unit, error_unit, status)
     call finish(status)
 
 contains
 
-    !> output/, or output/SUB/ for a deck under input/SUB/ (e.g. input/paper/ -> output/paper/).
-    function output_directory(deck_path) result(dir)
-        character(len=*), intent(in) :: deck_path
+    !> Options and deck names from the command line; --help and --version end the run.
+    subroutine read_arguments(decks, out_dir, options, quiet, progress_forced)
+        character(len=1024), allocatable, intent(out) :: decks(:)
+        character(len=1024), intent(out) :: out_dir
+        type(run_options_t), intent(inout) :: options
+        logical, intent(out) :: quiet, progress_forced
+        character(len=1024) :: arg
+        integer :: i, n
+        allocate (decks(0))
+        out_dir = ''
+        quiet = .false.
+        progress_forced = .false.
+        n = command_argument_count()
+        i = 0
+        arguments: do while (i < n)
+            i = i + 1
+            call get_command_argument(i, arg)
+            select case (trim(arg))
+            case ('-h', '--help')
+                call print_usage(output_unit)
+                call finish(EXIT_OK)
+            case ('-V', '-v', '--version')
+                write (output_unit, '(a)') 'fricon '//version
+                call finish(EXIT_OK)
+            case ('-o', '--output')
+                if (i == n) call usage_error('option '//trim(arg)//' needs a folder')
+                i = i + 1
+                call get_command_argument(i, out_dir)
+            case ('--no-figures')
+                options%figures = .false.
+            case ('-q', '--quiet')
+                quiet = .true.
+            case ('--progress')
+                progress_forced = .true.
+            case ('--')
+                decks = [character(len=1024) :: decks, (next_argument(i), i=i + 1, n)]
+                exit arguments
+            case default
+                if (arg(1:1) == '-') call usage_error('unknown option '//trim(arg))
+                decks = [character(len=1024) :: decks, arg]
+            end select
+        end do arguments
+    end subroutine read_arguments
+
+    function next_argument(i) result(arg)
+        integer, intent(in) :: i
+        character(len=1024) :: arg
+        call get_command_argument(i, arg)
+    end function next_argument
+
+    subroutine print_usage(unit)
+        integer, intent(in) :: unit
+        write (unit, '(a)') 'usage: fricon [options] [DECK...]'
+        write (unit, '(a)') ''
+        write (unit, '(a)') 'Solves each card-image DECK: a beam or circular raft on an elastic '// &
+            'half-space with'
+        write (unit, '(a)') 'lift-off and friction. Without a DECK, solves the built-in default '// &
+            'raft (input/default.dat).'
+        write (unit, '(a)') ''
+        write (unit, '(a)') 'options:'
+        write (unit, '(a)') '  -o, --output DIR  write the outputs under DIR (default: output/ '// &
+            'in the current folder,'
+        write (unit, '(a)') '                    output/SUB for a deck in input/SUB/)'
+        write (unit, '(a)') '      --no-figures  write each figure script (.gp) but do not run '// &
+            'gnuplot'
+        write (unit, '(a)') '  -q, --quiet       no progress on standard error'
+        write (unit, '(a)') '      --progress    progress even when standard error is not a '// &
+            'terminal'
+        write (unit, '(a)') '  -h, --help        this text'
+        write (unit, '(a)') '  -V, --version     the version'
+        write (unit, '(a)') ''
+        write (unit, '(a)') 'Each case writes CASE.txt (report), .dat, .csv, .json, .gp and .png; '// &
+            'README.md and'
+        write (unit, '(a)') 'doc/OUTPUT.md describe the decks and the outputs.'
+        write (unit, '(a)') 'Exit status: the worst of the decks: 0 solved, 1 input or file '// &
+            'error, 2 analysis failed.'
+    end subroutine print_usage
+
+    subroutine usage_error(text)
+        character(len=*), intent(in) :: text
+        write (error_unit, '(a)') 'ERROR: '//text//' (fricon --help lists the options)'
+        call finish(EXIT_INPUT)
+    end subroutine usage_error
+
+    !> Two decks of one call with the same file stem and the same output folder would write
+    !! the same files: refused before anything is solved.
+    subroutine check_distinct_outputs(decks, out_dir)
+        character(len=*), intent(in) :: decks(:), out_dir
+        integer :: i, j
+        do i = 2, size(decks)
+            do j = 1, i - 1
+                if (output_directory(trim(decks(i)), trim(out_dir)) /= &
+                    output_directory(trim(decks(j)), trim(out_dir))) cycle
+                if (stem(decks(i)) /= stem(decks(j))) cycle
+                call usage_error('the decks '//trim(decks(j))//' and '//trim(decks(i))// &
+                                 ' would write the same outputs; run them with different -o folders')
+            end do
+        end do
+    end subroutine check_distinct_outputs
+
+    pure function stem(path) result(name)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: name
+        name = trim(path(index(path, '/', back=.true.) + 1:))
+        if (index(name, '.', back=.true.) > 1) name = name(1:index(name, '.', back=.true.) - 1)
+    end function stem
+
+    subroutine run_default(out_dir, options, status)
+        character(len=*), intent(in) :: out_dir
+        type(run_options_t), intent(in) :: options
+        integer, intent(out) :: status
+        type(deck_t) :: deck
+        type(error_t), allocatable :: err
+        character(len=80), allocatable :: lines(:)
+        call default_deck_lines(lines)
+        call parse_deck('input/default.dat', lines, deck, err)
+        if (allocated(err)) then
+            write (error_unit, '(a)') 'ERROR: '//err%message
+            status = err%code
+            return
+        end if
+        call run_analysis(deck, output_directory('', out_dir), output_unit, error_unit, status, &
+                          options)
+    end subroutine run_default
+
+    subroutine run_deck(path, out_dir, options, status)
+        character(len=*), intent(in) :: path, out_dir
+        type(run_options_t), intent(in) :: options
+        integer, intent(out) :: status
+        type(deck_t) :: deck
+        type(error_t), allocatable :: err
+        call read_deck(path, deck, err)
+        if (allocated(err)) then
+            write (error_unit, '(a)') 'ERROR: '//err%message
+            status = err%code
+            return
+        end if
+        call run_analysis(deck, output_directory(path, out_dir), output_unit, error_unit, &
+                          status, options)
+    end subroutine run_deck
+
+    !> The -o folder if given; else output/, or output/SUB for a deck under input/SUB/ (e.g.
+    !! input/paper/ -> output/paper/), relative to the current folder.
+    function output_directory(deck_path, given) result(dir)
+        character(len=*), intent(in) :: deck_path, given
         character(len=:), allocatable :: dir
         integer :: i, j
+        if (len_trim(given) > 0) then
+            dir = trim(given)
+            return
+        end if
         dir = 'output'
         i = index(deck_path, 'input/', back=.true.)
         j = index(deck_path, '/', back=.true.)
@@ -53,6 +203,21 @@ contains
         end if
         dir = 'output/'//deck_path(i + 6:j - 1)
     end function output_directory
+
+    pure function outcome(code) result(text)
+        integer, intent(in) :: code
+        character(len=24) :: text
+        select case (code)
+        case (0)
+            text = 'solved'
+        case (1)
+            text = 'input or file error'
+        case (2)
+            text = 'analysis failed'
+        case default
+            text = 'internal error'
+        end select
+    end function outcome
 
     !> Flush and end with the exit status, without the runtime's "STOP n" line on standard
     !! error (a Fortran STOP with a code prints one).

@@ -1,6 +1,7 @@
 !> Runs a whole deck: validates every case first, then solves each case on its own (a failed
 !! case does not stop the others) and writes its report, data, gnuplot script and PNG.
 module analysis_driver
+    use iso_fortran_env, only: int64
     use kinds, only: dp
     use errors, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use model, only: model_t, MODEL_BEAM, relative_stiffness
@@ -14,6 +15,7 @@ module analysis_driver
                              write_plot_script, write_sweep_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
     use plausibility, only: warning_length, input_warnings, settlement_warnings
+    use output_paths, only: prepare_output_dir, check_deck_not_overwritten
     implicit none
     private
 
@@ -28,17 +30,28 @@ module analysis_driver
         character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
     end type case_result_t
 
+    !> How a run behaves (command-line options).
+    type, public :: run_options_t
+        logical :: figures = .true.     !! run gnuplot (the .gp is always written)
+        logical :: progress = .false.   !! progress on the error unit: case i of n, time left
+    end type run_options_t
+
     public :: run_analysis, solve_case
 
 contains
 
-    !> Solve every case of the deck; `status` is the worst exit status of all cases.
-    subroutine run_analysis(deck, out_dir, log_unit, err_unit, status)
+    !> Solve every case of the deck; `status` is the worst exit status of all cases. Every
+    !! case is validated, the output folder proved writable and the deck checked against being
+    !! overwritten before anything is solved.
+    subroutine run_analysis(deck, out_dir, log_unit, err_unit, status, options)
         type(deck_t), intent(in) :: deck
         character(len=*), intent(in) :: out_dir    !! e.g. 'output'
-        integer, intent(in) :: log_unit            !! where progress is written
-        integer, intent(in) :: err_unit            !! where errors and warnings are written
+        integer, intent(in) :: log_unit            !! where each case's outcome is written
+        integer, intent(in) :: err_unit            !! errors, warnings and progress
         integer, intent(out) :: status
+        type(run_options_t), intent(in), optional :: options
+        type(run_options_t) :: opt
+        integer(int64) :: clock_start, clock_now, clock_rate
         type(model_t), allocatable :: cases(:)
         character(len=200), allocatable :: labels(:)
         type(case_result_t), allocatable :: results(:)
@@ -60,11 +73,21 @@ contains
             end if
         end do validate
         if (status /= EXIT_OK) return
-        call execute_command_line('mkdir -p '//out_dir)
+        if (present(options)) opt = options
+        call prepare_output_dir(out_dir, err)
+        if (.not. allocated(err)) call check_deck_not_overwritten(deck%path, out_dir, deck%stem, err)
+        if (allocated(err)) then
+            write (err_unit, '(a)') 'ERROR: '//err%message
+            status = err%code
+            return
+        end if
+        call system_clock(clock_start, clock_rate)
         cases_loop: do i = 1, n
             name = deck%stem
             if (n > 1) name = name//'_'//case_number(i)
-            call solve_case(deck, cases(i), trim(labels(i)), out_dir, name, results(i))
+            if (opt%progress) call report_progress(err_unit, i, n, name, cases(i), clock_start)
+            call solve_case(deck, cases(i), trim(labels(i)), out_dir, name, opt%figures, &
+                            results(i))
             if (results(i)%status == EXIT_OK) then
                 write (log_unit, '(a)') name//': solved  '//console_summary(results(i)%entries)// &
                     '  -> '//out_dir//'/'//name//'.txt'
@@ -80,16 +103,41 @@ contains
             end do
             status = max(status, results(i)%status)
         end do cases_loop
+        if (opt%progress .and. n > 1) then
+            call system_clock(clock_now)
+            write (err_unit, '(a,i0,a,f0.1,a)') 'fricon: ', n, ' cases in ', &
+                real(clock_now - clock_start, dp)/real(clock_rate, dp), ' s'
+        end if
         if (n > 1) then
             call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', cases(1), results, err)
             if (.not. allocated(err)) call write_sweep_plot(out_dir, deck%stem, cases, results, &
-                                                            err)
+                                                            opt%figures, err)
         end if
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = max(status, err%code)
         end if
     end subroutine run_analysis
+
+    !> Standard-error progress: case i of n, its size, the elapsed time and an estimate of the
+    !! time left (the mean time per case so far).
+    subroutine report_progress(unit, i, n, name, m, clock_start)
+        integer, intent(in) :: unit, i, n
+        character(len=*), intent(in) :: name
+        type(model_t), intent(in) :: m
+        integer(int64), intent(in) :: clock_start
+        integer(int64) :: now, rate
+        real(dp) :: elapsed
+        character(len=80) :: eta
+        call system_clock(now, rate)
+        elapsed = real(now - clock_start, dp)/real(rate, dp)
+        eta = ''
+        if (i > 1) write (eta, '(a,f0.1,a)') ', about ', elapsed/real(i - 1, dp)*real(n - i + 1, dp), &
+            ' s left'
+        write (unit, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'fricon: case ', i, ' of ', n, ': '//name// &
+            ' (N_e = ', m%ne, '), ', elapsed, ' s elapsed'//trim(eta)
+        flush (unit)
+    end subroutine report_progress
 
     pure function case_number(i) result(text)
         integer, intent(in) :: i
@@ -100,10 +148,11 @@ contains
     !> One case: solve, tabulate, write report, data files, JSON summary, gnuplot script, PNG.
     !! A failed case writes its report (ANALYSIS FAILED) and its JSON (status, message) only,
     !! and removes the data files and figure of an earlier run of the same case.
-    subroutine solve_case(deck, m, label, out_dir, name, result)
+    subroutine solve_case(deck, m, label, out_dir, name, figures, result)
         type(deck_t), intent(in) :: deck
         type(model_t), intent(inout) :: m
         character(len=*), intent(in) :: label, out_dir, name
+        logical, intent(in) :: figures            !! run gnuplot on the written .gp
         type(case_result_t), intent(out) :: result
         type(discretization_t) :: d
         type(solution_t) :: sol
@@ -149,7 +198,8 @@ contains
             result%message = err%message
             return
         end if
-        call render_png(base, note)
+        note = ''
+        if (figures) call render_png(base, note)
         result%message = note
         call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, '', &
                           report_notes(result%warnings, note), err)
@@ -239,10 +289,11 @@ contains
     !> output/STEM_sweep.gp and .png: the solved cases overlaid (report_writer
     !! write_sweep_script: the first solved case's settings, the case files, the legend labels
     !! of the swept values and each case's mean contact pressure for the clip rule).
-    subroutine write_sweep_plot(out_dir, stem, cases, results, err)
+    subroutine write_sweep_plot(out_dir, stem, cases, results, figures, err)
         character(len=*), intent(in) :: out_dir, stem
         type(model_t), intent(in) :: cases(:)
         type(case_result_t), intent(in) :: results(:)
+        logical, intent(in) :: figures
         type(error_t), allocatable, intent(out) :: err
         character(len=200), allocatable :: names(:), labels(:)
         real(dp), allocatable :: means(:)
@@ -261,7 +312,7 @@ contains
         call write_sweep_script(out_dir//'/'//stem//'_sweep.gp', stem, cases(first), names, &
                                 labels, means, err)
         if (allocated(err)) return
-        call render_png(out_dir//'/'//stem//'_sweep', note)
+        if (figures) call render_png(out_dir//'/'//stem//'_sweep', note)
     end subroutine write_sweep_plot
 
     !> A sweep label as one quoted gnuplot word (for word() and the legend):
