@@ -50,7 +50,7 @@ contains
         type(run_options_t), intent(inout) :: options
         logical, intent(out) :: quiet, progress_forced
         character(len=1024) :: arg
-        integer :: i, n
+        integer :: i, n, ios
         allocate (decks(0))
         out_dir = ''
         quiet = .false.
@@ -73,6 +73,18 @@ contains
                 call get_command_argument(i, out_dir)
             case ('--no-figures')
                 options%figures = .false.
+            case ('-j', '--jobs')
+                if (i == n) call usage_error('option '//trim(arg)//' needs a number of cases')
+                i = i + 1
+                call get_command_argument(i, arg)
+                read (arg, *, iostat=ios) options%threads
+                if (ios /= 0 .or. options%threads < 1) call usage_error('--jobs needs a whole '// &
+                    'number >= 1, got '//trim(arg))
+            case ('--shard')
+                if (i == n) call usage_error('option --shard needs I/N')
+                i = i + 1
+                call get_command_argument(i, arg)
+                call read_shard(trim(arg), options)
             case ('-q', '--quiet')
                 quiet = .true.
             case ('--progress')
@@ -86,6 +98,24 @@ contains
             end select
         end do arguments
     end subroutine read_arguments
+
+    !> --shard I/N: this run solves cases I, I+N, I+2N, ... of each sweep (1 <= I <= N).
+    subroutine read_shard(text, options)
+        character(len=*), intent(in) :: text
+        type(run_options_t), intent(inout) :: options
+        integer :: slash, ios1, ios2
+        slash = index(text, '/')
+        ios1 = 1
+        ios2 = 1
+        if (slash > 1) then
+            read (text(1:slash - 1), *, iostat=ios1) options%shard_index
+            read (text(slash + 1:), *, iostat=ios2) options%shard_count
+        end if
+        if (ios1 /= 0 .or. ios2 /= 0) call usage_error('--shard needs I/N such as 3/8, got '//text)
+        if (options%shard_count < 1 .or. options%shard_index < 1 .or. &
+            options%shard_index > options%shard_count) &
+            call usage_error('--shard I/N needs 1 <= I <= N, got '//text)
+    end subroutine read_shard
 
     function next_argument(i) result(arg)
         integer, intent(in) :: i
@@ -108,6 +138,10 @@ contains
         write (unit, '(a)') '                    output/SUB for a deck in input/SUB/)'
         write (unit, '(a)') '      --no-figures  write each figure script (.gp) but do not run '// &
             'gnuplot'
+        write (unit, '(a)') '  -j, --jobs N      solve N cases of a sweep at once (default: all cores)'
+        write (unit, '(a)') '      --shard I/N   solve cases I, I+N, I+2N, ... of each sweep only '// &
+            '(a job array:'
+        write (unit, '(a)') '                    scripts/merge_shards.sh joins the shard summaries)'
         write (unit, '(a)') '  -q, --quiet       no progress on standard error'
         write (unit, '(a)') '      --progress    progress even when standard error is not a '// &
             'terminal'

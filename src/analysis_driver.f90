@@ -16,6 +16,7 @@ module analysis_driver
     use atomic_files, only: open_temporary, commit_file
     use plausibility, only: warning_length, input_warnings, settlement_warnings
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten
+    use blas_threads, only: set_blas_threads, blas_thread_count
     implicit none
     private
 
@@ -34,15 +35,21 @@ module analysis_driver
     type, public :: run_options_t
         logical :: figures = .true.     !! run gnuplot (the .gp is always written)
         logical :: progress = .false.   !! progress on the error unit: case i of n, time left
+        integer :: threads = 0          !! cases solved at once (0: all cores)
+        integer :: shard_index = 1      !! solve cases shard_index, +shard_count, ... only
+        integer :: shard_count = 1
     end type run_options_t
 
     public :: run_analysis, solve_case
 
 contains
 
-    !> Solve every case of the deck; `status` is the worst exit status of all cases. Every
-    !! case is validated, the output folder proved writable and the deck checked against being
-    !! overwritten before anything is solved.
+    !> Solve every case of the deck (or, with a shard, every n-th); `status` is the worst exit
+    !! status of all cases. Every case is validated, the output folder proved writable and the
+    !! deck checked against being overwritten before anything is solved. The cases of a sweep
+    !! run in parallel (OpenMP, one case per thread, each with single-threaded BLAS); a case's
+    !! result does not depend on the thread that solved it, and the console lines, files and
+    !! summary rows come in case order.
     subroutine run_analysis(deck, out_dir, log_unit, err_unit, status, options)
         type(deck_t), intent(in) :: deck
         character(len=*), intent(in) :: out_dir    !! e.g. 'output'
@@ -51,20 +58,21 @@ contains
         integer, intent(out) :: status
         type(run_options_t), intent(in), optional :: options
         type(run_options_t) :: opt
-        integer(int64) :: clock_start, clock_now, clock_rate
+        integer(int64) :: clock_start
         type(model_t), allocatable :: cases(:)
         character(len=200), allocatable :: labels(:)
         type(case_result_t), allocatable :: results(:)
+        logical, allocatable :: selected(:)
         type(error_t), allocatable :: err
-        integer :: i, n, k
-        character(len=:), allocatable :: name, label
+        integer :: i, n, done, threads, blas_before
+        character(len=:), allocatable :: label
 
         n = case_count(deck)
         allocate (cases(n), labels(n), results(n))
         status = EXIT_OK
         validate: do i = 1, n
             call case_model(deck, i, cases(i), label, err)
-            labels(i) = 'case '//case_number(i)//' of '//case_number(n)
+            labels(i) = 'case '//case_number(i, n)//' of '//case_number(n, n)
             if (len(label) > 0) labels(i) = trim(labels(i))//': '//label
             if (allocated(err)) then
                 write (err_unit, '(a)') 'ERROR: '//err%message
@@ -81,50 +89,103 @@ contains
             status = err%code
             return
         end if
-        call system_clock(clock_start, clock_rate)
+        selected = [(mod(i - 1, opt%shard_count) == opt%shard_index - 1, i=1, n)]
+        threads = thread_count(opt%threads, count(selected))
+        blas_before = blas_thread_count()
+        if (threads > 1) call set_blas_threads(1)
+        call system_clock(clock_start)
+        done = 0
+        !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) private(i)
         cases_loop: do i = 1, n
-            name = deck%stem
-            if (n > 1) name = name//'_'//case_number(i)
-            if (opt%progress) call report_progress(err_unit, i, n, name, cases(i), clock_start)
-            call solve_case(deck, cases(i), trim(labels(i)), out_dir, name, opt%figures, &
-                            results(i))
-            if (results(i)%status == EXIT_OK) then
-                write (log_unit, '(a)') name//': solved  '//console_summary(results(i)%entries)// &
-                    '  -> '//out_dir//'/'//name//'.txt'
-            else
-                write (err_unit, '(a)') 'ERROR: '//name//' ('//deck%path//'): '// &
-                    results(i)%message
-            end if
-            if (len(results(i)%message) > 0 .and. results(i)%status == EXIT_OK) &
-                write (err_unit, '(a)') 'WARNING: '//name//': '//results(i)%message
-            do k = 1, size(results(i)%warnings)
-                write (err_unit, '(a)') 'WARNING: '//name//' ('//deck%path//'): '// &
-                    trim(results(i)%warnings(k))
-            end do
-            status = max(status, results(i)%status)
+            if (.not. selected(i)) cycle cases_loop
+            call solve_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
+                            opt%figures, results(i))
+            !$omp critical (fricon_progress)
+            done = done + 1
+            if (opt%progress) call report_progress(err_unit, done, count(selected), &
+                                                   results(i)%name, clock_start)
+            !$omp end critical (fricon_progress)
         end do cases_loop
-        if (opt%progress .and. n > 1) then
-            call system_clock(clock_now)
-            write (err_unit, '(a,i0,a,f0.1,a)') 'fricon: ', n, ' cases in ', &
-                real(clock_now - clock_start, dp)/real(clock_rate, dp), ' s'
-        end if
-        if (n > 1) then
-            call write_summary_csv(out_dir//'/'//deck%stem//'_summary.csv', cases(1), results, err)
-            if (.not. allocated(err)) call write_sweep_plot(out_dir, deck%stem, cases, results, &
-                                                            opt%figures, err)
-        end if
+        !$omp end parallel do
+        if (threads > 1) call set_blas_threads(blas_before)
+        do i = 1, n
+            if (selected(i)) call report_case(log_unit, err_unit, deck%path, out_dir, results(i), &
+                                              status)
+        end do
+        if (n > 1) call write_sweep_outputs(out_dir, deck%stem, cases, results, selected, opt, err)
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = max(status, err%code)
         end if
     end subroutine run_analysis
 
-    !> Standard-error progress: case i of n, its size, the elapsed time and an estimate of the
-    !! time left (the mean time per case so far).
-    subroutine report_progress(unit, i, n, name, m, clock_start)
-        integer, intent(in) :: unit, i, n
+    !> Threads for the case loop: the --jobs option, else OpenMP's default (all cores), never
+    !! more than the cases.
+    integer function thread_count(jobs, n_cases) result(threads)
+        !$ use omp_lib, only: omp_get_max_threads
+        integer, intent(in) :: jobs, n_cases
+        threads = 1
+        !$ threads = omp_get_max_threads()
+        if (jobs > 0) threads = jobs
+        threads = max(1, min(threads, n_cases))
+    end function thread_count
+
+    !> The console line (or error) and the warnings of one case; status: the worst so far.
+    subroutine report_case(log_unit, err_unit, deck_path, out_dir, r, status)
+        integer, intent(in) :: log_unit, err_unit
+        character(len=*), intent(in) :: deck_path, out_dir
+        type(case_result_t), intent(in) :: r
+        integer, intent(inout) :: status
+        integer :: k
+        if (r%status == EXIT_OK) then
+            write (log_unit, '(a)') r%name//': solved  '//console_summary(r%entries)// &
+                '  -> '//out_dir//'/'//r%name//'.txt'
+        else
+            write (err_unit, '(a)') 'ERROR: '//r%name//' ('//deck_path//'): '//r%message
+        end if
+        if (len(r%message) > 0 .and. r%status == EXIT_OK) &
+            write (err_unit, '(a)') 'WARNING: '//r%name//': '//r%message
+        do k = 1, size(r%warnings)
+            write (err_unit, '(a)') 'WARNING: '//r%name//' ('//deck_path//'): '//trim(r%warnings(k))
+        end do
+        status = max(status, r%status)
+    end subroutine report_case
+
+    !> A sweep's summary CSV and overlay figure; a shard writes STEM_summary.shard-I-of-N.csv
+    !! with its own rows (scripts/merge_shards.sh joins the shards into STEM_summary.csv).
+    subroutine write_sweep_outputs(out_dir, stem, cases, results, selected, opt, err)
+        character(len=*), intent(in) :: out_dir, stem
+        type(model_t), intent(in) :: cases(:)
+        type(case_result_t), intent(in) :: results(:)
+        logical, intent(in) :: selected(:)
+        type(run_options_t), intent(in) :: opt
+        type(error_t), allocatable, intent(out) :: err
+        character(len=40) :: shard
+        if (opt%shard_count > 1) then
+            write (shard, '(a,i0,a,i0)') '.shard-', opt%shard_index, '-of-', opt%shard_count
+            call write_summary_csv(out_dir//'/'//stem//'_summary'//trim(shard)//'.csv', cases(1), &
+                                   pack(results, selected), err)
+        else
+            call write_summary_csv(out_dir//'/'//stem//'_summary.csv', cases(1), results, err)
+            if (.not. allocated(err)) call write_sweep_plot(out_dir, stem, cases, results, &
+                                                            opt%figures, err)
+        end if
+    end subroutine write_sweep_outputs
+
+    !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits).
+    pure function case_name(stem, i, n) result(name)
+        character(len=*), intent(in) :: stem
+        integer, intent(in) :: i, n
+        character(len=:), allocatable :: name
+        name = stem
+        if (n > 1) name = stem//'_'//case_number(i, n)
+    end function case_name
+
+    !> Standard-error progress: cases done of n, the elapsed time and an estimate of the time
+    !! left (the mean time per case so far).
+    subroutine report_progress(unit, done, n, name, clock_start)
+        integer, intent(in) :: unit, done, n
         character(len=*), intent(in) :: name
-        type(model_t), intent(in) :: m
         integer(int64), intent(in) :: clock_start
         integer(int64) :: now, rate
         real(dp) :: elapsed
@@ -132,17 +193,30 @@ contains
         call system_clock(now, rate)
         elapsed = real(now - clock_start, dp)/real(rate, dp)
         eta = ''
-        if (i > 1) write (eta, '(a,f0.1,a)') ', about ', elapsed/real(i - 1, dp)*real(n - i + 1, dp), &
-            ' s left'
-        write (unit, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'fricon: case ', i, ' of ', n, ': '//name// &
-            ' (N_e = ', m%ne, '), ', elapsed, ' s elapsed'//trim(eta)
+        if (done < n) eta = ', about '//seconds(elapsed/real(done, dp)*real(n - done, dp))//' left'
+        write (unit, '(a,i0,a,i0,a)') 'fricon: ', done, ' of ', n, ' done ('//name//'), '// &
+            seconds(elapsed)//' elapsed'//trim(eta)
         flush (unit)
     end subroutine report_progress
 
-    pure function case_number(i) result(text)
-        integer, intent(in) :: i
-        character(len=3) :: text
-        write (text, '(i3.3)') i
+    pure function seconds(t) result(text)
+        real(dp), intent(in) :: t
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write (buf, '(f12.1)') t
+        text = trim(adjustl(buf))//' s'
+    end function seconds
+
+    !> i with leading zeros, as wide as n and at least three digits (001, 0042 of 1000).
+    pure function case_number(i, n) result(text)
+        integer, intent(in) :: i, n
+        character(len=:), allocatable :: text
+        character(len=12) :: fmt, buf
+        integer :: width
+        width = max(3, int(log10(real(max(n, 1), dp))) + 1)
+        write (fmt, '(a,i0,a,i0,a)') '(i', width, '.', width, ')'
+        write (buf, fmt) i
+        text = trim(buf)
     end function case_number
 
     !> One case: solve, tabulate, write report, data files, JSON summary, gnuplot script, PNG.

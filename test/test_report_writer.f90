@@ -6,7 +6,7 @@ module test_report_writer
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use deck_reader, only: deck_t, parse_deck
-    use analysis_driver, only: run_analysis
+    use analysis_driver, only: run_analysis, run_options_t
     use figure_templates, only: panel_template, sweep_template
     implicit none
     private
@@ -22,7 +22,8 @@ contains
                  new_unittest('input_error_writes_nothing', test_input_error), &
                  new_unittest('failed_case_report_only', test_failed_case), &
                  new_unittest('sweep_summary', test_sweep), &
-                 new_unittest('embedded_templates_match', test_templates)]
+                 new_unittest('embedded_templates_match', test_templates), &
+                 new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -186,6 +187,46 @@ contains
         close (u)
         call check(err, n == 5, 'summary should have a header and 4 rows')
     end subroutine test_sweep
+    !> A sweep solved on one thread, on two (OpenMP), and in two shards merged by
+    !! scripts/merge_shards.sh gives byte-identical summaries and case files: a case's result
+    !! does not depend on the thread or the run that solved it (issue 9).
+    subroutine test_parallel_sweep(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: status, k, exit_status
+        character(len=*), parameter :: runs(3) = ['build/test_sweep_j1', 'build/test_sweep_j2', &
+                                                  'build/test_sweep_sh']
+        call execute_command_line('rm -rf build/test_sweep_j1 build/test_sweep_j2 build/test_sweep_sh')
+        call parse_deck('sw.dat', plate_deck(' ', [card('SWEEP', ['F  ', '0.0', '0.5']), &
+                                                   card('SWEEP', ['RHO ', '0.01', '1.0 '])]), &
+                        deck, err)
+        if (allocated(err)) return
+        deck%stem = 'sw'
+        opt%figures = .false.
+        do k = 1, 2
+            opt%threads = k
+            call run_analysis(deck, runs(k), output_unit, error_unit, status, opt)
+            call check(err, status == EXIT_OK, 'sweep run failed')
+            if (allocated(err)) return
+        end do
+        opt%threads = 1
+        do k = 1, 2
+            opt%shard_index = k
+            opt%shard_count = 2
+            call run_analysis(deck, runs(3), output_unit, error_unit, status, opt)
+            call check(err, status == EXIT_OK, 'shard run failed')
+            if (allocated(err)) return
+        end do
+        call execute_command_line('bash scripts/merge_shards.sh build/test_sweep_sh/sw > /dev/null '// &
+            '&& cmp -s build/test_sweep_j1/sw_summary.csv build/test_sweep_j2/sw_summary.csv '// &
+            '&& cmp -s build/test_sweep_j1/sw_summary.csv build/test_sweep_sh/sw_summary.csv '// &
+            '&& cmp -s build/test_sweep_j1/sw_003.dat build/test_sweep_j2/sw_003.dat '// &
+            '&& cmp -s build/test_sweep_j1/sw_004.txt build/test_sweep_sh/sw_004.txt', &
+            exitstat=exit_status)
+        call check(err, exit_status == 0, 'parallel or sharded sweep differs from the serial one')
+    end subroutine test_parallel_sweep
+
     !> The gnuplot templates embedded in the program (src/report/figure_templates.f90) are the
     !! files scripts/gnuplot/*.gp line for line: after editing a template, run
     !! scripts/embed_templates.sh.
