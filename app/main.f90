@@ -73,6 +73,8 @@ contains
                 call get_command_argument(i, out_dir)
             case ('--no-figures')
                 options%figures = .false.
+            case ('--no-estimates')
+                options%estimates = .false.
             case ('-j', '--jobs')
                 if (i == n) call usage_error('option '//trim(arg)//' needs a number of cases')
                 i = i + 1
@@ -138,6 +140,8 @@ contains
         write (unit, '(a)') '                    output/SUB for a deck in input/SUB/)'
         write (unit, '(a)') '      --no-figures  write each figure script (.gp) but do not run '// &
             'gnuplot'
+        write (unit, '(a)') '      --no-estimates  no error estimates (they re-solve each case on '// &
+            'N_e/2 and N_e/4)'
         write (unit, '(a)') '  -j, --jobs N      solve N cases of a sweep at once (default: all cores)'
         write (unit, '(a)') '      --shard I/N   solve cases I, I+N, I+2N, ... of each sweep only '// &
             '(a job array:'

@@ -15,6 +15,7 @@ module analysis_driver
                              write_plot_script, write_sweep_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
     use plausibility, only: warning_length, input_warnings, settlement_warnings
+    use error_estimate, only: estimate_errors
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten
     use blas_threads, only: set_blas_threads, blas_thread_count
     implicit none
@@ -36,6 +37,7 @@ module analysis_driver
         logical :: figures = .true.     !! run gnuplot (the .gp is always written)
         logical :: progress = .false.   !! progress on the error unit: case i of n, time left
         integer :: threads = 0          !! cases solved at once (0: all cores)
+        logical :: estimates = .true.   !! error estimates (two coarser solves per case)
         integer :: shard_index = 1      !! solve cases shard_index, +shard_count, ... only
         integer :: shard_count = 1
     end type run_options_t
@@ -99,7 +101,7 @@ contains
         cases_loop: do i = 1, n
             if (.not. selected(i)) cycle cases_loop
             call solve_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
-                            opt%figures, results(i))
+                            opt%figures, opt%estimates, results(i))
             !$omp critical (fricon_progress)
             done = done + 1
             if (opt%progress) call report_progress(err_unit, done, count(selected), &
@@ -222,11 +224,12 @@ contains
     !> One case: solve, tabulate, write report, data files, JSON summary, gnuplot script, PNG.
     !! A failed case writes its report (ANALYSIS FAILED) and its JSON (status, message) only,
     !! and removes the data files and figure of an earlier run of the same case.
-    subroutine solve_case(deck, m, label, out_dir, name, figures, result)
+    subroutine solve_case(deck, m, label, out_dir, name, figures, estimates, result)
         type(deck_t), intent(in) :: deck
         type(model_t), intent(inout) :: m
         character(len=*), intent(in) :: label, out_dir, name
         logical, intent(in) :: figures            !! run gnuplot on the written .gp
+        logical, intent(in) :: estimates          !! estimate the error (two coarser solves)
         type(case_result_t), intent(out) :: result
         type(discretization_t) :: d
         type(solution_t) :: sol
@@ -250,22 +253,26 @@ contains
             result%status = err%code
             result%message = err%message
             call remove_stale(base)
-            call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, &
-                              err%message, report_notes(result%warnings, ''), err_report)
+            allocate (result%entries(0))
+            call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, &
+                              result%entries, s, err%message, report_notes(result%warnings, ''), &
+                              err_report)
             call write_summary_json(base//'.json', name, deck%path, m, err%code, err%message, &
-                                    s, sol, tab, err_report)
+                                    result%entries, s, sol, tab, err_report)
             return
         end if
         s = summarise(m, sol, tab)
         result%warnings = [character(len=warning_length) :: result%warnings, &
                            settlement_warnings(m, s%w_max%value)]
         result%entries = summary_entries(m, s, contact_extent(tab, m%length))
+        if (estimates) call estimate_errors(m, d, result%entries)
         result%mean_pressure = s%mean_pressure
         call write_data_file(base//'.dat', m, tab, err)
         if (.not. allocated(err) .and. .not. m%nondim) call write_physical_csv(base//'.csv', m, &
                                                                                tab, err)
         if (.not. allocated(err)) call write_summary_json(base//'.json', name, deck%path, m, &
-                                                          EXIT_OK, '', s, sol, tab, err)
+                                                          EXIT_OK, '', result%entries, s, sol, &
+                                                          tab, err)
         if (.not. allocated(err)) call write_plot_script(base//'.gp', name, m, label, s, err)
         if (allocated(err)) then
             result%status = err%code
@@ -275,8 +282,8 @@ contains
         note = ''
         if (figures) call render_png(base, note)
         result%message = note
-        call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, s, '', &
-                          report_notes(result%warnings, note), err)
+        call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, &
+                          result%entries, s, '', report_notes(result%warnings, note), err)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message

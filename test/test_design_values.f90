@@ -6,7 +6,8 @@ module test_design_values
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK
-    use model, only: model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH, complete_model
+    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
+                     complete_model
     use deck_reader, only: deck_t, read_deck, case_model
     use quadrature, only: gauss_legendre
     use discretization, only: discretization_t, new_discretization, locate_element
@@ -17,6 +18,9 @@ module test_design_values
     use station_results, only: station_table_t, tabulate
     use design_summary, only: summary_t, summarise
     use analysis_driver, only: run_analysis
+    use summary_table, only: entry_t, summary_entries
+    use error_estimate, only: estimate_errors
+    use station_results, only: contact_extent
     implicit none
     private
     public :: collect_design_values
@@ -46,7 +50,8 @@ contains
                  new_unittest('recovered_pressure_converges', test_recovery_converges), &
                  new_unittest('summary_mean_pressure_and_utilisation', test_summary_hand), &
                  new_unittest('summary_liftoff_on_negative_side', test_summary_liftoff), &
-                 new_unittest('summary_files_agree', test_summary_files)]
+                 new_unittest('summary_files_agree', test_summary_files), &
+                 new_unittest('error_estimate_bounds_closed_forms', test_error_estimate)]
     end subroutine collect_design_values
 
     !> Read a deck (case 1), optionally change N_e, solve and tabulate.
@@ -481,6 +486,49 @@ contains
         call check(err, json_value(dir//'/strip_footing.json', '"status":') == 0.0_dp, &
                    'JSON status')
     end subroutine test_summary_files
+
+    !> The error estimate (module error_estimate) bounds the true error of W(0) and is within a
+    !! factor 3 of it, on two closed forms (NONDIM plate, a = 1, F = 1, central point load,
+    !! rho = 1e3, i.e. a rigid punch; N_e = 16 and 32): the frictionless punch, W(0) = rho/4
+    !! (Boussinesq; Johnson 1985 3.8), and the bonded one (f = 1e3), W(0) = rho/(4 c) with
+    !! c = (1 - nu_f) ln(3 - 4 nu_f)/(1 - 2 nu_f) (Mossakovskii 1954; Spence 1968).
+    !! Measured ratios estimate/true: 1.27, 1.18 and 1.29, 1.20.
+    subroutine test_error_estimate(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        type(entry_t), allocatable :: e(:)
+        real(dp) :: exact, ratio, cb
+        integer :: k, ne, i, j
+        cb = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
+        do k = 1, 2
+            do ne = 16, 32, 16
+                c%m = model_t()
+                c%m%kind = MODEL_PLATE
+                c%m%nondim = .true.
+                c%m%rho_in = 1.0e3_dp
+                c%m%zeta_in = 0.1_dp
+                c%m%nu_f = 0.1_dp
+                c%m%f = merge(0.0_dp, 1.0e3_dp, k == 1)
+                c%m%ne = ne
+                c%m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+                call complete_model(c%m)
+                call solve_model(c, err)
+                if (allocated(err)) return
+                e = summary_entries(c%m, summarise(c%m, c%sol, c%tab), &
+                                    contact_extent(c%tab, c%m%length))
+                call estimate_errors(c%m, c%d, e)
+                i = 0
+                do j = 1, size(e)
+                    if (trim(e(j)%key) == 'settlement_max') i = j
+                end do
+                exact = merge(250.0_dp, 250.0_dp/cb, k == 1)
+                ratio = e(i)%error/abs(e(i)%value - exact)
+                call check(err, e(i)%has_error .and. ratio >= 1.0_dp .and. ratio <= 3.0_dp, &
+                           'error estimate of W(0) does not bound the closed-form error within 3x')
+                if (allocated(err)) return
+            end do
+        end do
+    end subroutine test_error_estimate
 
     !> The first number after `key` on a line of a JSON file (huge if absent; the units block
     !! holds the same keys with strings, which are skipped).

@@ -15,7 +15,8 @@ module report_writer
     use station_results, only: station_table_t, contact_extent, FLAG_TENSION, FLAG_OVERLAP
     use design_summary, only: summary_t, interval_t
     use figure_templates, only: panel_template, sweep_template
-    use summary_table, only: entry_t, summary_entries
+    use summary_table, only: entry_t
+    use error_estimate, only: error_method_text
     implicit none
     private
 
@@ -107,15 +108,15 @@ contains
 
     !> output/CASE.json: status, units, the key results (summary_table), contact intervals
     !! and the checks. A failed case gets its status and message, and no results.
-    subroutine write_summary_json(path, name, deck_path, m, status, message, s, sol, tab, err)
+    subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err)
         character(len=*), intent(in) :: path, name, deck_path, message
         type(model_t), intent(in) :: m
         integer, intent(in) :: status
+        type(entry_t), intent(in) :: e(:)          !! key results with their error estimates
         type(summary_t), intent(in) :: s
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(in) :: tab
         type(error_t), allocatable, intent(out) :: err
-        type(entry_t), allocatable :: e(:)
         type(units_t) :: un
         integer :: u, i
         call open_temporary(path, u, err)
@@ -135,7 +136,6 @@ contains
             call commit_file(path, u, err)
             return
         end if
-        e = summary_entries(m, s, contact_extent(tab, m%length))
         write (u, '(a)') '  "units": {'
         do i = 1, size(e)
             write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '//json_string(trim(e(i)%unit))//','
@@ -153,10 +153,42 @@ contains
         end do
         call write_json_intervals(u, m, s%intervals)
         write (u, '(a)') '  },'
+        call write_json_errors(u, e)
         call write_json_checks(u, sol, tab, s)
         write (u, '(a)') '}'
         call commit_file(path, u, err)
     end subroutine write_summary_json
+
+    !> "errors": the estimated absolute error of each estimated key (same unit as the
+    !! result), "error_orders": the observed order (null where first order was assumed),
+    !! "error_method": how the estimate was obtained (module error_estimate).
+    subroutine write_json_errors(u, e)
+        integer, intent(in) :: u
+        type(entry_t), intent(in) :: e(:)
+        integer :: i, k
+        character(len=*), parameter :: blocks(2) = ['errors      ', 'error_orders']
+        do k = 1, 2
+            write (u, '(a)', advance='no') '  "'//trim(blocks(k))//'": {'
+            first: block
+                logical :: first_item
+                first_item = .true.
+                do i = 1, size(e)
+                    if (.not. e(i)%has_error) cycle
+                    if (.not. first_item) write (u, '(a)', advance='no') ', '
+                    if (k == 1) then
+                        write (u, '(a)', advance='no') json_string(trim(e(i)%key))//': '// &
+                            json_number(e(i)%error, .true.)
+                    else
+                        write (u, '(a)', advance='no') json_string(trim(e(i)%key))//': '// &
+                            json_number(e(i)%order, e(i)%order > 0.0_dp)
+                    end if
+                    first_item = .false.
+                end do
+            end block first
+            write (u, '(a)') '},'
+        end do
+        write (u, '(a)') '  "error_method": '//json_string(error_method_text())//','
+    end subroutine write_json_errors
 
     subroutine write_json_intervals(u, m, iv)
         integer, intent(in) :: u
@@ -567,8 +599,10 @@ contains
     end function shell_safe
 
     !> The text report. `failure` non-empty: ANALYSIS FAILED banner, log only.
-    subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, s, failure, notes, err)
+    subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, e, s, failure, notes, &
+                            err)
         character(len=*), intent(in) :: path, deck_path, label, failure
+        type(entry_t), intent(in) :: e(:)          !! key results with their error estimates
         character(len=*), intent(in) :: notes(:)   !! 'WARNING: ...' and 'NOTE: ...' lines
         character(len=*), intent(in) :: lines(:)
         type(model_t), intent(in) :: m
@@ -598,7 +632,7 @@ contains
             if (.not. m%nondim) call write_table(u, ' 6. STATIONS (physical units)', &
                                                  physical_columns(m), tab, .false.)
             call write_station_notes(u, m, tab)
-            call write_summary(u, m, s, tab)
+            call write_summary(u, m, e, s)
             call write_checks(u, m, sol, tab, s)
         end if
         if (any(len_trim(notes) > 0)) write (u, '(a)') ''
@@ -781,30 +815,49 @@ contains
     end subroutine write_station_notes
 
     !> The design summary: the entries of summary_table, then the contact intervals.
-    subroutine write_summary(u, m, s, tab)
+    subroutine write_summary(u, m, e, s)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
+        type(entry_t), intent(in) :: e(:)
         type(summary_t), intent(in) :: s
-        type(station_table_t), intent(in) :: tab
-        type(entry_t), allocatable :: e(:)
         integer :: i
-        e = summary_entries(m, s, contact_extent(tab, m%length))
         write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional, SPEC 6', &
-            'physical units        ', m%nondim))//')'
+            'physical units        ', m%nondim))//')'//repeat(' ', 16)//'estimated error (*)'
         do i = 1, size(e)
             if (.not. e(i)%defined) then
                 write (u, '(3x,a,t52,a)') e(i)%label, 'n/a'
             else if (e(i)%integer_valued) then
                 write (u, '(3x,a,t52,i14)') e(i)%label, nint(e(i)%value)
+            else if (e(i)%has_error) then
+                write (u, '(3x,a,t52,es14.5,2x,a,t82,a,es9.2,a)') e(i)%label, e(i)%value, &
+                    trim(e(i)%unit), '+-', e(i)%error, trim(order_text(e(i)%order))
             else
                 write (u, '(3x,a,t52,es14.5,2x,a)') e(i)%label, e(i)%value, trim(e(i)%unit)
             end if
         end do
+        if (any(e%has_error)) then
+            write (u, '(3x,a)') '(*) '//error_method_text()
+        else
+            write (u, '(3x,a)') '(*) no error estimate: it needs N_e >= 16 (two coarser meshes '// &
+                'of at least 4 elements) and coarse solves that converge'
+        end if
         call write_intervals(u, m, s%intervals)
         write (u, '(3x,a)') 'The pressure at an edge in contact is singular in theory: the station '// &
             'maximum there depends on the mesh;'
         write (u, '(3x,a)') 'use the mean pressure and the pressure at d from the edge for design.'
     end subroutine write_summary
+
+    pure function order_text(p) result(text)
+        real(dp), intent(in) :: p
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        if (p > 0.0_dp) then
+            write (buf, '(a,f4.1)') '  p ', p
+        else
+            buf = '  p* 1'
+        end if
+        text = trim(buf)
+    end function order_text
 
     subroutine write_intervals(u, m, iv)
         integer, intent(in) :: u

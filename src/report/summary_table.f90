@@ -20,6 +20,9 @@ module summary_table
         real(dp) :: value = 0.0_dp
         logical :: defined = .true.         !! false: not applicable (printed as null / blank)
         logical :: integer_valued = .false. !! a count
+        logical :: has_error = .false.      !! an error estimate is attached (error_estimate)
+        real(dp) :: error = 0.0_dp          !! estimated absolute error, same unit as value
+        real(dp) :: order = -1.0_dp         !! observed order of convergence (-1: assumed 1)
     end type entry_t
 
     !> Scale factors from deck units to what is printed.

@@ -1,0 +1,115 @@
+!> An estimate of the discretisation error of a case's key results, from the same case solved
+!! on two coarser meshes of the same family (N_e/2 and N_e/4 elements, same grading and
+!! interpolation; nested for UNIFORM meshes). With Q_1, Q_2, Q_4 the results on N_e, N_e/2 and
+!! N_e/4 elements, the observed order is p = log2(|Q_4 - Q_2| / |Q_2 - Q_1|) and the estimate
+!! of the error of Q_1 is Roache's grid convergence index
+!!     E = Fs |Q_2 - Q_1| / (2^p - 1),
+!! with Fs = 1.25 when the three values converge monotonically with 0.5 <= p <= 4 (the
+!! asymptotic range), else E = 3 max(|Q_2 - Q_1|, |Q_4 - Q_2|/2) (first order assumed; a
+!! conservative band for erratic convergence: a load edge or contact boundary that each mesh
+!! cuts at a different place inside an element). The contact
+!! extent moves in steps of the stations, so its estimate is at least half the largest
+!! element next to the contact boundary. The extra solves cost about 1/8 + 1/64 of the case's
+!! dense solves; a coarse solve that fails leaves the estimate undefined, never the case.
+module error_estimate
+    use kinds, only: dp
+    use errors, only: error_t
+    use model, only: model_t
+    use discretization, only: discretization_t, new_discretization
+    use contact_solver, only: solution_t, solve_contact
+    use station_results, only: station_table_t, tabulate, contact_extent
+    use design_summary, only: summary_t, summarise
+    use summary_table, only: entry_t, summary_entries
+    implicit none
+    private
+
+    !> The keys of summary_table that get an estimate.
+    character(len=*), parameter :: estimated_keys(8) = [character(len=32) :: 'settlement_max', &
+        'differential_settlement', 'contact_extent_t', 'moment_sagging', 'moment_hogging', &
+        'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim']
+    integer, parameter :: min_coarse_elements = 4
+
+    public :: estimate_errors, error_method_text
+
+contains
+
+    !> Fill e(:)%error (and %has_error, %order) for the estimated keys of a solved case.
+    subroutine estimate_errors(m, d, e)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d   !! the case's own discretisation
+        type(entry_t), intent(inout) :: e(:)
+        type(entry_t), allocatable :: e2(:), e4(:)
+        real(dp) :: h_edge
+        logical :: ok2, ok4
+        integer :: i
+        if (m%ne/4 < min_coarse_elements) return
+        call coarse_entries(m, m%ne/2, e2, ok2)
+        if (.not. ok2) return
+        call coarse_entries(m, m%ne/4, e4, ok4)
+        if (.not. ok4) return
+        ! the contact extent moves by whole stations: at least half the largest element (as t)
+        h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%length
+        do i = 1, size(e)
+            if (.not. any(estimated_keys == e(i)%key)) cycle
+            if (.not. (e(i)%defined .and. e2(i)%defined .and. e4(i)%defined)) cycle
+            call richardson(e(i)%value, e2(i)%value, e4(i)%value, e(i)%error, e(i)%order)
+            if (trim(e(i)%key) == 'contact_extent_t') e(i)%error = max(e(i)%error, 0.5_dp*h_edge)
+            e(i)%has_error = .true.
+        end do
+    end subroutine estimate_errors
+
+    !> The key results of the case on ne elements (ok false when the solve fails).
+    subroutine coarse_entries(m, ne, e, ok)
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: ne
+        type(entry_t), allocatable, intent(out) :: e(:)
+        logical, intent(out) :: ok
+        type(model_t) :: mc
+        type(discretization_t) :: d
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(summary_t) :: s
+        type(error_t), allocatable :: err
+        mc = m
+        mc%ne = ne
+        ok = .false.
+        call new_discretization(mc, d, err)
+        if (allocated(err)) return
+        call solve_contact(mc, d, sol, err)
+        if (.not. allocated(err)) call tabulate(mc, d, sol, tab, err)
+        if (allocated(err)) return
+        s = summarise(mc, sol, tab)
+        e = summary_entries(mc, s, contact_extent(tab, mc%length))
+        ok = .true.
+    end subroutine coarse_entries
+
+    !> GCI estimate of the error of q1 from q1, q2, q4 (fine, medium, coarse); order: the
+    !! observed p, or -1 when p = 1 was assumed.
+    pure subroutine richardson(q1, q2, q4, error, order)
+        real(dp), intent(in) :: q1, q2, q4
+        real(dp), intent(out) :: error, order
+        real(dp) :: d12, d24, p
+        d12 = q2 - q1
+        d24 = q4 - q2
+        order = -1.0_dp
+        ! not (yet) regular: first order assumed, the larger of the two differences (a
+        ! difference that happens to be small must not make the band small), Fs = 3
+        error = 3.0_dp*max(abs(d12), 0.5_dp*abs(d24))
+        if (d12 == 0.0_dp .or. d24 == 0.0_dp) return
+        if (sign(1.0_dp, d12) /= sign(1.0_dp, d24)) return
+        p = log(abs(d24)/abs(d12))/log(2.0_dp)
+        if (p < 0.5_dp .or. p > 4.0_dp) return
+        order = p
+        error = 1.25_dp*abs(d12)/(2.0_dp**p - 1.0_dp)
+    end subroutine richardson
+
+    !> One line for reports: how the estimate was obtained.
+    pure function error_method_text() result(text)
+        character(len=:), allocatable :: text
+        text = 'estimated error: the case re-solved on N_e/2 and N_e/4 elements (same grading '// &
+               'and interpolation); E = 1.25 |Q(N_e/2) - Q(N_e)| / (2^p - 1) with the observed '// &
+               'order p, or (p*) 3 max(|Q(N_e/2) - Q(N_e)|, |Q(N_e/4) - Q(N_e/2)|/2) where '// &
+               'convergence is not yet regular; '// &
+               'contact extent at least half an edge element'
+    end function error_method_text
+end module error_estimate
