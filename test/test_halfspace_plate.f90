@@ -58,7 +58,8 @@ contains
                  new_unittest('symmetric', test_symmetric), &
                  new_unittest('positive_definite', test_positive_definite), &
                  new_unittest('incompressible_no_coupling', test_incompressible), &
-                 new_unittest('rigid_punch_convergence', test_punch)]
+                 new_unittest('rigid_punch_convergence', test_punch), &
+                 new_unittest('fast_vs_reference_assembly', test_fast_vs_reference)]
     end subroutine collect_halfspace_plate
 
     ! ------------------------------------------------------------------ helpers
@@ -401,8 +402,9 @@ contains
         if (allocated(err)) return
     end subroutine test_nested
 
-    !> T symmetric (both triangles are integrated, nothing is symmetrised), all base pairs,
-    !! uniform and graded meshes: max |T - T^T| <= 1e-12 max |T|.
+    !> T symmetric, all base pairs, uniform and graded meshes: max |T - T^T| <= 1e-12 max |T|.
+    !! (galerkin_assembly integrates one triangle and mirrors it by reciprocity; both triangles
+    !! are checked independently by galerkin_vs_nested_displacement.)
     subroutine test_symmetric(err)
         type(error_t), allocatable, intent(out) :: err
         type(basis_t) :: bx, bz
@@ -525,4 +527,38 @@ contains
             deallocate (m, c)
         end do levels
     end subroutine test_punch
+
+    !> The fixed-order assembly (galerkin_assembly) against the adaptive pair-by-pair reference
+    !! (assemble_split_kernel_reference): N_e = 12 and 17, uniform and graded meshes, bases
+    !! P1/P1, P2/P2, S2/S2, P2/S2, two nu; every entry within 1e-13 of the largest.
+    subroutine test_fast_vs_reference(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :), t_ref(:, :)
+        integer :: ic, ig, inu
+        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_P2, &
+            INTERP_S2, INTERP_S2, INTERP_P2, INTERP_S2], [2, 4])
+        integer, parameter :: nes(4) = [12, 17, 17, 12]
+        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
+        real(dp), parameter :: nus(2) = [0.1_dp, 0.3_dp]
+        character(len=80) :: what
+        cases: do ic = 1, size(nes)
+            meshes: do ig = 1, 2
+                call make_bases(nes(ic), trim(gradings(ig)), fams(1, ic), fams(2, ic), bx, bz, err)
+                if (allocated(err)) return
+                poisson: do inu = 1, 2
+                    call assemble_plate_flexibility(bx, bz, 2.3_dp, nus(inu), t, err)
+                    if (allocated(err)) return
+                    call assemble_plate_flexibility(bx, bz, 2.3_dp, nus(inu), t_ref, err, &
+                                                    reference=.true.)
+                    if (allocated(err)) return
+                    write (what, '("fast vs reference, case ",i0,", ",a,", parameter ",i0)') ic, &
+                        trim(gradings(ig)), inu
+                    call check_close(err, maxval(abs(t - t_ref))/maxval(abs(t_ref)), 0.0_dp, &
+                                     0.0_dp, 1.0e-13_dp, trim(what))
+                    if (allocated(err)) return
+                end do poisson
+            end do meshes
+        end do cases
+    end subroutine test_fast_vs_reference
 end module test_halfspace_plate

@@ -23,12 +23,14 @@
 !! s G_ji(s,r), positive definite. All kernels are homogeneous of degree 0, G(r,s) = F(s/r):
 !! the element at the axis is integrated in ratio coordinates (see singular_quadrature).
 module halfspace_plate
+    use iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, add_context, EXIT_INPUT
     use gsl_wrappers, only: elliptic_ke_m1
     use shape_functions, only: basis_t
-    use singular_quadrature, only: split_kernel_t, assemble_split_kernel, &
+    use singular_quadrature, only: split_kernel_t, assemble_split_kernel_reference, &
                                    displacement_split_kernel
+    use galerkin_assembly, only: assemble_split_kernel
     implicit none
     private
 
@@ -49,14 +51,17 @@ module halfspace_plate
 contains
 
     !> Galerkin flexibility T of the half-space on the disk r in [0, a] (module header).
-    subroutine assemble_plate_flexibility(bx, bz, g_f, nu_f, t_mat, err)
+    subroutine assemble_plate_flexibility(bx, bz, g_f, nu_f, t_mat, err, reference, n_kernel)
         type(basis_t), intent(in) :: bx                 !! basis of sigma_x (radial shear)
         type(basis_t), intent(in) :: bz                 !! basis of sigma_z (pressure), same mesh
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
         real(dp), intent(in) :: nu_f                    !! soil Poisson's ratio, [0, 0.5]
         real(dp), allocatable, intent(out) :: t_mat(:, :)  !! (nx+nz)^2 [length^3/force]
         type(error_t), allocatable, intent(out) :: err
+        logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
+        integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
         type(ring_kernel_t) :: kernel
+        logical :: use_reference
         call new_ring_kernel(kernel, g_f, nu_f, err)
         if (allocated(err)) return
         if (bx%ne >= 1 .and. allocated(bx%x)) then
@@ -66,7 +71,13 @@ contains
                 return
             end if
         end if
-        call assemble_split_kernel(kernel, bx, bz, t_mat, err)
+        use_reference = .false.
+        if (present(reference)) use_reference = reference
+        if (use_reference) then
+            call assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
+        else
+            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+        end if
         if (allocated(err)) call add_context(err, 'plate half-space operator')
     end subroutine assemble_plate_flexibility
 

@@ -28,6 +28,7 @@
 !!    rule in t next to t = 1;
 !!  * well separated pairs: tensor GL with the number of points set by distance/size.
 module singular_quadrature
+    use iso_fortran_env, only: int64
     use kinds, only: dp
     use errors, only: error_t, new_error, add_context, EXIT_INTERNAL
     use quadrature, only: gauss_legendre
@@ -37,7 +38,8 @@ module singular_quadrature
 
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
     public :: new_gauss_tables, build_pair_rule, build_line_rule
-    public :: assemble_split_kernel, displacement_split_kernel
+    public :: assemble_split_kernel_reference, displacement_split_kernel
+    public :: check_bases, basis_at, points_for_ratio, near_ratio
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     integer, parameter :: n_log = 24        !! points of the product-log rule
@@ -416,13 +418,16 @@ contains
     end subroutine check_bases
 
     !> T_ab = int int g_a(x) W(x) K(x, xi) g_b(xi) dxi dx, blocks [T_xx T_xz; T_zx T_zz] with all
-    !! bx coefficients first. Both triangles are integrated (no symmetrisation).
-    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err)
+    !! bx coefficients first. Both triangles are integrated (no symmetrisation). Reference
+    !! assembly: a rule built point by point for every element pair (graded pieces, GL orders
+    !! for 1e-17 per direction); `galerkin_assembly` is the fast one used by the program.
+    subroutine assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         type(error_t), allocatable, intent(out) :: err
+        integer(int64), intent(out), optional :: n_kernel   !! kernel evaluations (point pairs)
         type(gauss_tables_t) :: tab
         type(point_rule_t) :: rule
         type(line_rule_t) :: line
@@ -431,6 +436,7 @@ contains
         integer :: e1, e2, nx, nz
         character(len=60) :: where
 
+        if (present(n_kernel)) n_kernel = 0_int64
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         nx = bx%n_dof
@@ -447,6 +453,7 @@ contains
                                      kernel%homogeneous .and. e1 == e2 .and. &
                                      .not. kernel%log_length(a1) > 0.0_dp, rule, line)
                 call grow(f, p, rule%n)
+                if (present(n_kernel)) n_kernel = n_kernel + int(rule%n, int64)
                 call kernel%values(rule%x(1:rule%n), rule%xi(1:rule%n), &
                                    rule%wc(1:rule%n) /= 0.0_dp, f, p, err)
                 if (allocated(err)) then
@@ -457,7 +464,7 @@ contains
                 call add_pair(kernel, bx, bz, e1, e2, rule, f, p, t_mat)
             end do source_elements
         end do field_elements
-    end subroutine assemble_split_kernel
+    end subroutine assemble_split_kernel_reference
 
     !> Make sure the kernel work arrays hold n points.
     pure subroutine grow(f, p, n)

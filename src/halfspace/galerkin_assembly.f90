@@ -1,0 +1,280 @@
+!> Galerkin assembly of the half-space flexibility T at the cost of its kernel evaluations.
+!!
+!! T_ab = int int g_a(x) W(x) K(x, xi) g_b(xi) dxi dx (W = 1 beam, 2 pi x plate), blocks
+!! [T_xx T_xz; T_zx T_zz] with all bx coefficients first; K a kernel in split form
+!! (`singular_quadrature`). Element pairs are integrated with fixed-order rules:
+!!  * well separated pairs (gap >= near_ratio times the longer element): tensor Gauss–Legendre,
+!!    n points per direction from the Bernstein-ellipse parameter of gap/size (error rho^(-2n)
+!!    per direction at 1e-16, `points_for_ratio`); the kernel is evaluated once per point pair
+!!    and contracted with all local basis products of the pair at once, as
+!!    L = B_f diag(w_f W) K diag(w_s) B_s^T;
+!!  * touching and nearly touching pairs: the product-log rules of `singular_quadrature` (log
+!!    singularity integrated with Legendre moments of ln, steps on the cut lines, ratio
+!!    coordinates at the axis), fixed orders, again one kernel evaluation per point pair.
+!! Only pairs e2 >= e1 are integrated; the pair (e2, e1) is the transpose by reciprocity
+!! (W(x) K_ij(x, xi) = W(xi) K_ji(xi, x): r G_ij(r, s) = s G_ji(s, r) for the rings, k_ij(X) =
+!! k_ji(-X) for the strip), and the self pairs are symmetrised, so T is exactly symmetric.
+!! `assemble_split_kernel_reference` builds the same integrals pair by pair from scratch and is
+!! kept as the reference of the tests.
+module galerkin_assembly
+    use iso_fortran_env, only: int64
+    use kinds, only: dp
+    use errors, only: error_t, add_context
+    use shape_functions, only: basis_t, eval_basis, max_local
+    use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
+                                   new_gauss_tables, build_pair_rule, check_bases, basis_at, &
+                                   points_for_ratio, near_ratio
+    implicit none
+    private
+
+    public :: assemble_split_kernel
+
+    integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
+
+    !> Local numbering of one element pair: rows (field element) and columns (source element),
+    !! first the bx functions then the bz functions.
+    type :: pair_map_t
+        integer :: nf = 0                         !! local rows
+        integer :: ns = 0                         !! local columns
+        integer :: comp_f(n_loc) = 0              !! 1 = bx (tangential), 2 = bz (normal)
+        integer :: comp_s(n_loc) = 0
+        integer :: row(n_loc) = 0                 !! global row of each local row
+        integer :: col(n_loc) = 0                 !! global column of each local column
+    end type pair_map_t
+
+    !> Work arrays reused over the element pairs.
+    type :: work_t
+        type(gauss_tables_t) :: tab
+        type(point_rule_t) :: rule
+        type(line_rule_t) :: line
+        real(dp), allocatable :: x(:), xi(:)       !! point pairs
+        logical, allocatable :: with_log(:)
+        real(dp), allocatable :: f(:, :, :), p(:, :, :)
+        integer(int64) :: n_kernel = 0_int64       !! kernel evaluations so far
+    end type work_t
+
+contains
+
+    !> T (module header); n_kernel returns the number of kernel evaluations (point pairs).
+    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx            !! basis of sigma_x
+        type(basis_t), intent(in) :: bz            !! basis of sigma_z, same mesh
+        real(dp), allocatable, intent(out) :: t_mat(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        integer(int64), intent(out), optional :: n_kernel
+        type(work_t) :: work
+        type(pair_map_t) :: map
+        real(dp) :: loc(n_loc, n_loc)
+        integer :: e1, e2
+        character(len=60) :: where
+        call check_bases(bx, bz, err)
+        if (allocated(err)) return
+        allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
+        call new_gauss_tables(work%tab)
+        call reserve(work, 1024)
+        field_elements: do e1 = 1, bx%ne
+            source_elements: do e2 = e1, bx%ne
+                call new_pair_map(bx, bz, e1, e2, map)
+                call pair_integrals(kernel, bx, bz, e1, e2, map, work, loc, err)
+                if (allocated(err)) then
+                    write (where, '("half-space operator, elements ",i0," and ",i0)') e1, e2
+                    call add_context(err, trim(where))
+                    return
+                end if
+                call scatter(map, e1 == e2, loc, t_mat)
+            end do source_elements
+        end do field_elements
+        if (present(n_kernel)) n_kernel = work%n_kernel
+    end subroutine assemble_split_kernel
+
+    !> Local and global numbering of the functions of elements e1 (rows) and e2 (columns).
+    pure subroutine new_pair_map(bx, bz, e1, e2, map)
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2
+        type(pair_map_t), intent(out) :: map
+        call element_numbers(bx, bz, e1, map%nf, map%comp_f, map%row)
+        call element_numbers(bx, bz, e2, map%ns, map%comp_s, map%col)
+    end subroutine new_pair_map
+
+    !> Functions nonzero on element e: count, field (1 = bx, 2 = bz) and global number.
+    pure subroutine element_numbers(bx, bz, e, n, comp, glob)
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e
+        integer, intent(out) :: n, comp(n_loc), glob(n_loc)
+        integer :: idx(max_local)
+        real(dp) :: val(max_local), der(max_local), x_out
+        call eval_basis(bx, e, 0.0_dp, idx, val, der, x_out)
+        comp(1:bx%n_local) = 1
+        glob(1:bx%n_local) = idx(1:bx%n_local)
+        call eval_basis(bz, e, 0.0_dp, idx, val, der, x_out)
+        n = bx%n_local + bz%n_local
+        comp(bx%n_local + 1:n) = 2
+        glob(bx%n_local + 1:n) = bx%n_dof + idx(1:bz%n_local)
+    end subroutine element_numbers
+
+    !> Make the work arrays hold n point pairs.
+    pure subroutine reserve(work, n)
+        type(work_t), intent(inout) :: work
+        integer, intent(in) :: n
+        integer :: cap
+        if (allocated(work%x)) then
+            if (size(work%x) >= n) return
+            deallocate (work%x, work%xi, work%with_log, work%f, work%p)
+        end if
+        cap = max(n, 1024)
+        allocate (work%x(cap), work%xi(cap), work%with_log(cap), work%f(2, 2, cap), &
+                  work%p(2, 2, cap))
+    end subroutine reserve
+
+    !> loc(r, c) = int int g_r(x) W(x) K_{comp_f(r), comp_s(c)}(x, xi) g_c(xi) over e1 x e2.
+    subroutine pair_integrals(kernel, bx, bz, e1, e2, map, work, loc, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2
+        type(pair_map_t), intent(in) :: map
+        type(work_t), intent(inout) :: work
+        real(dp), intent(out) :: loc(n_loc, n_loc)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: a1, b1, a2, b2, gap
+        a1 = bx%x(e1 - 1)
+        b1 = bx%x(e1)
+        a2 = bx%x(e2 - 1)
+        b2 = bx%x(e2)
+        gap = max(a2 - b1, a1 - b2)
+        if (gap >= near_ratio*max(b1 - a1, b2 - a2)) then
+            call tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, &
+                             points_for_ratio(gap/(b1 - a1)), points_for_ratio(gap/(b2 - a2)), &
+                             map, work, loc, err)
+        else
+            call build_pair_rule(work%tab, a1, b1, a2, b2, kernel%log_length(max(a1, a2)), &
+                                 kernel%homogeneous .and. e1 == e2 .and. &
+                                 .not. kernel%log_length(a1) > 0.0_dp, work%rule, work%line)
+            call rule_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
+        end if
+    end subroutine pair_integrals
+
+    !> Tensor GL rule n1 x n2 on a well separated pair: one kernel evaluation per point pair,
+    !! contracted with all basis products, loc = B_f diag(w_f W) K diag(w_s) B_s^T.
+    subroutine tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, n1, n2, map, work, loc, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2, n1, n2
+        real(dp), intent(in) :: a1, b1, a2, b2
+        type(pair_map_t), intent(in) :: map
+        type(work_t), intent(inout) :: work
+        real(dp), intent(out) :: loc(n_loc, n_loc)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: xf(n1), xs(n2), bf(n_loc, n1), bs(n_loc, n2), tmp(2, n2)
+        integer :: i, j, k, r, c
+        xf = a1 + (b1 - a1)*work%tab%v(1:n1, n1)
+        xs = a2 + (b2 - a2)*work%tab%v(1:n2, n2)
+        call weighted_basis(kernel, bx, bz, e1, xf, (b1 - a1)*work%tab%w(1:n1, n1), .true., bf)
+        call weighted_basis(kernel, bx, bz, e2, xs, (b2 - a2)*work%tab%w(1:n2, n2), .false., bs)
+        call reserve(work, n1*n2)
+        field_points: do i = 1, n1
+            work%x((i - 1)*n2 + 1:i*n2) = xf(i)
+            work%xi((i - 1)*n2 + 1:i*n2) = xs
+        end do field_points
+        work%with_log(1:n1*n2) = .false.
+        call kernel%values(work%x(1:n1*n2), work%xi(1:n1*n2), work%with_log(1:n1*n2), &
+                           work%f(:, :, 1:n1*n2), work%p(:, :, 1:n1*n2), err)
+        if (allocated(err)) return
+        work%n_kernel = work%n_kernel + int(n1*n2, int64)
+        loc = 0.0_dp
+        rows: do r = 1, map%nf
+            source_points: do j = 1, n2
+                contract_field: do c = 1, 2
+                    tmp(c, j) = 0.0_dp
+                    do i = 1, n1
+                        k = (i - 1)*n2 + j
+                        tmp(c, j) = tmp(c, j) + bf(r, i)*work%f(map%comp_f(r), c, k)
+                    end do
+                end do contract_field
+            end do source_points
+            columns: do c = 1, map%ns
+                loc(r, c) = dot_product(tmp(map%comp_s(c), 1:n2), bs(c, 1:n2))
+            end do columns
+        end do rows
+    end subroutine tensor_pair
+
+    !> b(r, i) = g_r(x_i) w_i (times W(x_i) on the field side) for the local functions of e.
+    pure subroutine weighted_basis(kernel, bx, bz, e, x, w, field, b)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e
+        real(dp), intent(in) :: x(:)           !! points on element e
+        real(dp), intent(in) :: w(:)           !! their weights
+        logical, intent(in) :: field           !! include the field measure W(x)
+        real(dp), intent(out) :: b(:, :)       !! b(r, i), r over the bx then the bz functions
+        integer :: idx(max_local), i
+        real(dp) :: val(max_local), wi
+        points: do i = 1, size(x)
+            wi = w(i)
+            if (field) wi = wi*kernel%field_weight(x(i))
+            call basis_at(bx, e, x(i), idx, val)
+            b(1:bx%n_local, i) = val(1:bx%n_local)*wi
+            call basis_at(bz, e, x(i), idx, val)
+            b(bx%n_local + 1:bx%n_local + bz%n_local, i) = val(1:bz%n_local)*wi
+        end do points
+    end subroutine weighted_basis
+
+    !> A general point rule (work%rule) on a touching pair: one kernel evaluation per point,
+    !! F with weight w and the log coefficient P with weight wc, added to every basis product.
+    subroutine rule_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2
+        type(pair_map_t), intent(in) :: map
+        type(work_t), intent(inout) :: work
+        real(dp), intent(out) :: loc(n_loc, n_loc)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: bf(n_loc, 1), bs(n_loc, 1), c(2, 2)
+        integer :: k, n, r, col
+        n = work%rule%n
+        call reserve(work, n)
+        work%with_log(1:n) = work%rule%wc(1:n) /= 0.0_dp
+        call kernel%values(work%rule%x(1:n), work%rule%xi(1:n), work%with_log(1:n), &
+                           work%f(:, :, 1:n), work%p(:, :, 1:n), err)
+        if (allocated(err)) return
+        work%n_kernel = work%n_kernel + int(n, int64)
+        loc = 0.0_dp
+        points: do k = 1, n
+            call weighted_basis(kernel, bx, bz, e1, work%rule%x(k:k), [1.0_dp], .true., bf)
+            call weighted_basis(kernel, bx, bz, e2, work%rule%xi(k:k), [1.0_dp], .false., bs)
+            c = work%rule%w(k)*work%f(:, :, k)
+            if (work%with_log(k)) c = c + work%rule%wc(k)*work%p(:, :, k)
+            columns: do col = 1, map%ns
+                rows: do r = 1, map%nf
+                    loc(r, col) = loc(r, col) + bf(r, 1)*c(map%comp_f(r), map%comp_s(col))* &
+                                  bs(col, 1)
+                end do rows
+            end do columns
+        end do points
+    end subroutine rule_pair
+
+    !> Add loc to T at (rows, columns) and, for e2 > e1, its transpose at (columns, rows); a self
+    !! pair is symmetrised (its rule is symmetric only up to rounding).
+    pure subroutine scatter(map, self_pair, loc, t_mat)
+        type(pair_map_t), intent(in) :: map
+        logical, intent(in) :: self_pair
+        real(dp), intent(in) :: loc(n_loc, n_loc)
+        real(dp), intent(inout) :: t_mat(:, :)
+        integer :: r, c
+        if (self_pair) then
+            self_columns: do c = 1, map%ns
+                self_rows: do r = 1, map%nf
+                    t_mat(map%row(r), map%col(c)) = t_mat(map%row(r), map%col(c)) + &
+                                                    0.5_dp*(loc(r, c) + loc(c, r))
+                end do self_rows
+            end do self_columns
+            return
+        end if
+        columns: do c = 1, map%ns
+            rows: do r = 1, map%nf
+                t_mat(map%row(r), map%col(c)) = t_mat(map%row(r), map%col(c)) + loc(r, c)
+                t_mat(map%col(c), map%row(r)) = t_mat(map%col(c), map%row(r)) + loc(r, c)
+            end do rows
+        end do columns
+    end subroutine scatter
+end module galerkin_assembly
