@@ -22,14 +22,16 @@ module galerkin_assembly
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
     use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
-                                   new_gauss_tables, build_pair_rule, check_bases, basis_at, &
-                                   points_for_ratio, near_ratio
+                                   new_gauss_tables, build_pair_rule, build_line_rule, &
+                                   check_bases, basis_at, points_for_ratio, near_ratio
     implicit none
     private
 
     public :: assemble_split_kernel
 
     integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
+    integer, parameter :: n_across = 4   !! GL points across the reduced variable: exact for the
+                                         !! basis products (degree <= 6 with the ring measure)
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
     !! first the bx functions then the bz functions.
@@ -48,6 +50,7 @@ module galerkin_assembly
         type(point_rule_t) :: rule
         type(line_rule_t) :: line
         real(dp), allocatable :: x(:), xi(:)       !! point pairs
+        real(dp), allocatable :: w(:), wc(:)       !! weights of F and of its log coefficient P
         logical, allocatable :: with_log(:)
         real(dp), allocatable :: f(:, :, :), p(:, :, :)
         integer(int64) :: n_kernel = 0_int64       !! kernel evaluations so far
@@ -120,11 +123,11 @@ contains
         integer :: cap
         if (allocated(work%x)) then
             if (size(work%x) >= n) return
-            deallocate (work%x, work%xi, work%with_log, work%f, work%p)
+            deallocate (work%x, work%xi, work%w, work%wc, work%with_log, work%f, work%p)
         end if
         cap = max(n, 1024)
-        allocate (work%x(cap), work%xi(cap), work%with_log(cap), work%f(2, 2, cap), &
-                  work%p(2, 2, cap))
+        allocate (work%x(cap), work%xi(cap), work%w(cap), work%wc(cap), work%with_log(cap), &
+                  work%f(2, 2, cap), work%p(2, 2, cap))
     end subroutine reserve
 
     !> loc(r, c) = int int g_r(x) W(x) K_{comp_f(r), comp_s(c)}(x, xi) g_c(xi) over e1 x e2.
@@ -146,6 +149,8 @@ contains
             call tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, &
                              points_for_ratio(gap/(b1 - a1)), points_for_ratio(gap/(b2 - a2)), &
                              map, work, loc, err)
+        else if (kernel%homogeneous .or. kernel%translation_invariant) then
+            call reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
         else
             call build_pair_rule(work%tab, a1, b1, a2, b2, kernel%log_length(max(a1, a2)), &
                                  kernel%homogeneous .and. e1 == e2 .and. &
@@ -218,6 +223,182 @@ contains
             b(bx%n_local + 1:bx%n_local + bz%n_local, i) = val(1:bz%n_local)*wi
         end do points
     end subroutine weighted_basis
+
+    !> Touching pair of a kernel that depends on one combination v of (x, xi) only: v = x - xi
+    !! (translation invariant, strip) or v = x/xi (homogeneous of degree 0, rings; then
+    !! ln|x - xi| = ln xi + ln|v - 1|). Product-log rule in v cut at the kinks of the range
+    !! across it, ONE kernel evaluation per node of v, and the integral across v of the basis
+    !! products exact by n_across GL points. A self pair integrates the triangle x < xi and
+    !! adds the transpose (the other triangle, by reciprocity).
+    subroutine reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2
+        type(pair_map_t), intent(in) :: map
+        type(work_t), intent(inout) :: work
+        real(dp), intent(out) :: loc(n_loc, n_loc)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: cuts(5), v_sing, u0, c(2, 2)
+        integer :: n, k
+        call reduced_cuts(kernel, bx, e1, e2, cuts, v_sing, u0)
+        call reduced_nodes(work, cuts, v_sing, u0, n)
+        if (kernel%homogeneous) then
+            work%x(1:n) = work%line%s(1:n)          ! G(t xi, xi) = G(t, 1)
+            work%xi(1:n) = 1.0_dp
+        else
+            work%x(1:n) = work%line%s(1:n)          ! k(x - xi) = k(u)
+            work%xi(1:n) = 0.0_dp
+        end if
+        call kernel%values(work%x(1:n), work%xi(1:n), work%with_log(1:n), work%f(:, :, 1:n), &
+                           work%p(:, :, 1:n), err)
+        if (allocated(err)) return
+        work%n_kernel = work%n_kernel + int(n, int64)
+        loc = 0.0_dp
+        v_nodes: do k = 1, n
+            c = work%w(k)*work%f(:, :, k)
+            if (work%with_log(k)) c = c + work%wc(k)*work%p(:, :, k)
+            call add_across(kernel, bx, bz, e1, e2, map, work%tab, work%line%s(k), c, loc)
+        end do v_nodes
+        if (e1 == e2) loc = loc + transpose(loc)
+    end subroutine reduced_pair
+
+    !> Range of v, its kinks and the singular point: v = x/xi (homogeneous) or x - xi, over
+    !! e1 x e2 (e2 > e1) or over the triangle x < xi of a self pair; cuts sorted, duplicates
+    !! and points outside [cuts(1), cuts(5)] collapse to the ends.
+    pure subroutine reduced_cuts(kernel, bx, e1, e2, cuts, v_sing, u0)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        integer, intent(in) :: e1, e2
+        real(dp), intent(out) :: cuts(5), v_sing, u0
+        real(dp) :: a1, b1, a2, b2
+        integer :: i
+        a1 = bx%x(e1 - 1)
+        b1 = bx%x(e1)
+        a2 = bx%x(e2 - 1)
+        b2 = bx%x(e2)
+        if (kernel%homogeneous) then
+            v_sing = 1.0_dp
+            u0 = kernel%log_length(1.0_dp)
+            if (e1 == e2) then
+                cuts = [a1/b1, 1.0_dp, 1.0_dp, 1.0_dp, 1.0_dp]
+            else
+                cuts = [a1/b2, a1/a2, b1/b2, 1.0_dp, b1/a2]
+            end if
+        else
+            v_sing = 0.0_dp
+            u0 = kernel%log_length(max(a1, a2))
+            if (e1 == e2) then
+                cuts = [a1 - b1, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+            else
+                cuts = [a1 - b2, a1 - a2, b1 - b2, 0.0_dp, b1 - a2]
+            end if
+        end if
+        call sort_cuts(cuts)
+        clip: do i = 2, 4
+            cuts(i) = min(max(cuts(i), cuts(1)), cuts(5))
+        end do clip
+    end subroutine reduced_cuts
+
+    !> Insertion sort of the five cuts.
+    pure subroutine sort_cuts(a)
+        real(dp), intent(inout) :: a(5)
+        real(dp) :: key
+        integer :: i, j
+        outer: do i = 2, 5
+            key = a(i)
+            j = i - 1
+            shift: do while (j >= 1)
+                if (a(j) <= key) exit shift
+                a(j + 1) = a(j)
+                j = j - 1
+            end do shift
+            a(j + 1) = key
+        end do outer
+    end subroutine sort_cuts
+
+    !> Nodes of v (work%line%s) with weights work%w, work%wc, and with_log, piece by piece.
+    pure subroutine reduced_nodes(work, cuts, v_sing, u0, n)
+        type(work_t), intent(inout) :: work
+        real(dp), intent(in) :: cuts(5), v_sing, u0
+        integer, intent(out) :: n
+        type(line_rule_t) :: piece
+        real(dp) :: tiny_len
+        integer :: i, m
+        tiny_len = 1.0e-14_dp*(cuts(5) - cuts(1))
+        n = 0
+        pieces: do i = 1, 4
+            if (cuts(i + 1) - cuts(i) <= tiny_len) cycle pieces
+            call build_line_rule(work%tab, cuts(i), cuts(i + 1), v_sing, u0, piece)
+            m = piece%n
+            call reserve(work, n + m)
+            call grow_line(work%line, n + m)
+            work%line%s(n + 1:n + m) = piece%s(1:m)
+            work%w(n + 1:n + m) = piece%w(1:m)
+            work%wc(n + 1:n + m) = piece%wc(1:m)
+            n = n + m
+        end do pieces
+        work%line%n = n
+        work%with_log(1:n) = work%wc(1:n) /= 0.0_dp
+    end subroutine reduced_nodes
+
+    !> Make line%s hold n nodes (keeping the first ones).
+    pure subroutine grow_line(line, n)
+        type(line_rule_t), intent(inout) :: line
+        integer, intent(in) :: n
+        real(dp), allocatable :: tmp(:)
+        if (allocated(line%s)) then
+            if (size(line%s) >= n) return
+            allocate (tmp(max(n, 2*size(line%s))))
+            tmp(1:size(line%s)) = line%s
+            call move_alloc(tmp, line%s)
+        else
+            allocate (line%s(max(n, 256)))
+        end if
+    end subroutine grow_line
+
+    !> Add c(i, j) times the integral of the basis products across the reduced variable v at
+    !! one node: x in [max(a1, a2 + u), min(b1, b2 + u)], xi = x - u (translation), or
+    !! xi in [max(a2, a1/t), min(b2, b1/t)], x = t xi, dx = xi dt (homogeneous).
+    pure subroutine add_across(kernel, bx, bz, e1, e2, map, tab, v, c, loc)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e1, e2
+        type(pair_map_t), intent(in) :: map
+        type(gauss_tables_t), intent(in) :: tab
+        real(dp), intent(in) :: v, c(2, 2)
+        real(dp), intent(inout) :: loc(n_loc, n_loc)
+        real(dp) :: lo, hi, len, y, x(1), xi(1), wj(1), bf(n_loc, 1), bs(n_loc, 1)
+        integer :: j, r, col
+        if (kernel%homogeneous) then
+            lo = max(bx%x(e2 - 1), bx%x(e1 - 1)/v)
+            hi = min(bx%x(e2), bx%x(e1)/v)
+        else
+            lo = max(bx%x(e1 - 1), bx%x(e2 - 1) + v)
+            hi = min(bx%x(e1), bx%x(e2) + v)
+        end if
+        len = hi - lo
+        if (len <= 0.0_dp) return
+        across: do j = 1, n_across
+            y = lo + len*tab%v(j, n_across)
+            if (kernel%homogeneous) then
+                xi(1) = y
+                x(1) = v*y
+                wj(1) = len*tab%w(j, n_across)*y
+            else
+                x(1) = y
+                xi(1) = y - v
+                wj(1) = len*tab%w(j, n_across)
+            end if
+            call weighted_basis(kernel, bx, bz, e1, x, wj, .true., bf)
+            call weighted_basis(kernel, bx, bz, e2, xi, [1.0_dp], .false., bs)
+            columns: do col = 1, map%ns
+                rows: do r = 1, map%nf
+                    loc(r, col) = loc(r, col) + bf(r, 1)*c(map%comp_f(r), map%comp_s(col))* &
+                                  bs(col, 1)
+                end do rows
+            end do columns
+        end do across
+    end subroutine add_across
 
     !> A general point rule (work%rule) on a touching pair: one kernel evaluation per point,
     !! F with weight w and the log coefficient P with weight wc, added to every basis product.

@@ -123,6 +123,7 @@ contains
         kernel%g_f = g_f
         kernel%nu_f = nu_f
         kernel%width = width
+        kernel%translation_invariant = .true.
     end subroutine new_strip_kernel
 
     !> Field measure 1 (line loads).

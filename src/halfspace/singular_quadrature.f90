@@ -51,6 +51,7 @@ module singular_quadrature
     !! (sigma_z, w): f(i, j) = displacement i due to a unit traction j.
     type, abstract :: split_kernel_t
         logical :: homogeneous = .false.   !! homogeneous of degree 0 about x = 0 (ring kernels)
+        logical :: translation_invariant = .false.  !! depends on x - xi only (strip kernels)
     contains
         procedure(kernel_values_i), deferred :: values
         procedure(field_weight_i), deferred :: field_weight
