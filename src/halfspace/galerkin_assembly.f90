@@ -2,20 +2,25 @@
 !!
 !! T_ab = int int g_a(x) W(x) K(x, xi) g_b(xi) dxi dx (W = 1 beam, 2 pi x plate), blocks
 !! [T_xx T_xz; T_zx T_zz] with all bx coefficients first; K a kernel in split form
-!! (`singular_quadrature`). Element pairs are integrated with fixed-order rules:
+!! (`singular_quadrature`: value F and coefficient P of ln|x - xi|, steps at x = xi). Every
+!! element pair is integrated with fixed-order rules and ONE kernel evaluation per point pair,
+!! shared by all local basis products of the pair:
 !!  * well separated pairs (gap >= near_ratio times the longer element): tensor Gauss–Legendre,
-!!    n points per direction from the Bernstein-ellipse parameter of gap/size (error rho^(-2n)
-!!    per direction at 1e-16, `points_for_ratio`); the kernel is evaluated once per point pair
-!!    and contracted with all local basis products of the pair at once, as
+!!    n points per direction from the Bernstein-ellipse parameter of gap/size and the degree of
+!!    the polynomial factor (`far_points`, 1e-16 per direction), contracted as
 !!    L = B_f diag(w_f W) K diag(w_s) B_s^T;
-!!  * touching and nearly touching pairs: the product-log rules of `singular_quadrature` (log
-!!    singularity integrated with Legendre moments of ln, steps on the cut lines, ratio
-!!    coordinates at the axis), fixed orders, again one kernel evaluation per point pair.
+!!  * touching and nearly touching pairs, kernels that depend on one variable v only (strip:
+!!    v = x - xi; rings, homogeneous of degree 0: v = x/xi, ln|x - xi| = ln xi + ln|v - 1|):
+!!    the logarithm is integrated analytically by the product-log rule of `singular_quadrature`
+!!    (Legendre moments of ln, i.e. a log-weighted rule, the remainder P, Q analytic), pieces cut
+!!    at the kinks of the range across v and at the steps, the kernel evaluated once per node of
+!!    v, and the integral across v of the basis products done exactly (polynomial, 4-point GL);
+!!  * other kernels: the two-dimensional pair rules of `singular_quadrature`.
 !! Only pairs e2 >= e1 are integrated; the pair (e2, e1) is the transpose by reciprocity
 !! (W(x) K_ij(x, xi) = W(xi) K_ji(xi, x): r G_ij(r, s) = s G_ji(s, r) for the rings, k_ij(X) =
-!! k_ji(-X) for the strip), and the self pairs are symmetrised, so T is exactly symmetric.
-!! `assemble_split_kernel_reference` builds the same integrals pair by pair from scratch and is
-!! kept as the reference of the tests.
+!! k_ji(-X) for the strip); a self pair is one triangle plus its transpose, so T is exactly
+!! symmetric. `assemble_split_kernel_reference` (adaptive pair rules, both triangles) is kept as
+!! the reference of the tests.
 module galerkin_assembly
     use iso_fortran_env, only: int64
     use kinds, only: dp
@@ -23,13 +28,14 @@ module galerkin_assembly
     use shape_functions, only: basis_t, eval_basis, max_local
     use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
                                    new_gauss_tables, build_pair_rule, build_line_rule, &
-                                   check_bases, basis_at, points_for_ratio, near_ratio
+                                   check_bases, near_ratio, n_max
     implicit none
     private
 
     public :: assemble_split_kernel
 
     integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
+    real(dp), parameter :: far_digits = 16.5_dp  !! see far_points
     integer, parameter :: n_across = 4   !! GL points across the reduced variable: exact for the
                                          !! basis products (degree <= 6 with the ring measure)
 
@@ -116,6 +122,31 @@ contains
         glob(bx%n_local + 1:n) = bx%n_dof + idx(1:bz%n_local)
     end subroutine element_numbers
 
+    !> GL points per direction for a well separated pair: the error of n-point GL on
+    !! poly_p(x) k(x), k singular at distance `ratio` element lengths from the element, is about
+    !! rho^(p - 2n), rho = c + sqrt(c^2 - 1), c = 1 + 2 ratio (Bernstein ellipse through the
+    !! singularity; the polynomial of degree p grows like rho^p on it). n = (far_digits/log10 rho
+    !! + p)/2 rounded up keeps it below 1e-16 of int |poly_p k| for k = 1/d, ln d and for the
+    !! worst (Legendre) polynomial of degree p <= 3, as measured with 40-digit arithmetic at
+    !! ratios 2 to 3000.
+    pure integer function far_points(ratio, p) result(n)
+        real(dp), intent(in) :: ratio      !! gap / element length, >= near_ratio
+        integer, intent(in) :: p           !! polynomial degree of the non-kernel factor
+        real(dp) :: c, rho
+        c = 1.0_dp + 2.0_dp*ratio
+        rho = c + sqrt(c*c - 1.0_dp)
+        n = min(n_max, max(2, ceiling(0.5_dp*(far_digits/log10(rho) + real(p, dp)))))
+    end function far_points
+
+    !> Degree of the polynomial factor on the field side: the basis, times x for the ring
+    !! measure 2 pi x (homogeneous kernels are the ring kernels).
+    pure integer function field_degree(kernel, bx, bz) result(p)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        p = max(bx%degree, bz%degree)
+        if (kernel%homogeneous) p = p + 1
+    end function field_degree
+
     !> Make the work arrays hold n point pairs.
     pure subroutine reserve(work, n)
         type(work_t), intent(inout) :: work
@@ -147,7 +178,8 @@ contains
         gap = max(a2 - b1, a1 - b2)
         if (gap >= near_ratio*max(b1 - a1, b2 - a2)) then
             call tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, &
-                             points_for_ratio(gap/(b1 - a1)), points_for_ratio(gap/(b2 - a2)), &
+                             far_points(gap/(b1 - a1), field_degree(kernel, bx, bz)), &
+                             far_points(gap/(b2 - a2), max(bx%degree, bz%degree)), &
                              map, work, loc, err)
         else if (kernel%homogeneous .or. kernel%translation_invariant) then
             call reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
@@ -174,8 +206,10 @@ contains
         integer :: i, j, k, r, c
         xf = a1 + (b1 - a1)*work%tab%v(1:n1, n1)
         xs = a2 + (b2 - a2)*work%tab%v(1:n2, n2)
-        call weighted_basis(kernel, bx, bz, e1, xf, (b1 - a1)*work%tab%w(1:n1, n1), .true., bf)
-        call weighted_basis(kernel, bx, bz, e2, xs, (b2 - a2)*work%tab%w(1:n2, n2), .false., bs)
+        call weighted_basis(kernel, bx, bz, e1, xf, 2.0_dp*work%tab%v(1:n1, n1) - 1.0_dp, &
+                            (b1 - a1)*work%tab%w(1:n1, n1), .true., bf)
+        call weighted_basis(kernel, bx, bz, e2, xs, 2.0_dp*work%tab%v(1:n2, n2) - 1.0_dp, &
+                            (b2 - a2)*work%tab%w(1:n2, n2), .false., bs)
         call reserve(work, n1*n2)
         field_points: do i = 1, n1
             work%x((i - 1)*n2 + 1:i*n2) = xf(i)
@@ -203,26 +237,37 @@ contains
         end do rows
     end subroutine tensor_pair
 
-    !> b(r, i) = g_r(x_i) w_i (times W(x_i) on the field side) for the local functions of e.
-    pure subroutine weighted_basis(kernel, bx, bz, e, x, w, field, b)
+    !> b(r, i) = g_r(x_i) w_i (times W(x_i) on the field side) for the local functions of e;
+    !! the functions are evaluated at the local coordinates loc_xi (exact for the GL nodes of
+    !! tensor rules: a node x = a + h v rounds by eps |x|, i.e. by eps |x|/h of the element).
+    pure subroutine weighted_basis(kernel, bx, bz, e, x, loc_xi, w, field, b)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         integer, intent(in) :: e
         real(dp), intent(in) :: x(:)           !! points on element e
+        real(dp), intent(in) :: loc_xi(:)      !! their local coordinates in [-1, 1]
         real(dp), intent(in) :: w(:)           !! their weights
         logical, intent(in) :: field           !! include the field measure W(x)
         real(dp), intent(out) :: b(:, :)       !! b(r, i), r over the bx then the bz functions
         integer :: idx(max_local), i
-        real(dp) :: val(max_local), wi
+        real(dp) :: val(max_local), der(max_local), wi, x_out
         points: do i = 1, size(x)
             wi = w(i)
             if (field) wi = wi*kernel%field_weight(x(i))
-            call basis_at(bx, e, x(i), idx, val)
+            call eval_basis(bx, e, loc_xi(i), idx, val, der, x_out)
             b(1:bx%n_local, i) = val(1:bx%n_local)*wi
-            call basis_at(bz, e, x(i), idx, val)
+            call eval_basis(bz, e, loc_xi(i), idx, val, der, x_out)
             b(bx%n_local + 1:bx%n_local + bz%n_local, i) = val(1:bz%n_local)*wi
         end do points
     end subroutine weighted_basis
+
+    !> Local coordinate of x on element e.
+    pure real(dp) function local_coordinate(basis, e, x) result(xi)
+        type(basis_t), intent(in) :: basis
+        integer, intent(in) :: e
+        real(dp), intent(in) :: x
+        xi = (2.0_dp*x - (basis%x(e - 1) + basis%x(e)))/(basis%x(e) - basis%x(e - 1))
+    end function local_coordinate
 
     !> Touching pair of a kernel that depends on one combination v of (x, xi) only: v = x - xi
     !! (translation invariant, strip) or v = x/xi (homogeneous of degree 0, rings; then
@@ -389,8 +434,10 @@ contains
                 xi(1) = y - v
                 wj(1) = len*tab%w(j, n_across)
             end if
-            call weighted_basis(kernel, bx, bz, e1, x, wj, .true., bf)
-            call weighted_basis(kernel, bx, bz, e2, xi, [1.0_dp], .false., bs)
+            call weighted_basis(kernel, bx, bz, e1, x, [local_coordinate(bx, e1, x(1))], wj, &
+                                .true., bf)
+            call weighted_basis(kernel, bx, bz, e2, xi, [local_coordinate(bx, e2, xi(1))], &
+                                [1.0_dp], .false., bs)
             columns: do col = 1, map%ns
                 rows: do r = 1, map%nf
                     loc(r, col) = loc(r, col) + bf(r, 1)*c(map%comp_f(r), map%comp_s(col))* &
@@ -421,8 +468,10 @@ contains
         work%n_kernel = work%n_kernel + int(n, int64)
         loc = 0.0_dp
         points: do k = 1, n
-            call weighted_basis(kernel, bx, bz, e1, work%rule%x(k:k), [1.0_dp], .true., bf)
-            call weighted_basis(kernel, bx, bz, e2, work%rule%xi(k:k), [1.0_dp], .false., bs)
+            call weighted_basis(kernel, bx, bz, e1, work%rule%x(k:k), &
+                                [local_coordinate(bx, e1, work%rule%x(k))], [1.0_dp], .true., bf)
+            call weighted_basis(kernel, bx, bz, e2, work%rule%xi(k:k), &
+                                [local_coordinate(bx, e2, work%rule%xi(k))], [1.0_dp], .false., bs)
             c = work%rule%w(k)*work%f(:, :, k)
             if (work%with_log(k)) c = c + work%rule%wc(k)*work%p(:, :, k)
             columns: do col = 1, map%ns
