@@ -1,7 +1,8 @@
 !> Benchmark of the half-space flexibility assembly (issue 7, item 3): times the assembly of T
 !! for PLATE and BEAM meshes, the fast fixed-order assembly and the adaptive reference
 !! (assemble_split_kernel_reference) in the same run, and prints a Markdown table with the
-!! number of unknowns, seconds, kernel evaluations and max |T_fast - T_ref| / max |T_ref|.
+!! number of unknowns, seconds (least of repeated runs), kernel evaluations and
+!! max |T_fast - T_ref| / max |T_ref|.
 !! Usage: `fpm run --profile release bench_assembly [-- max_ne [ref_max_ne]]`.
 program bench_assembly
     use iso_fortran_env, only: int64, output_unit, error_unit
@@ -78,20 +79,21 @@ contains
         if (with_reference) then
             call assemble(plate, bx, bz, .true., t_ref, s_ref, n_ref)
             diff = maxval(abs(t_fast - t_ref))/maxval(abs(t_ref))
-            write (ref_s, '(f0.4)') s_ref
+            write (ref_s, '(f0.5)') s_ref
             write (ref_n, '(i0)') n_ref
             write (speed, '(f0.1)') s_ref/max(s_fast, 1.0e-9_dp)
             write (diff_s, '(es8.1)') diff
         end if
-        write (output_unit, '("| ",a," | ",i0," | ",a,"/",a," | ",i0," | ",a," | ",a," | ",f0.4, &
+        write (output_unit, '("| ",a," | ",i0," | ",a,"/",a," | ",i0," | ",a," | ",a," | ",f0.5, &
                &" | ",i0," | ",a," | ",a," |")') trim(model), ne, trim(interp_name(fam_x)), &
             trim(interp_name(fam_z)), bx%n_dof + bz%n_dof, trim(ref_s), trim(ref_n), s_fast, &
             n_fast, trim(speed), trim(diff_s)
         flush (output_unit)
     end subroutine run_case
 
-    !> One assembly, wall-clock seconds and kernel evaluations (paper soil nu_f = 0.1; beam
-    !! width b/l = 0.0055 as in the paper's beam decks).
+    !> Assemble T, wall-clock seconds (the least of repeated runs, repeated until 1 s has been
+    !! spent or 15 runs, as the machine is shared) and kernel evaluations (paper soil nu_f = 0.1;
+    !! beam width b/l = 0.0055 as in the paper's beam decks).
     subroutine assemble(plate, bx, bz, reference, t_mat, seconds, n_kernel)
         logical, intent(in) :: plate, reference
         type(basis_t), intent(in) :: bx, bz
@@ -100,18 +102,29 @@ contains
         integer(int64), intent(out) :: n_kernel
         type(error_t), allocatable :: err
         integer(int64) :: c0, c1, rate
-        call system_clock(c0, rate)
-        if (plate) then
-            call assemble_plate_flexibility(bx, bz, 1.0_dp, 0.1_dp, t_mat, err, reference, n_kernel)
-        else
-            call assemble_beam_flexibility(bx, bz, 1.0_dp, 0.1_dp, 0.0055_dp, t_mat, err, &
-                                           reference, n_kernel)
-        end if
-        call system_clock(c1)
-        if (allocated(err)) then
-            write (error_unit, '(a)') 'ERROR: '//err%message
-            error stop 3
-        end if
-        seconds = real(c1 - c0, dp)/real(rate, dp)
+        real(dp) :: spent, once
+        integer :: run
+        seconds = huge(1.0_dp)
+        spent = 0.0_dp
+        runs: do run = 1, 15
+            if (allocated(t_mat)) deallocate (t_mat)
+            call system_clock(c0, rate)
+            if (plate) then
+                call assemble_plate_flexibility(bx, bz, 1.0_dp, 0.1_dp, t_mat, err, reference, &
+                                                n_kernel)
+            else
+                call assemble_beam_flexibility(bx, bz, 1.0_dp, 0.1_dp, 0.0055_dp, t_mat, err, &
+                                               reference, n_kernel)
+            end if
+            call system_clock(c1)
+            if (allocated(err)) then
+                write (error_unit, '(a)') 'ERROR: '//err%message
+                error stop 3
+            end if
+            once = real(c1 - c0, dp)/real(rate, dp)
+            seconds = min(seconds, once)
+            spent = spent + once
+            if (spent > 1.0_dp) exit runs
+        end do runs
     end subroutine assemble
 end program bench_assembly

@@ -82,8 +82,9 @@ contains
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
         call new_gauss_tables(work%tab)
         call reserve(work, 1024)
-        field_elements: do e1 = 1, bx%ne
-            source_elements: do e2 = e1, bx%ne
+        ! columns outer: the pair (e1, e2) adds to columns of e2 only, rows in order
+        source_elements: do e2 = 1, bx%ne
+            field_elements: do e1 = 1, e2
                 call new_pair_map(bx, bz, e1, e2, map)
                 call pair_integrals(kernel, bx, bz, e1, e2, map, work, loc, err)
                 if (allocated(err)) then
@@ -92,8 +93,9 @@ contains
                     return
                 end if
                 call scatter(map, e1 == e2, loc, t_mat)
-            end do source_elements
-        end do field_elements
+            end do field_elements
+        end do source_elements
+        call add_transpose(t_mat)
         if (present(n_kernel)) n_kernel = work%n_kernel
     end subroutine assemble_split_kernel
 
@@ -483,8 +485,9 @@ contains
         end do points
     end subroutine rule_pair
 
-    !> Add loc to T at (rows, columns) and, for e2 > e1, its transpose at (columns, rows); a self
-    !! pair is symmetrised (its rule is symmetric only up to rounding).
+    !> Accumulate A with T = A + A^T (add_transpose at the end): a pair e1 < e2 adds loc at
+    !! (rows, columns), its mirror (e2, e1) being the transpose by reciprocity; a self pair adds
+    !! half of its symmetric part (its rule is symmetric only up to rounding).
     pure subroutine scatter(map, self_pair, loc, t_mat)
         type(pair_map_t), intent(in) :: map
         logical, intent(in) :: self_pair
@@ -495,7 +498,7 @@ contains
             self_columns: do c = 1, map%ns
                 self_rows: do r = 1, map%nf
                     t_mat(map%row(r), map%col(c)) = t_mat(map%row(r), map%col(c)) + &
-                                                    0.5_dp*(loc(r, c) + loc(c, r))
+                                                    0.25_dp*(loc(r, c) + loc(c, r))
                 end do self_rows
             end do self_columns
             return
@@ -503,8 +506,27 @@ contains
         columns: do c = 1, map%ns
             rows: do r = 1, map%nf
                 t_mat(map%row(r), map%col(c)) = t_mat(map%row(r), map%col(c)) + loc(r, c)
-                t_mat(map%col(c), map%row(r)) = t_mat(map%col(c), map%row(r)) + loc(r, c)
             end do rows
         end do columns
     end subroutine scatter
+
+    !> A <- A + A^T in place, in square tiles (both halves of a tile pair stay in cache).
+    pure subroutine add_transpose(a)
+        real(dp), intent(inout) :: a(:, :)
+        integer, parameter :: tile = 64
+        integer :: n, ib, jb, i, j
+        real(dp) :: total
+        n = size(a, 1)
+        tile_columns: do jb = 1, n, tile
+            tile_rows: do ib = 1, jb, tile
+                columns: do j = jb, min(jb + tile - 1, n)
+                    rows: do i = ib, min(ib + tile - 1, j)
+                        total = a(i, j) + a(j, i)
+                        a(i, j) = total
+                        a(j, i) = total
+                    end do rows
+                end do columns
+            end do tile_rows
+        end do tile_columns
+    end subroutine add_transpose
 end module galerkin_assembly
