@@ -50,6 +50,12 @@ module galerkin_assembly
         integer :: col(n_loc) = 0                 !! global column of each local column
     end type pair_map_t
 
+    !> Values of the local functions of every element at the nodes of one GL rule.
+    type :: order_table_t
+        logical :: ready = .false.
+        real(dp), allocatable :: b(:, :, :)        !! b(r, i, e): function r of e at node i
+    end type order_table_t
+
     !> Work arrays reused over the element pairs.
     type :: work_t
         type(gauss_tables_t) :: tab
@@ -60,6 +66,10 @@ module galerkin_assembly
         logical, allocatable :: with_log(:)
         real(dp), allocatable :: f(:, :, :), p(:, :, :)
         integer(int64) :: n_kernel = 0_int64       !! kernel evaluations so far
+        integer, allocatable :: n_fun(:)           !! functions nonzero on element e
+        integer, allocatable :: comp(:, :)         !! their field (1 = bx, 2 = bz)
+        integer, allocatable :: glob(:, :)         !! their global number in T
+        type(order_table_t) :: by_order(n_max)     !! basis values at the GL nodes, by order
     end type work_t
 
 contains
@@ -82,10 +92,11 @@ contains
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
         call new_gauss_tables(work%tab)
         call reserve(work, 1024)
+        call number_elements(bx, bz, work)
         ! columns outer: the pair (e1, e2) adds to columns of e2 only, rows in order
         source_elements: do e2 = 1, bx%ne
             field_elements: do e1 = 1, e2
-                call new_pair_map(bx, bz, e1, e2, map)
+                call new_pair_map(work, e1, e2, map)
                 call pair_integrals(kernel, bx, bz, e1, e2, map, work, loc, err)
                 if (allocated(err)) then
                     write (where, '("half-space operator, elements ",i0," and ",i0)') e1, e2
@@ -100,13 +111,46 @@ contains
     end subroutine assemble_split_kernel
 
     !> Local and global numbering of the functions of elements e1 (rows) and e2 (columns).
-    pure subroutine new_pair_map(bx, bz, e1, e2, map)
-        type(basis_t), intent(in) :: bx, bz
+    pure subroutine new_pair_map(work, e1, e2, map)
+        type(work_t), intent(in) :: work
         integer, intent(in) :: e1, e2
         type(pair_map_t), intent(out) :: map
-        call element_numbers(bx, bz, e1, map%nf, map%comp_f, map%row)
-        call element_numbers(bx, bz, e2, map%ns, map%comp_s, map%col)
+        map%nf = work%n_fun(e1)
+        map%comp_f = work%comp(:, e1)
+        map%row = work%glob(:, e1)
+        map%ns = work%n_fun(e2)
+        map%comp_s = work%comp(:, e2)
+        map%col = work%glob(:, e2)
     end subroutine new_pair_map
+
+    !> Numbering of the functions of every element (element_numbers), once.
+    pure subroutine number_elements(bx, bz, work)
+        type(basis_t), intent(in) :: bx, bz
+        type(work_t), intent(inout) :: work
+        integer :: e
+        allocate (work%n_fun(bx%ne), work%comp(n_loc, bx%ne), work%glob(n_loc, bx%ne))
+        work%comp = 0
+        work%glob = 0
+        elements: do e = 1, bx%ne
+            call element_numbers(bx, bz, e, work%n_fun(e), work%comp(:, e), work%glob(:, e))
+        end do elements
+    end subroutine number_elements
+
+    !> Tabulate the local functions of every element at the nodes of the n-point GL rule.
+    pure subroutine tabulate_order(bx, bz, n, work)
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: n
+        type(work_t), intent(inout) :: work
+        real(dp) :: ones(n)
+        integer :: e
+        ones = 1.0_dp
+        allocate (work%by_order(n)%b(n_loc, n, bx%ne))
+        elements: do e = 1, bx%ne
+            call basis_values(bx, bz, e, 2.0_dp*work%tab%v(1:n, n) - 1.0_dp, ones, &
+                              work%by_order(n)%b(:, :, e))
+        end do elements
+        work%by_order(n)%ready = .true.
+    end subroutine tabulate_order
 
     !> Functions nonzero on element e: count, field (1 = bx, 2 = bz) and global number.
     pure subroutine element_numbers(bx, bz, e, n, comp, glob)
@@ -206,12 +250,17 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: xf(n1), xs(n2), bf(n_loc, n1), bs(n_loc, n2), tmp(2, n2)
         integer :: i, j, k, r, c
+        if (.not. work%by_order(n1)%ready) call tabulate_order(bx, bz, n1, work)
+        if (.not. work%by_order(n2)%ready) call tabulate_order(bx, bz, n2, work)
         xf = a1 + (b1 - a1)*work%tab%v(1:n1, n1)
         xs = a2 + (b2 - a2)*work%tab%v(1:n2, n2)
-        call weighted_basis(kernel, bx, bz, e1, xf, 2.0_dp*work%tab%v(1:n1, n1) - 1.0_dp, &
-                            (b1 - a1)*work%tab%w(1:n1, n1), .true., bf)
-        call weighted_basis(kernel, bx, bz, e2, xs, 2.0_dp*work%tab%v(1:n2, n2) - 1.0_dp, &
-                            (b2 - a2)*work%tab%w(1:n2, n2), .false., bs)
+        field_weights: do i = 1, n1
+            bf(:, i) = work%by_order(n1)%b(:, i, e1)* &
+                       ((b1 - a1)*work%tab%w(i, n1)*kernel%field_weight(xf(i)))
+        end do field_weights
+        source_weights: do j = 1, n2
+            bs(:, j) = work%by_order(n2)%b(:, j, e2)*((b2 - a2)*work%tab%w(j, n2))
+        end do source_weights
         call reserve(work, n1*n2)
         field_points: do i = 1, n1
             work%x((i - 1)*n2 + 1:i*n2) = xf(i)
@@ -262,6 +311,24 @@ contains
             b(bx%n_local + 1:bx%n_local + bz%n_local, i) = val(1:bz%n_local)*wi
         end do points
     end subroutine weighted_basis
+
+    !> b(r, i) = g_r(loc_xi(i)) w(i), r over the bx then the bz functions of element e.
+    pure subroutine basis_values(bx, bz, e, loc_xi, w, b)
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e
+        real(dp), intent(in) :: loc_xi(:)      !! local coordinates in [-1, 1]
+        real(dp), intent(in) :: w(:)           !! weights
+        real(dp), intent(out) :: b(:, :)
+        integer :: idx(max_local), i
+        real(dp) :: val(max_local), der(max_local), x_out
+        b = 0.0_dp
+        points: do i = 1, size(loc_xi)
+            call eval_basis(bx, e, loc_xi(i), idx, val, der, x_out)
+            b(1:bx%n_local, i) = val(1:bx%n_local)*w(i)
+            call eval_basis(bz, e, loc_xi(i), idx, val, der, x_out)
+            b(bx%n_local + 1:bx%n_local + bz%n_local, i) = val(1:bz%n_local)*w(i)
+        end do points
+    end subroutine basis_values
 
     !> Local coordinate of x on element e.
     pure real(dp) function local_coordinate(basis, e, x) result(xi)
