@@ -40,12 +40,14 @@ module halfspace_plate
     public :: elliptic_ke_agm
 
     real(dp), parameter :: series_limit = 0.3_dp   !! k^2 below which (C4) is summed as a series
+    integer, parameter :: n_series = 40            !! terms of S(m): 0.3^40 c_42 < 1e-22
     real(dp), parameter :: agm_limit = 1.0e-20_dp  !! m1 below which GSL's asymptotic branch is used
 
     !> Ring kernels (C1)–(C4) of one soil.
     type, extends(split_kernel_t) :: ring_kernel_t
         real(dp) :: g_f = 1.0_dp      !! shear modulus [force/length^2]
         real(dp) :: nu_f = 0.0_dp     !! Poisson's ratio
+        real(dp) :: series(0:n_series) = 0.0_dp  !! c_(n+2) of rr_series
     contains
         procedure :: values => ring_values
         procedure :: field_weight => ring_field_weight
@@ -150,6 +152,7 @@ contains
         kernel%g_f = g_f
         kernel%nu_f = nu_f
         kernel%homogeneous = .true.
+        call series_coefficients(kernel%series)
     end subroutine new_ring_kernel
 
     !> Field measure 2 pi r.
@@ -217,7 +220,8 @@ contains
         f(2, 2) = c_zz*k_m                                                 ! (C1)
         if (m < series_limit) then
             ! (C4) as (1-nu)/(2 pi G) 16 r s^2/(r+s)^3 S(m), exact rewriting of c_rr m^2 S(m)
-            f(1, 1) = (1.0_dp - nu)/(2.0_dp*pi*g)*16.0_dp*r*(s/total)**2/total*rr_series(m)
+            f(1, 1) = (1.0_dp - nu)/(2.0_dp*pi*g)*16.0_dp*r*(s/total)**2/total* &
+                      rr_series(kernel%series, m)
         else
             f(1, 1) = c_rr*((1.0_dp + m1)*k_m - 2.0_dp*e_m)                ! (C4)
         end if
@@ -268,22 +272,28 @@ contains
         e_val = k_val*(1.0_dp - total)
     end subroutine elliptic_ke_agm
 
-    !> S(m) = ((2-m)K - 2E)/m^2 = sum_{n>=2} c_n m^(n-2), c_n = (pi/2)(a_n 4n/(2n-1) - a_{n-1}),
-    !! a_n = ((1/2)_n/n!)^2, from the hypergeometric series of K and E (DLMF 19.5.1–2).
-    pure real(dp) function rr_series(m) result(total)
+    !> S(m) = ((2-m)K - 2E)/m^2 = sum_{n>=2} c_n m^(n-2) by Horner's rule (m < series_limit).
+    pure real(dp) function rr_series(c, m) result(total)
+        real(dp), intent(in) :: c(0:n_series)    !! c_(n+2), series_coefficients
         real(dp), intent(in) :: m
-        real(dp) :: a_prev, a_n, term, power
+        integer :: n
+        total = c(n_series)
+        horner: do n = n_series - 1, 0, -1
+            total = total*m + c(n)
+        end do horner
+    end function rr_series
+
+    !> c_n = (pi/2)(a_n 4n/(2n-1) - a_{n-1}), a_n = ((1/2)_n/n!)^2, n = 2..n_series+2, from the
+    !! hypergeometric series of K and E (DLMF 19.5.1–2); stored as c(n - 2).
+    pure subroutine series_coefficients(c)
+        real(dp), intent(out) :: c(0:n_series)
+        real(dp) :: a_prev, a_n
         integer :: n
         a_prev = 0.25_dp                  ! a_1
-        total = 0.0_dp
-        power = 1.0_dp
-        terms: do n = 2, 200
+        terms: do n = 2, n_series + 2
             a_n = a_prev*(real(2*n - 1, dp)/real(2*n, dp))**2
-            term = 0.5_dp*pi*(a_n*real(4*n, dp)/real(2*n - 1, dp) - a_prev)*power
-            total = total + term
-            if (abs(term) <= 0.25_dp*epsilon(1.0_dp)*abs(total)) exit terms
+            c(n - 2) = 0.5_dp*pi*(a_n*real(4*n, dp)/real(2*n - 1, dp) - a_prev)
             a_prev = a_n
-            power = power*m
         end do terms
-    end function rr_series
+    end subroutine series_coefficients
 end module halfspace_plate
