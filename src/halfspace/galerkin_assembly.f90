@@ -27,7 +27,7 @@ module galerkin_assembly
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
     use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
-                                   new_gauss_tables, build_pair_rule, build_line_rule, &
+                                   new_gauss_tables, need_order, build_pair_rule, build_line_rule, &
                                    check_bases, near_ratio, n_max
     implicit none
     private
@@ -91,7 +91,9 @@ contains
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
-        call new_gauss_tables(work%tab)
+        call new_gauss_tables(work%tab, lazy=.true.)
+        call need_order(work%tab, 3)
+        call need_order(work%tab, n_across)
         call reserve(work, 1024)
         call number_elements(bx, bz, work)
         call translates(kernel, bx, bz, work%tab, shift_ok)
@@ -303,6 +305,8 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: xf(n1), xs(n2), bf(n_loc, n1), bs(n_loc, n2), tmp(2, n2)
         integer :: i, j, k, r, c
+        call need_order(work%tab, n1)
+        call need_order(work%tab, n2)
         if (.not. work%by_order(n1)%ready) call tabulate_order(bx, bz, n1, work)
         if (.not. work%by_order(n2)%ready) call tabulate_order(bx, bz, n2, work)
         xf = a1 + (b1 - a1)*work%tab%v(1:n1, n1)
