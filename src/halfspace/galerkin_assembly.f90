@@ -70,6 +70,7 @@ module galerkin_assembly
         integer, allocatable :: comp(:, :)         !! their field (1 = bx, 2 = bz)
         integer, allocatable :: glob(:, :)         !! their global number in T
         type(order_table_t) :: by_order(n_max)     !! basis values at the GL nodes, by order
+        real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
     end type work_t
 
 contains
@@ -183,11 +184,19 @@ contains
         type(basis_t), intent(in) :: bx, bz
         type(work_t), intent(inout) :: work
         integer :: e
+        real(dp) :: ends(n_loc, 3), ones(3)
         allocate (work%n_fun(bx%ne), work%comp(n_loc, bx%ne), work%glob(n_loc, bx%ne))
         work%comp = 0
         work%glob = 0
+        ones = 1.0_dp
+        allocate (work%poly(3, n_loc, bx%ne))
         elements: do e = 1, bx%ne
             call element_numbers(bx, bz, e, work%n_fun(e), work%comp(:, e), work%glob(:, e))
+            ! quadratic through the values at xi = -1, 0, 1 (exact: degree <= 2 on an element)
+            call basis_values(bx, bz, e, [-1.0_dp, 0.0_dp, 1.0_dp], ones, ends)
+            work%poly(1, :, e) = ends(:, 2)
+            work%poly(2, :, e) = 0.5_dp*(ends(:, 3) - ends(:, 1))
+            work%poly(3, :, e) = 0.5_dp*(ends(:, 3) + ends(:, 1)) - ends(:, 2)
         end do elements
     end subroutine number_elements
 
@@ -222,6 +231,12 @@ contains
         comp(bx%n_local + 1:n) = 2
         glob(bx%n_local + 1:n) = bx%n_dof + idx(1:bz%n_local)
     end subroutine element_numbers
+
+    !> The kernel depends on one combination of (x, xi) only (reduced_pair applies).
+    pure logical function reducible(kernel)
+        class(split_kernel_t), intent(in) :: kernel
+        reducible = kernel%homogeneous .or. kernel%translation_invariant
+    end function reducible
 
     !> GL points per direction for a well separated pair: the error of n-point GL on
     !! poly_p(x) k(x), k singular at distance `ratio` element lengths from the element, is about
@@ -282,7 +297,7 @@ contains
                              far_points(gap/(b1 - a1), field_degree(kernel, bx, bz)), &
                              far_points(gap/(b2 - a2), max(bx%degree, bz%degree)), &
                              map, work, loc, err)
-        else if (kernel%homogeneous .or. kernel%translation_invariant) then
+        else if (reducible(kernel)) then
             call reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
         else
             call build_pair_rule(work%tab, a1, b1, a2, b2, kernel%log_length(max(a1, a2)), &
@@ -428,7 +443,7 @@ contains
         v_nodes: do k = 1, n
             c = work%w(k)*work%f(:, :, k)
             if (work%with_log(k)) c = c + work%wc(k)*work%p(:, :, k)
-            call add_across(kernel, bx, bz, e1, e2, map, work%tab, work%line%s(k), c, loc)
+            call add_across(kernel, bx, e1, e2, map, work%poly, work%tab, work%line%s(k), c, loc)
         end do v_nodes
         if (e1 == e2) loc = loc + transpose(loc)
     end subroutine reduced_pair
@@ -530,15 +545,16 @@ contains
     !> Add c(i, j) times the integral of the basis products across the reduced variable v at
     !! one node: x in [max(a1, a2 + u), min(b1, b2 + u)], xi = x - u (translation), or
     !! xi in [max(a2, a1/t), min(b2, b1/t)], x = t xi, dx = xi dt (homogeneous).
-    pure subroutine add_across(kernel, bx, bz, e1, e2, map, tab, v, c, loc)
+    pure subroutine add_across(kernel, bx, e1, e2, map, poly, tab, v, c, loc)
         class(split_kernel_t), intent(in) :: kernel
-        type(basis_t), intent(in) :: bx, bz
+        type(basis_t), intent(in) :: bx            !! (mesh)
         integer, intent(in) :: e1, e2
         type(pair_map_t), intent(in) :: map
+        real(dp), intent(in) :: poly(:, :, :)      !! work%poly
         type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: v, c(2, 2)
         real(dp), intent(inout) :: loc(n_loc, n_loc)
-        real(dp) :: lo, hi, len, y, x(1), xi(1), wj(1), bf(n_loc, 1), bs(n_loc, 1)
+        real(dp) :: lo, hi, len, y, x, xi, wj, l1, l2, bf(n_loc), bs(n_loc), cb(n_loc, n_loc)
         integer :: j, r, col
         if (kernel%homogeneous) then
             lo = max(bx%x(e2 - 1), bx%x(e1 - 1)/v)
@@ -549,26 +565,29 @@ contains
         end if
         len = hi - lo
         if (len <= 0.0_dp) return
+        couplings: do col = 1, map%ns
+            cb(1:map%nf, col) = c(map%comp_f(1:map%nf), map%comp_s(col))
+        end do couplings
         across: do j = 1, n_across
             y = lo + len*tab%v(j, n_across)
             if (kernel%homogeneous) then
-                xi(1) = y
-                x(1) = v*y
-                wj(1) = len*tab%w(j, n_across)*y
+                xi = y
+                x = v*y
+                wj = len*tab%w(j, n_across)*y
             else
-                x(1) = y
-                xi(1) = y - v
-                wj(1) = len*tab%w(j, n_across)
+                x = y
+                xi = y - v
+                wj = len*tab%w(j, n_across)
             end if
-            call weighted_basis(kernel, bx, bz, e1, x, [local_coordinate(bx, e1, x(1))], wj, &
-                                .true., bf)
-            call weighted_basis(kernel, bx, bz, e2, xi, [local_coordinate(bx, e2, xi(1))], &
-                                [1.0_dp], .false., bs)
+            wj = wj*kernel%field_weight(x)
+            l1 = local_coordinate(bx, e1, x)
+            l2 = local_coordinate(bx, e2, xi)
+            bf(1:map%nf) = wj*(poly(1, 1:map%nf, e1) + l1*(poly(2, 1:map%nf, e1) + &
+                                                           l1*poly(3, 1:map%nf, e1)))
+            bs(1:map%ns) = poly(1, 1:map%ns, e2) + l2*(poly(2, 1:map%ns, e2) + &
+                                                       l2*poly(3, 1:map%ns, e2))
             columns: do col = 1, map%ns
-                rows: do r = 1, map%nf
-                    loc(r, col) = loc(r, col) + bf(r, 1)*c(map%comp_f(r), map%comp_s(col))* &
-                                  bs(col, 1)
-                end do rows
+                loc(1:map%nf, col) = loc(1:map%nf, col) + bf(1:map%nf)*cb(1:map%nf, col)*bs(col)
             end do columns
         end do across
     end subroutine add_across
