@@ -63,6 +63,7 @@ module galerkin_assembly
         type(line_rule_t) :: line
         real(dp), allocatable :: x(:), xi(:)       !! point pairs
         real(dp), allocatable :: w(:), wc(:)       !! weights of F and of its log coefficient P
+        real(dp), allocatable :: dv(:)             !! reduced nodes: offsets v - v_sing (exact)
         logical, allocatable :: with_log(:)
         real(dp), allocatable :: f(:, :, :), p(:, :, :)
         integer(int64) :: n_kernel = 0_int64       !! kernel evaluations so far
@@ -270,11 +271,11 @@ contains
         integer :: cap
         if (allocated(work%x)) then
             if (size(work%x) >= n) return
-            deallocate (work%x, work%xi, work%w, work%wc, work%with_log, work%f, work%p)
+            deallocate (work%x, work%xi, work%w, work%wc, work%dv, work%with_log, work%f, work%p)
         end if
         cap = max(n, 1024)
-        allocate (work%x(cap), work%xi(cap), work%w(cap), work%wc(cap), work%with_log(cap), &
-                  work%f(2, 2, cap), work%p(2, 2, cap))
+        allocate (work%x(cap), work%xi(cap), work%w(cap), work%wc(cap), work%dv(cap), &
+                  work%with_log(cap), work%f(2, 2, cap), work%p(2, 2, cap))
     end subroutine reserve
 
     !> loc(r, c) = int int g_r(x) W(x) K_{comp_f(r), comp_s(c)}(x, xi) g_c(xi) over e1 x e2.
@@ -424,15 +425,17 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), intent(out) :: loc(n_loc, n_loc)
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: cuts(5), v_sing, u0, c(2, 2)
+        real(dp) :: cuts(5), u0, c(2, 2)
         integer :: n, k
-        call reduced_cuts(kernel, bx, e1, e2, cuts, v_sing, u0)
-        call reduced_nodes(work, cuts, v_sing, u0, n)
+        call reduced_cuts(kernel, bx, e1, e2, cuts, u0)
+        call reduced_nodes(work, cuts, u0, n)
         if (kernel%homogeneous) then
-            work%x(1:n) = work%line%s(1:n)          ! G(t xi, xi) = G(t, 1)
-            work%xi(1:n) = 1.0_dp
+            ! G(t xi, xi) = G(t, 1) = G(S t, S) with S = 1/|t - 1|: S t - S = +-1 exactly, so
+            ! ln|r - s| keeps full relative precision next to t = 1 (1 - t itself rounds)
+            work%xi(1:n) = 1.0_dp/abs(work%dv(1:n))
+            work%x(1:n) = work%xi(1:n) + sign(1.0_dp, work%dv(1:n))
         else
-            work%x(1:n) = work%line%s(1:n)          ! k(x - xi) = k(u)
+            work%x(1:n) = work%dv(1:n)              ! k(x - xi) = k(u)
             work%xi(1:n) = 0.0_dp
         end if
         call kernel%values(work%x(1:n), work%xi(1:n), work%with_log(1:n), work%f(:, :, 1:n), &
@@ -443,19 +446,20 @@ contains
         v_nodes: do k = 1, n
             c = work%w(k)*work%f(:, :, k)
             if (work%with_log(k)) c = c + work%wc(k)*work%p(:, :, k)
-            call add_across(kernel, bx, e1, e2, map, work%poly, work%tab, work%line%s(k), c, loc)
+            call add_across(kernel, bx, e1, e2, map, work%poly, work%tab, work%dv(k), c, loc)
         end do v_nodes
         if (e1 == e2) loc = loc + transpose(loc)
     end subroutine reduced_pair
 
-    !> Range of v, its kinks and the singular point: v = x/xi (homogeneous) or x - xi, over
-    !! e1 x e2 (e2 > e1) or over the triangle x < xi of a self pair; cuts sorted, duplicates
-    !! and points outside [cuts(1), cuts(5)] collapse to the ends.
-    pure subroutine reduced_cuts(kernel, bx, e1, e2, cuts, v_sing, u0)
+    !> Range of v, its kinks and the log length, all as OFFSETS from the singular point (v - 1
+    !! for v = x/xi, v - 0 for v = x - xi), formed from differences of node coordinates so that
+    !! the range of an element pair keeps full relative precision; over e1 x e2 (e2 > e1) or
+    !! over the triangle x < xi of a self pair; sorted, and clipped to [cuts(1), cuts(5)].
+    pure subroutine reduced_cuts(kernel, bx, e1, e2, cuts, u0)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
         integer, intent(in) :: e1, e2
-        real(dp), intent(out) :: cuts(5), v_sing, u0
+        real(dp), intent(out) :: cuts(5), u0
         real(dp) :: a1, b1, a2, b2
         integer :: i
         a1 = bx%x(e1 - 1)
@@ -463,15 +467,13 @@ contains
         a2 = bx%x(e2 - 1)
         b2 = bx%x(e2)
         if (kernel%homogeneous) then
-            v_sing = 1.0_dp
             u0 = kernel%log_length(1.0_dp)
             if (e1 == e2) then
-                cuts = [a1/b1, 1.0_dp, 1.0_dp, 1.0_dp, 1.0_dp]
+                cuts = [-(b1 - a1)/b1, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
             else
-                cuts = [a1/b2, a1/a2, b1/b2, 1.0_dp, b1/a2]
+                cuts = [(a1 - b2)/b2, (a1 - a2)/a2, (b1 - b2)/b2, 0.0_dp, (b1 - a2)/a2]
             end if
         else
-            v_sing = 0.0_dp
             u0 = kernel%log_length(max(a1, a2))
             if (e1 == e2) then
                 cuts = [a1 - b1, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
@@ -502,10 +504,11 @@ contains
         end do outer
     end subroutine sort_cuts
 
-    !> Nodes of v (work%line%s) with weights work%w, work%wc, and with_log, piece by piece.
-    pure subroutine reduced_nodes(work, cuts, v_sing, u0, n)
+    !> Offsets of the nodes of v from the singular point (work%dv) with weights work%w,
+    !! work%wc, and with_log, piece by piece.
+    pure subroutine reduced_nodes(work, cuts, u0, n)
         type(work_t), intent(inout) :: work
-        real(dp), intent(in) :: cuts(5), v_sing, u0
+        real(dp), intent(in) :: cuts(5), u0
         integer, intent(out) :: n
         type(line_rule_t) :: piece
         real(dp) :: tiny_len
@@ -514,54 +517,46 @@ contains
         n = 0
         pieces: do i = 1, 4
             if (cuts(i + 1) - cuts(i) <= tiny_len) cycle pieces
-            call build_line_rule(work%tab, cuts(i), cuts(i + 1), v_sing, u0, piece)
+            call build_line_rule(work%tab, cuts(i), cuts(i + 1), 0.0_dp, u0, piece)
             m = piece%n
             call reserve(work, n + m)
-            call grow_line(work%line, n + m)
-            work%line%s(n + 1:n + m) = piece%s(1:m)
             work%w(n + 1:n + m) = piece%w(1:m)
             work%wc(n + 1:n + m) = piece%wc(1:m)
+            work%dv(n + 1:n + m) = piece%d(1:m)
             n = n + m
         end do pieces
-        work%line%n = n
         work%with_log(1:n) = work%wc(1:n) /= 0.0_dp
     end subroutine reduced_nodes
 
-    !> Make line%s hold n nodes (keeping the first ones).
-    pure subroutine grow_line(line, n)
-        type(line_rule_t), intent(inout) :: line
-        integer, intent(in) :: n
-        real(dp), allocatable :: tmp(:)
-        if (allocated(line%s)) then
-            if (size(line%s) >= n) return
-            allocate (tmp(max(n, 2*size(line%s))))
-            tmp(1:size(line%s)) = line%s
-            call move_alloc(tmp, line%s)
-        else
-            allocate (line%s(max(n, 256)))
-        end if
-    end subroutine grow_line
-
-    !> Add c(i, j) times the integral of the basis products across the reduced variable v at
-    !! one node: x in [max(a1, a2 + u), min(b1, b2 + u)], xi = x - u (translation), or
-    !! xi in [max(a2, a1/t), min(b2, b1/t)], x = t xi, dx = xi dt (homogeneous).
-    pure subroutine add_across(kernel, bx, e1, e2, map, poly, tab, v, c, loc)
+    !> Add c(i, j) times the integral of the basis products across the reduced variable at one
+    !! node, given as its offset d from the singular point; all positions as offsets from the
+    !! element starts (full relative precision): translation, u = d, x - a1 in
+    !! [max(0, a2 - a1 + u), min(h1, b2 - a1 + u)], xi - a2 = (x - a1) - (a2 - a1) - u;
+    !! homogeneous, t = 1 + d, xi - a2 in [max(0, (a1 - a2 - a2 d)/t), min(h2, (b1 - a2 -
+    !! a2 d)/t)], x - a1 = (a2 - a1) + a2 d + t (xi - a2), dx = xi dt.
+    pure subroutine add_across(kernel, bx, e1, e2, map, poly, tab, d, c, loc)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! (mesh)
         integer, intent(in) :: e1, e2
         type(pair_map_t), intent(in) :: map
         real(dp), intent(in) :: poly(:, :, :)      !! work%poly
         type(gauss_tables_t), intent(in) :: tab
-        real(dp), intent(in) :: v, c(2, 2)
+        real(dp), intent(in) :: d, c(2, 2)
         real(dp), intent(inout) :: loc(n_loc, n_loc)
-        real(dp) :: lo, hi, len, y, x, xi, wj, l1, l2, bf(n_loc), bs(n_loc), cb(n_loc, n_loc)
-        integer :: j, r, col
+        real(dp) :: a1, a2, h1, h2, t, lo, hi, len, y, off1, off2, wj, l1, l2
+        real(dp) :: bf(n_loc), bs(n_loc), cb(n_loc, n_loc)
+        integer :: j, col
+        a1 = bx%x(e1 - 1)
+        a2 = bx%x(e2 - 1)
+        h1 = bx%x(e1) - a1
+        h2 = bx%x(e2) - a2
+        t = 1.0_dp + d
         if (kernel%homogeneous) then
-            lo = max(bx%x(e2 - 1), bx%x(e1 - 1)/v)
-            hi = min(bx%x(e2), bx%x(e1)/v)
+            lo = max(0.0_dp, ((a1 - a2) - a2*d)/t)
+            hi = min(h2, ((bx%x(e1) - a2) - a2*d)/t)
         else
-            lo = max(bx%x(e1 - 1), bx%x(e2 - 1) + v)
-            hi = min(bx%x(e1), bx%x(e2) + v)
+            lo = max(0.0_dp, (a2 - a1) + d)
+            hi = min(h1, (bx%x(e2) - a1) + d)
         end if
         len = hi - lo
         if (len <= 0.0_dp) return
@@ -571,17 +566,16 @@ contains
         across: do j = 1, n_across
             y = lo + len*tab%v(j, n_across)
             if (kernel%homogeneous) then
-                xi = y
-                x = v*y
-                wj = len*tab%w(j, n_across)*y
+                off2 = y
+                off1 = (a2 - a1) + a2*d + t*y
+                wj = len*tab%w(j, n_across)*(a2 + y)*kernel%field_weight(a1 + off1)
             else
-                x = y
-                xi = y - v
-                wj = len*tab%w(j, n_across)
+                off1 = y
+                off2 = y - (a2 - a1) - d
+                wj = len*tab%w(j, n_across)*kernel%field_weight(a1 + off1)
             end if
-            wj = wj*kernel%field_weight(x)
-            l1 = local_coordinate(bx, e1, x)
-            l2 = local_coordinate(bx, e2, xi)
+            l1 = 2.0_dp*off1/h1 - 1.0_dp
+            l2 = 2.0_dp*off2/h2 - 1.0_dp
             bf(1:map%nf) = wj*(poly(1, 1:map%nf, e1) + l1*(poly(2, 1:map%nf, e1) + &
                                                            l1*poly(3, 1:map%nf, e1)))
             bs(1:map%ns) = poly(1, 1:map%ns, e2) + l2*(poly(2, 1:map%ns, e2) + &

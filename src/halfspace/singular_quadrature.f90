@@ -102,10 +102,11 @@ module singular_quadrature
         real(dp), allocatable :: x(:), xi(:), w(:), wc(:)
     end type point_rule_t
 
-    !> Points of a single integral over s with weights for F (w) and for P (wc).
+    !> Points of a single integral over s with weights for F (w) and for P (wc); d = s - x0,
+    !! the signed offset from the singular point, exact (s itself is rounded).
     type :: line_rule_t
         integer :: n = 0
-        real(dp), allocatable :: s(:), w(:), wc(:)
+        real(dp), allocatable :: s(:), w(:), wc(:), d(:)
     end type line_rule_t
 
 contains
@@ -240,7 +241,7 @@ contains
         integer :: i
         call need_order(tab, n_log)
         nodes: do i = 1, n_log
-            call push_line(line, x0 + dir*len*tab%v(i, n_log), len*tab%w(i, n_log), &
+            call push_line(line, x0, dir*len*tab%v(i, n_log), len*tab%w(i, n_log), &
                            len*(tab%wl(i) - tab%w(i, n_log)*log(tab%v(i, n_log))))
         end do nodes
     end subroutine add_log_piece
@@ -254,25 +255,27 @@ contains
         integer :: i
         call need_order(tab, n)
         nodes: do i = 1, n
-            call push_line(line, x0 + dir*(lo + (hi - lo)*tab%v(i, n)), (hi - lo)*tab%w(i, n), &
+            call push_line(line, x0, dir*(lo + (hi - lo)*tab%v(i, n)), (hi - lo)*tab%w(i, n), &
                            0.0_dp)
         end do nodes
     end subroutine add_gauss_piece
 
-    pure subroutine push_line(line, s, w, wc)
+    pure subroutine push_line(line, x0, offset, w, wc)
         type(line_rule_t), intent(inout) :: line
-        real(dp), intent(in) :: s, w, wc
+        real(dp), intent(in) :: x0, offset, w, wc
         integer :: cap
         if (.not. allocated(line%s)) then
-            allocate (line%s(256), line%w(256), line%wc(256))
+            allocate (line%s(256), line%w(256), line%wc(256), line%d(256))
         else if (line%n == size(line%s)) then
             cap = 2*size(line%s)
             call grow_vector(line%s, cap)
             call grow_vector(line%w, cap)
             call grow_vector(line%wc, cap)
+            call grow_vector(line%d, cap)
         end if
         line%n = line%n + 1
-        line%s(line%n) = s
+        line%s(line%n) = x0 + offset
+        line%d(line%n) = offset
         line%w(line%n) = w
         line%wc(line%n) = wc
     end subroutine push_line
