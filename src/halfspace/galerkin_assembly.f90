@@ -15,7 +15,12 @@
 !!    (Legendre moments of ln, i.e. a log-weighted rule, the remainder P, Q analytic), pieces cut
 !!    at the kinks of the range across v and at the steps, the kernel evaluated once per node of
 !!    v, and the integral across v of the basis products done exactly (polynomial, 4-point GL);
+!!    All positions there are offsets from the singular point and from the element starts,
+!!    formed from differences of node coordinates (1 - t or x - a rounded from absolute
+!!    positions would cost eps |x|/h, 1e-13 at N_e = 1000);
 !!  * other kernels: the two-dimensional pair rules of `singular_quadrature`.
+!! A translation-invariant kernel on a (piecewise) uniform mesh repeats the pair integrals of
+!! the translated pair (`translates`): O(N_e) pairs are integrated, the rest copied.
 !! Only pairs e2 >= e1 are integrated; the pair (e2, e1) is the transpose by reciprocity
 !! (W(x) K_ij(x, xi) = W(xi) K_ji(xi, x): r G_ij(r, s) = s G_ji(s, r) for the rings, k_ij(X) =
 !! k_ji(-X) for the strip); a self pair is one triangle plus its transpose, so T is exactly
