@@ -76,7 +76,8 @@ contains
                  new_unittest('symmetric', test_symmetric), &
                  new_unittest('positive_definite', test_positive_definite), &
                  new_unittest('incompressible_no_coupling', test_incompressible), &
-                 new_unittest('fast_vs_reference_assembly', test_fast_vs_reference)]
+                 new_unittest('fast_vs_reference_assembly', test_fast_vs_reference), &
+                 new_unittest('fast_vs_reference_piecewise_uniform', test_piecewise_uniform)]
     end subroutine collect_halfspace_beam
 
     ! ------------------------------------------------------------------ helpers
@@ -593,4 +594,37 @@ contains
             end do meshes
         end do cases
     end subroutine test_fast_vs_reference
+
+    !> The translated-pair reuse of galerkin_assembly on a mesh of two uniform zones (10
+    !! elements of 0.1, then 6 of 0.2333..., the second zone's nodes rounded as a deck would
+    !! give them): fast against reference for P1, P2, S2, entries within 1e-13 of the largest.
+    subroutine test_piecewise_uniform(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(mesh_t) :: msh
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :), t_ref(:, :)
+        integer :: fam, e
+        character(len=60) :: what
+        msh%ne = 16
+        allocate (msh%x(0:16))
+        do e = 0, 10
+            msh%x(e) = -1.2_dp + 0.1_dp*real(e, dp)
+        end do
+        do e = 11, 16
+            msh%x(e) = msh%x(10) + (1.2_dp - msh%x(10))*real(e - 10, dp)/6.0_dp
+        end do
+        families: do fam = INTERP_P1, INTERP_S2
+            call new_basis(bx, msh, fam)
+            call new_basis(bz, msh, fam)
+            call assemble_beam_flexibility(bx, bz, 1.3_dp, 0.2_dp, 0.05_dp, t, err)
+            if (allocated(err)) return
+            call assemble_beam_flexibility(bx, bz, 1.3_dp, 0.2_dp, 0.05_dp, t_ref, err, &
+                                           reference=.true.)
+            if (allocated(err)) return
+            write (what, '("fast vs reference, two zones, family ",i0)') fam
+            call check_close(err, maxval(abs(t - t_ref))/maxval(abs(t_ref)), 0.0_dp, 0.0_dp, &
+                             1.0e-13_dp, trim(what))
+            if (allocated(err)) return
+        end do families
+    end subroutine test_piecewise_uniform
 end module test_halfspace_beam
