@@ -261,12 +261,19 @@ contains
     end function far_points
 
     !> Degree of the polynomial factor on the field side: the basis, times x for the ring
-    !! measure 2 pi x (homogeneous kernels are the ring kernels).
-    pure integer function field_degree(kernel, bx, bz) result(p)
+    !! measure 2 pi x (homogeneous kernels are the ring kernels) where that factor grows on the
+    !! Bernstein ellipse: 2 pi x = W0 (1 + eps xi), eps = h/(a + b), is at most 2 W0 on the
+    !! ellipse rho when eps rho <= 1 (elements away from the axis), a factor 2 in the error.
+    pure integer function field_degree(kernel, bx, bz, e, ratio) result(p)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e                !! field element
+        real(dp), intent(in) :: ratio           !! gap / its length
+        real(dp) :: c
         p = max(bx%degree, bz%degree)
-        if (kernel%homogeneous) p = p + 1
+        if (.not. kernel%homogeneous) return
+        c = 1.0_dp + 2.0_dp*ratio
+        if ((bx%x(e) - bx%x(e - 1))*(c + sqrt(c*c - 1.0_dp)) > bx%x(e) + bx%x(e - 1)) p = p + 1
     end function field_degree
 
     !> Make the work arrays hold n point pairs.
@@ -300,7 +307,8 @@ contains
         gap = max(a2 - b1, a1 - b2)
         if (gap >= near_ratio*max(b1 - a1, b2 - a2)) then
             call tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, &
-                             far_points(gap/(b1 - a1), field_degree(kernel, bx, bz)), &
+                             far_points(gap/(b1 - a1), &
+                                        field_degree(kernel, bx, bz, e1, gap/(b1 - a1))), &
                              far_points(gap/(b2 - a2), max(bx%degree, bz%degree)), &
                              map, work, loc, err)
         else if (reducible(kernel)) then
