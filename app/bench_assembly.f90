@@ -93,8 +93,8 @@ contains
 
     !> Assemble T, processor seconds of this process (cpu_time: the machine is shared, so wall
     !! time would measure the other jobs too; the assembly is single-threaded), the least of
-    !! repeated runs (until 1 s has been spent or 15 runs), and kernel evaluations (paper soil nu_f = 0.1;
-    !! beam width b/l = 0.0055 as in the paper's beam decks).
+    !! repeated runs (until 1 s has been spent or 15 runs), and kernel evaluations (paper soil
+    !! nu_f = 0.1; beam width b/l = 0.0055 as in the paper's beam decks).
     subroutine assemble(plate, bx, bz, reference, t_mat, seconds, n_kernel)
         logical, intent(in) :: plate, reference
         type(basis_t), intent(in) :: bx, bz
