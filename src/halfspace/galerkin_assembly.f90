@@ -425,24 +425,6 @@ contains
         end do points
     end subroutine weighted_basis
 
-    !> b(r, i) = g_r(loc_xi(i)) w(i), r over the bx then the bz functions of element e.
-    pure subroutine basis_values(bx, bz, e, loc_xi, w, b)
-        type(basis_t), intent(in) :: bx, bz
-        integer, intent(in) :: e
-        real(dp), intent(in) :: loc_xi(:)      !! local coordinates in [-1, 1]
-        real(dp), intent(in) :: w(:)           !! weights
-        real(dp), intent(out) :: b(:, :)
-        integer :: idx(max_local), i
-        real(dp) :: val(max_local), der(max_local), x_out
-        b = 0.0_dp
-        points: do i = 1, size(loc_xi)
-            call eval_basis(bx, e, loc_xi(i), idx, val, der, x_out)
-            b(1:bx%n_local, i) = val(1:bx%n_local)*w(i)
-            call eval_basis(bz, e, loc_xi(i), idx, val, der, x_out)
-            b(bx%n_local + 1:bx%n_local + bz%n_local, i) = val(1:bz%n_local)*w(i)
-        end do points
-    end subroutine basis_values
-
     !> Local coordinate of x on element e.
     pure real(dp) function local_coordinate(basis, e, x) result(xi)
         type(basis_t), intent(in) :: basis
