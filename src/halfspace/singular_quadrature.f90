@@ -39,7 +39,7 @@ module singular_quadrature
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
     public :: new_gauss_tables, need_order, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
-    public :: check_bases, basis_at, points_for_ratio, near_ratio, n_max
+    public :: check_bases, near_ratio, n_max
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     integer, parameter :: n_log = 24        !! points of the product-log rule
