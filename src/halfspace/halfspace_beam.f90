@@ -18,11 +18,13 @@
 !! [T_xx T_xz; T_zx T_zz] (bx coefficients first); symmetric (k_xz(X) = -k_zx(X) = k_zx(-X)),
 !! positive definite.
 module halfspace_beam
+    use iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, add_context, EXIT_INPUT
     use shape_functions, only: basis_t
-    use singular_quadrature, only: split_kernel_t, assemble_split_kernel, &
+    use singular_quadrature, only: split_kernel_t, assemble_split_kernel_reference, &
                                    displacement_split_kernel
+    use galerkin_assembly, only: assemble_split_kernel
     implicit none
     private
 
@@ -42,7 +44,8 @@ module halfspace_beam
 contains
 
     !> Galerkin flexibility T of the half-space under the beam (module header).
-    subroutine assemble_beam_flexibility(bx, bz, g_f, nu_f, width, t_mat, err)
+    subroutine assemble_beam_flexibility(bx, bz, g_f, nu_f, width, t_mat, err, reference, &
+                                         n_kernel)
         type(basis_t), intent(in) :: bx                 !! basis of sigma_x
         type(basis_t), intent(in) :: bz                 !! basis of sigma_z, same mesh
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
@@ -50,10 +53,19 @@ contains
         real(dp), intent(in) :: width                   !! beam width b [length]
         real(dp), allocatable, intent(out) :: t_mat(:, :)  !! (nx+nz)^2 [length/force]
         type(error_t), allocatable, intent(out) :: err
+        logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
+        integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
         type(strip_kernel_t) :: kernel
+        logical :: use_reference
         call new_strip_kernel(kernel, g_f, nu_f, width, err)
         if (allocated(err)) return
-        call assemble_split_kernel(kernel, bx, bz, t_mat, err)
+        use_reference = .false.
+        if (present(reference)) use_reference = reference
+        if (use_reference) then
+            call assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
+        else
+            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+        end if
         if (allocated(err)) call add_context(err, 'beam half-space operator')
     end subroutine assemble_beam_flexibility
 
@@ -111,6 +123,7 @@ contains
         kernel%g_f = g_f
         kernel%nu_f = nu_f
         kernel%width = width
+        kernel%translation_invariant = .true.
     end subroutine new_strip_kernel
 
     !> Field measure 1 (line loads).

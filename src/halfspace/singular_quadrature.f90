@@ -28,6 +28,7 @@
 !!    rule in t next to t = 1;
 !!  * well separated pairs: tensor GL with the number of points set by distance/size.
 module singular_quadrature
+    use iso_fortran_env, only: int64
     use kinds, only: dp
     use errors, only: error_t, new_error, add_context, EXIT_INTERNAL
     use quadrature, only: gauss_legendre
@@ -36,8 +37,9 @@ module singular_quadrature
     private
 
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
-    public :: new_gauss_tables, build_pair_rule, build_line_rule
-    public :: assemble_split_kernel, displacement_split_kernel
+    public :: new_gauss_tables, need_order, build_pair_rule, build_line_rule
+    public :: assemble_split_kernel_reference, displacement_split_kernel
+    public :: check_bases, near_ratio, n_max
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     integer, parameter :: n_log = 24        !! points of the product-log rule
@@ -49,6 +51,7 @@ module singular_quadrature
     !! (sigma_z, w): f(i, j) = displacement i due to a unit traction j.
     type, abstract :: split_kernel_t
         logical :: homogeneous = .false.   !! homogeneous of degree 0 about x = 0 (ring kernels)
+        logical :: translation_invariant = .false.  !! depends on x - xi only (strip kernels)
     contains
         procedure(kernel_values_i), deferred :: values
         procedure(field_weight_i), deferred :: field_weight
@@ -89,6 +92,8 @@ module singular_quadrature
         real(dp) :: v(n_max, n_max) = 0.0_dp   !! v(i, n): node i of the n-point rule
         real(dp) :: w(n_max, n_max) = 0.0_dp   !! w(i, n): its weight
         real(dp) :: wl(n_log) = 0.0_dp         !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n_log))
+        logical :: ready(n_max) = .false.      !! rule n tabulated (lazy tables fill on demand)
+        logical :: log_ready = .false.         !! wl tabulated
     end type gauss_tables_t
 
     !> Points of a double integral over (x, xi) with weights for F (w) and for P (wc).
@@ -97,24 +102,42 @@ module singular_quadrature
         real(dp), allocatable :: x(:), xi(:), w(:), wc(:)
     end type point_rule_t
 
-    !> Points of a single integral over s with weights for F (w) and for P (wc).
+    !> Points of a single integral over s with weights for F (w) and for P (wc); d = s - x0,
+    !! the signed offset from the singular point, exact (s itself is rounded).
     type :: line_rule_t
         integer :: n = 0
-        real(dp), allocatable :: s(:), w(:), wc(:)
+        real(dp), allocatable :: s(:), w(:), wc(:), d(:)
     end type line_rule_t
 
 contains
 
-    !> Tabulate GL rules on [0, 1] and the product-log weights (see module header).
-    pure subroutine new_gauss_tables(tab)
+    !> Tabulate GL rules on [0, 1] and the product-log weights (see module header); with
+    !! lazy = .true. nothing is tabulated yet and each rule is made when first needed.
+    pure subroutine new_gauss_tables(tab, lazy)
         type(gauss_tables_t), intent(out) :: tab
-        real(dp) :: xi(n_max), wt(n_max), leg(0:n_log - 1), mom(0:n_log - 1)
-        integer :: n, i, j
+        logical, intent(in), optional :: lazy
+        integer :: n
+        if (present(lazy)) then
+            if (lazy) return
+        end if
         rules: do n = 1, n_max
+            call need_order(tab, n)
+        end do rules
+    end subroutine new_gauss_tables
+
+    !> Make sure the n-point rule (and, for n = n_log, the product-log weights) is tabulated.
+    pure subroutine need_order(tab, n)
+        type(gauss_tables_t), intent(inout) :: tab
+        integer, intent(in) :: n
+        real(dp) :: xi(n_max), wt(n_max), leg(0:n_log - 1), mom(0:n_log - 1)
+        integer :: i, j
+        if (.not. tab%ready(n)) then
             call gauss_legendre(n, xi(1:n), wt(1:n))
             tab%v(1:n, n) = 0.5_dp*(xi(1:n) + 1.0_dp)
             tab%w(1:n, n) = 0.5_dp*wt(1:n)
-        end do rules
+            tab%ready(n) = .true.
+        end if
+        if (n /= n_log .or. tab%log_ready) return
         mom(0) = -1.0_dp
         moments: do j = 1, n_log - 1
             mom(j) = real((-1)**(j + 1), dp)/real(j*(j + 1), dp)
@@ -127,7 +150,8 @@ contains
             end do
             tab%wl(i) = tab%wl(i)*tab%w(i, n_log)
         end do nodes
-    end subroutine new_gauss_tables
+        tab%log_ready = .true.
+    end subroutine need_order
 
     !> P_j(2v - 1), j = 0..n, by the three-term recurrence.
     pure subroutine shifted_legendre(n, v, leg)
@@ -163,7 +187,7 @@ contains
     !> Rule for int_a^b F(s) ds with F = P ln|s - x0| + Q: log pieces of length <= u0 next to
     !! x0 (u0 <= 0: F regular at x0), GL pieces graded geometrically away from x0 elsewhere.
     pure subroutine build_line_rule(tab, a, b, x0, u0, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: a, b          !! interval, a < b
         real(dp), intent(in) :: x0            !! singular point (anywhere)
         real(dp), intent(in) :: u0            !! longest log piece
@@ -181,7 +205,7 @@ contains
 
     !> Append the rule for s = x0 + dir u, u in [d_start, d_end], singular at u = 0.
     pure subroutine add_ray(tab, x0, dir, d_start, d_end, u0, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: x0, dir, d_start, d_end, u0
         type(line_rule_t), intent(inout) :: line
         real(dp) :: lo, hi
@@ -211,43 +235,47 @@ contains
     !> Product-log piece u in [0, len]:
     !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i.
     pure subroutine add_log_piece(tab, x0, dir, len, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: x0, dir, len
         type(line_rule_t), intent(inout) :: line
         integer :: i
+        call need_order(tab, n_log)
         nodes: do i = 1, n_log
-            call push_line(line, x0 + dir*len*tab%v(i, n_log), len*tab%w(i, n_log), &
+            call push_line(line, x0, dir*len*tab%v(i, n_log), len*tab%w(i, n_log), &
                            len*(tab%wl(i) - tab%w(i, n_log)*log(tab%v(i, n_log))))
         end do nodes
     end subroutine add_log_piece
 
     !> Plain n-point GL piece u in [lo, hi].
     pure subroutine add_gauss_piece(tab, x0, dir, lo, hi, n, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: x0, dir, lo, hi
         integer, intent(in) :: n
         type(line_rule_t), intent(inout) :: line
         integer :: i
+        call need_order(tab, n)
         nodes: do i = 1, n
-            call push_line(line, x0 + dir*(lo + (hi - lo)*tab%v(i, n)), (hi - lo)*tab%w(i, n), &
+            call push_line(line, x0, dir*(lo + (hi - lo)*tab%v(i, n)), (hi - lo)*tab%w(i, n), &
                            0.0_dp)
         end do nodes
     end subroutine add_gauss_piece
 
-    pure subroutine push_line(line, s, w, wc)
+    pure subroutine push_line(line, x0, offset, w, wc)
         type(line_rule_t), intent(inout) :: line
-        real(dp), intent(in) :: s, w, wc
+        real(dp), intent(in) :: x0, offset, w, wc
         integer :: cap
         if (.not. allocated(line%s)) then
-            allocate (line%s(256), line%w(256), line%wc(256))
+            allocate (line%s(256), line%w(256), line%wc(256), line%d(256))
         else if (line%n == size(line%s)) then
             cap = 2*size(line%s)
             call grow_vector(line%s, cap)
             call grow_vector(line%w, cap)
             call grow_vector(line%wc, cap)
+            call grow_vector(line%d, cap)
         end if
         line%n = line%n + 1
-        line%s(line%n) = s
+        line%s(line%n) = x0 + offset
+        line%d(line%n) = offset
         line%w(line%n) = w
         line%wc(line%n) = wc
     end subroutine push_line
@@ -288,7 +316,7 @@ contains
     !! u0: longest log piece next to the diagonal; ratio_rule: use ratio coordinates (coincident
     !! elements at the origin of a kernel homogeneous of degree 0).
     pure subroutine build_pair_rule(tab, a1, b1, a2, b2, u0, ratio_rule, rule, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: a1, b1          !! field element
         real(dp), intent(in) :: a2, b2          !! source element
         real(dp), intent(in) :: u0              !! longest log piece
@@ -309,11 +337,13 @@ contains
     end subroutine build_pair_rule
 
     pure subroutine add_tensor(tab, a1, b1, a2, b2, n1, n2, rule)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: a1, b1, a2, b2
         integer, intent(in) :: n1, n2
         type(point_rule_t), intent(inout) :: rule
         integer :: i, j
+        call need_order(tab, n1)
+        call need_order(tab, n2)
         field: do i = 1, n1
             source: do j = 1, n2
                 call push_point(rule, a1 + (b1 - a1)*tab%v(i, n1), a2 + (b2 - a2)*tab%v(j, n2), &
@@ -325,12 +355,13 @@ contains
     !> Relative coordinates u = x - xi over pieces of u between the kinks of the inner range
     !! x in [max(a1, a2 + u), min(b1, b2 + u)] and the diagonal u = 0.
     pure subroutine add_relative(tab, a1, b1, a2, b2, u0, rule, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: a1, b1, a2, b2, u0
         type(point_rule_t), intent(inout) :: rule
         type(line_rule_t), intent(inout) :: line
         real(dp) :: cuts(5), tiny_len, lo, hi, x_lo, x_hi, len, x
         integer :: n_cut, i, k, j
+        call need_order(tab, n_inner)
         tiny_len = 1.0e-14_dp*((b1 - a1) + (b2 - a2))
         cuts = [a1 - b2, a1 - a2, b1 - b2, 0.0_dp, b1 - a2]
         call sort_small(cuts)
@@ -362,12 +393,13 @@ contains
     !> Ratio coordinates on [0, h]^2: xi = x t (xi < x) and x = xi t (x < xi), t in [0, 1],
     !! ln|x - xi| = ln(outer) + ln(1 - t); product-log rule next to t = 1.
     pure subroutine add_ratio(tab, h, rule, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: h
         type(point_rule_t), intent(inout) :: rule
         type(line_rule_t), intent(inout) :: line
         real(dp) :: outer, w_outer
         integer :: i, k
+        call need_order(tab, n_inner)
         call build_line_rule(tab, 0.0_dp, 1.0_dp, 1.0_dp, 0.5_dp, line)
         outer_nodes: do i = 1, n_inner
             outer = h*tab%v(i, n_inner)
@@ -416,13 +448,16 @@ contains
     end subroutine check_bases
 
     !> T_ab = int int g_a(x) W(x) K(x, xi) g_b(xi) dxi dx, blocks [T_xx T_xz; T_zx T_zz] with all
-    !! bx coefficients first. Both triangles are integrated (no symmetrisation).
-    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err)
+    !! bx coefficients first. Both triangles are integrated (no symmetrisation). Reference
+    !! assembly: a rule built point by point for every element pair (graded pieces, GL orders
+    !! for 1e-17 per direction); `galerkin_assembly` is the fast one used by the program.
+    subroutine assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         type(error_t), allocatable, intent(out) :: err
+        integer(int64), intent(out), optional :: n_kernel   !! kernel evaluations (point pairs)
         type(gauss_tables_t) :: tab
         type(point_rule_t) :: rule
         type(line_rule_t) :: line
@@ -431,6 +466,7 @@ contains
         integer :: e1, e2, nx, nz
         character(len=60) :: where
 
+        if (present(n_kernel)) n_kernel = 0_int64
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         nx = bx%n_dof
@@ -447,6 +483,7 @@ contains
                                      kernel%homogeneous .and. e1 == e2 .and. &
                                      .not. kernel%log_length(a1) > 0.0_dp, rule, line)
                 call grow(f, p, rule%n)
+                if (present(n_kernel)) n_kernel = n_kernel + int(rule%n, int64)
                 call kernel%values(rule%x(1:rule%n), rule%xi(1:rule%n), &
                                    rule%wc(1:rule%n) /= 0.0_dp, f, p, err)
                 if (allocated(err)) then
@@ -457,7 +494,7 @@ contains
                 call add_pair(kernel, bx, bz, e1, e2, rule, f, p, t_mat)
             end do source_elements
         end do field_elements
-    end subroutine assemble_split_kernel
+    end subroutine assemble_split_kernel_reference
 
     !> Make sure the kernel work arrays hold n points.
     pure subroutine grow(f, p, n)
