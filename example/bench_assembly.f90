@@ -3,7 +3,7 @@
 !! (assemble_split_kernel_reference) in the same run, and prints a Markdown table with the
 !! number of unknowns, processor seconds (least of repeated runs), kernel evaluations and
 !! max |T_fast - T_ref| / max |T_ref|.
-!! Usage: `fpm run --profile release bench_assembly [-- max_ne [ref_max_ne]]`.
+!! Usage: `fpm run --profile release --example bench_assembly [-- max_ne [ref_max_ne]]`.
 program bench_assembly
     use iso_fortran_env, only: int64, output_unit, error_unit
     use kinds, only: dp
