@@ -14,13 +14,14 @@ program tester
     use test_convergence, only: collect_convergence
     use test_paper, only: collect_paper
     use test_design_values, only: collect_design_values
+    use test_malformed_decks, only: collect_malformed_decks
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
     integer :: n_pass, n_fail
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
-        'design_values paper '
+        'design_values paper malformed_decks '
 
     want_suite = ''
     want_test = ''
@@ -75,6 +76,10 @@ program tester
     if (wanted('design_values')) then
         call collect_design_values(tests)
         call run_suite('design_values', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('malformed_decks')) then
+        call collect_malformed_decks(tests)
+        call run_suite('malformed_decks', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)

@@ -203,9 +203,9 @@ contains
         type(basis_t), intent(in) :: bx, bz
         integer, intent(in) :: e
         real(dp), intent(out) :: poly(3, n_loc)
-        real(dp) :: left(n_loc), right(n_loc), slope(n_loc), half_h
+        real(dp) :: left(n_loc), right(n_loc), slope(n_loc), unused(n_loc), half_h
         call end_values(bx, bz, e, -1.0_dp, left, slope)
-        call end_values(bx, bz, e, 1.0_dp, right, poly(1, :))
+        call end_values(bx, bz, e, 1.0_dp, right, unused)
         half_h = 0.5_dp*(bx%x(e) - bx%x(e - 1))
         slope = slope*half_h                                  ! d/dxi at xi = -1: c2 - 2 c3
         poly(2, :) = 0.5_dp*(right - left)
