@@ -25,7 +25,7 @@ module contact_solver
     use halfspace_operator, only: assemble_flexibility
     use linear_solve, only: solve_symmetric
     use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP, contact_state, &
-                             friction_threshold
+                             friction_threshold, in_tension, is_slipping
     implicit none
     private
 
@@ -52,11 +52,14 @@ module contact_solver
     type, public :: solution_t
         real(dp), allocatable :: z(:)        !! [v; r], physical units
         real(dp), allocatable :: tau0(:)     !! friction threshold at the contact points
-        integer, allocatable :: state(:)     !! STATE_* at the contact points
+        integer, allocatable :: state(:)     !! STATE_* at the contact points (reported)
+        logical, allocatable :: slip(:)      !! slip set (paper 4.6a/4.7a): |sigma_x| > tau0
+        logical, allocatable :: tension(:)   !! tension set (paper 4.6b/4.7b): sigma_z <= 0
         real(dp), allocatable :: sigma(:, :) !! (sigma_x, sigma_z) at the contact points
         type(contact_points_t) :: pts
         type(iteration_record_t), allocatable :: history(:)
         integer :: n_outer = 0, n_inner = 0
+        integer :: n_solves = 0              !! linear solves (factorisations) of the case
         real(dp) :: residual(2) = 0.0_dp     !! relative residuals of equations 4.2a, 4.2b
         real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)
         real(dp) :: applied(3) = 0.0_dp      !! the same of the loads
@@ -93,6 +96,7 @@ contains
         call build_system(m, d, sol%pts, sys, err)
         if (allocated(err)) return
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
+        allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
         call friction_loop(m, d, sys, sol, err)
         if (allocated(err)) return
         call final_checks(m, d, sys, sol, err)
@@ -244,6 +248,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_prev(:), tau_new(:), sigma_prev(:, :)
         integer, allocatable :: state_prev(:)
+        logical, allocatable :: slip_prev(:), tension_prev(:)
         real(dp) :: incr, incr_prev, omega
         integer :: outer
         character(len=200) :: text
@@ -251,6 +256,8 @@ contains
         allocate (sol%tau0(sol%pts%n), tau_new(sol%pts%n), z_prev(d%n))
         sol%tau0 = start_threshold(m)
         sol%state = STATE_STICK      ! adhesive contact
+        sol%slip = .false.
+        sol%tension = .false.
         sol%sigma = 0.0_dp
         sol%z = 0.0_dp
         omega = 1.0_dp
@@ -259,6 +266,8 @@ contains
         outer_loop: do outer = 1, m%max_outer
             z_prev = sol%z
             state_prev = sol%state
+            slip_prev = sol%slip
+            tension_prev = sol%tension
             sigma_prev = sol%sigma
             call penalty_loop(m, d, sys, outer, .false., sol, err)
             if (allocated(err)) then
@@ -267,6 +276,8 @@ contains
                     call log_note(sol, outer, 'inner loop restarted with line search')
                     sol%z = z_prev
                     sol%state = state_prev
+                    sol%slip = slip_prev
+                    sol%tension = tension_prev
                     sol%sigma = sigma_prev
                     call penalty_loop(m, d, sys, outer, .true., sol, err)
                 end if
@@ -336,7 +347,7 @@ contains
         allocate (z_new(d%n), seen(sol%pts%n, m%max_inner))
         n_changed = 0
         inner_loop: do inner = 1, m%max_inner
-            code = set_code(sol, sol%state)
+            code = set_code(sol)
             seen(:, inner) = code
             merit_base = huge(1.0_dp)
             if (searching .and. inner > 1) merit_base = merit(d, sys, sol)
@@ -354,7 +365,7 @@ contains
             end if
             call line_search(d, sys, z_base, z_new - z_base, merit_base, code, sol, lambda)
             incr = relative_change(d, sol%z, z_base)
-            new_code = set_code(sol, sol%state)
+            new_code = set_code(sol)
             n_changed = count(new_code /= code)
             cycled = .not. searching .and. n_changed > 0 .and. &
                      any(all(seen(:, 1:inner) == spread(new_code, 2, inner), dim=1))
@@ -390,7 +401,7 @@ contains
             sol%z = z_base + lambda*step
             call classify(d, sol)
             if (merit_base == huge(1.0_dp)) exit halvings
-            if (halving == 0 .and. all(set_code(sol, sol%state) == code)) exit halvings
+            if (halving == 0 .and. all(set_code(sol) == code)) exit halvings
             if (merit(d, sys, sol) <= (1.0_dp - 1.0e-4_dp*lambda)*merit_base) exit halvings
             if (halving < 6) lambda = 0.5_dp*lambda
         end do halvings
@@ -411,18 +422,17 @@ contains
         merit = norm2(res)
     end function merit
 
-    !> Integer pattern of the sets: 1 tension, +-2 slipping with that sign, 0 stick.
-    pure function set_code(sol, state) result(code)
+    !> Integer pattern of the two independent sets: 1 for tension, plus +-2 for slipping with
+    !! that sign (so -2..3).
+    pure function set_code(sol) result(code)
         type(solution_t), intent(in) :: sol
-        integer, intent(in) :: state(:)
-        integer :: code(size(state))
-        code = 0
-        where (state == STATE_LIFTOFF) code = 1
-        where (state == STATE_SLIP) code = merge(2, -2, sol%sigma(1, :) >= 0.0_dp)
+        integer :: code(size(sol%state))
+        code = merge(1, 0, sol%tension)
+        where (sol%slip) code = code + merge(2, -2, sol%sigma(1, :) >= 0.0_dp)
     end function set_code
 
-    !> Tractions at the contact points and their states for the current z and tau0 (paper 4.7).
-    !! A tensile point (sigma_z <= 0) is lift-off; it also slips, since its threshold is 0.
+    !> Tractions at the contact points, the two independent sets (paper 4.6a/4.7a slip with the
+    !! current tau0, 4.6b/4.7b tension) and the reported state, for the current z and tau0.
     subroutine classify(d, sol)
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(inout) :: sol
@@ -431,13 +441,15 @@ contains
             sol%sigma(:, p) = traction_at(d, sol%z(d%nv + 1:), sol%pts%elem(p), sol%pts%xi(p))
         end do
         sol%state = contact_state(sol%sigma(1, :), sol%sigma(2, :), sol%tau0)
+        sol%slip = is_slipping(sol%sigma(1, :), sol%tau0)
+        sol%tension = in_tension(sol%sigma(2, :))
     end subroutine classify
 
     !> Assemble the set-dependent terms, equilibrate, solve.
     subroutine solve_with_sets(d, sys, sol, z, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
-        type(solution_t), intent(in) :: sol
+        type(solution_t), intent(inout) :: sol
         real(dp), intent(out) :: z(:)
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :), rhs(:), s(:), y(:)
@@ -455,6 +467,7 @@ contains
         call solve_symmetric(a, rhs, y, err)
         if (allocated(err)) return
         z = s*y
+        sol%n_solves = sol%n_solves + 1
     end subroutine solve_with_sets
 
     !> Matrix and right-hand side of (4.2) for the sets held in sol, constraints applied.
@@ -470,10 +483,8 @@ contains
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q
         points: do p = 1, sol%pts%n
-            if (sol%state(p) == STATE_LIFTOFF) then
-                call add_point_mass(d, sol%pts, p, FIELD_SZ, -sys%penalty, a)
-            end if
-            if (sol%state(p) == STATE_STICK) cycle points
+            if (sol%tension(p)) call add_point_mass(d, sol%pts, p, FIELD_SZ, -sys%penalty, a)
+            if (.not. sol%slip(p)) cycle points
             call add_point_mass(d, sol%pts, p, FIELD_SX, -sys%c*sys%kappa, a)
             call eval_basis(d%basis(FIELD_SX), sol%pts%elem(p), sol%pts%xi(p), idx, val, der, x)
             nl = d%basis(FIELD_SX)%n_local
@@ -509,8 +520,8 @@ contains
         type(iteration_record_t) :: rec
         rec%outer = outer
         rec%inner = inner
-        rec%n_slip = count(sol%state == STATE_SLIP)
-        rec%n_tension = count(sol%state == STATE_LIFTOFF)
+        rec%n_slip = count(sol%slip)
+        rec%n_tension = count(sol%tension)
         rec%n_changed = n_changed
         rec%increment = incr
         rec%residual = merit(d, sys, sol)/max(norm2(sys%row_scale(1:d%nv)*sys%q), tiny(1.0_dp))
@@ -535,8 +546,8 @@ contains
         type(iteration_record_t) :: rec
         rec%outer = outer
         rec%inner = 0
-        rec%n_slip = count(sol%state == STATE_SLIP)
-        rec%n_tension = count(sol%state == STATE_LIFTOFF)
+        rec%n_slip = count(sol%slip)
+        rec%n_tension = count(sol%tension)
         rec%increment = incr
         write (rec%note, '(a,f6.4)') 'outer: tau0 update, relaxation ', omega
         sol%history = [sol%history, rec]

@@ -216,8 +216,8 @@ contains
                 end if
             end associate
         end do
-        write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, &
-            ' inner (linear solves)'
+        write (u, '(3x,a,i0,a,i0,a,i0)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, &
+            ' inner; linear solves: ', sol%n_solves
     end subroutine write_log
 
     subroutine write_table(u, m, tab, nondim)
