@@ -16,7 +16,7 @@
 !!     FRICTION  0.5       1.0E-6
 !!     LOAD      PATCH     8000.0              0.0       0.4
 !!     MESH      40        UNIFORM   P1        P1        P1        P1        P1
-!!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9
+!!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9              NEWTON
 !!     OUTPUT
 !!     SWEEP     F         0.3       0.5       0.7
 !!     END
@@ -31,7 +31,7 @@ module deck_reader
     use kinds, only: dp
     use errors, only: error_t, new_error, EXIT_INPUT, EXIT_INTERNAL
     use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
-                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP
     use shape_functions, only: interp_code
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
                            FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
@@ -631,10 +631,12 @@ contains
         end do
     end subroutine read_mesh
 
-    !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0.
+    !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0 method.
     subroutine read_solver(st, cd)
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
+        character(len=field_width) :: word
+        integer :: s
         call take_real(st, cd, 1, 'SOLVER tol_outer (tolerance of the friction loop)', &
                        RULE_POSITIVE, .false., st%m%tol_outer)
         call take_real(st, cd, 2, 'SOLVER tol_inner (tolerance of the contact loop)', &
@@ -647,7 +649,9 @@ contains
                        RULE_POSITIVE, .false., st%m%eta_bar)
         call take_real(st, cd, 6, 'SOLVER tau0 (starting friction threshold, nondimensional)', &
                        RULE_POSITIVE, .false., st%m%tau0_start)
-        call check_unused(st, cd, 6)
+        call take_word(st, cd, 7, 'SOLVER method', 'NEWTON TWOLOOP', .false., word, s)
+        if (s == FIELD_OK) st%m%method = merge(METHOD_TWOLOOP, METHOD_NEWTON, word == 'TWOLOOP')
+        call check_unused(st, cd, 7)
     end subroutine read_solver
 
     !> LOAD kind F_z F_x x1 x2; accepted (appended) only when the card has no error.
