@@ -88,6 +88,7 @@ module contact_system
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
+    public :: jacobian_diagonal
 
 contains
 
@@ -300,6 +301,34 @@ contains
             a(d%fixed(i), d%fixed(i)) = 1.0_dp
         end do
     end subroutine complete_jacobian
+
+    !> The diagonal of complete_jacobian at the tractions sigma (the off-diagonal
+    !! d tau0/d sigma_z block does not touch it).
+    pure function jacobian_diagonal(d, sys, law, pts, sigma) result(dg)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        real(dp) :: dg(d%n)
+        real(dp) :: fx, fz
+        integer :: i, p
+        do i = 1, d%n
+            dg(i) = sys%a0(i, i)
+        end do
+        points: do p = 1, pts%n
+            fx = -sys%c*(law%eps - sys%law%eps)
+            if (is_slipping(sigma(1, p), friction_threshold(law%f, sigma(2, p)))) &
+                fx = fx - law%slip
+            fz = 0.0_dp
+            if (in_tension(sigma(2, p))) fz = -law%penalty
+            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
+                dg(ix) = dg(ix) + fx*pts%wt(p)*pts%val(1:pts%nl(1), 1, p)**2
+                dg(iz) = dg(iz) + fz*pts%wt(p)*pts%val(1:pts%nl(2), 2, p)**2
+            end associate
+        end do points
+        dg(d%fixed) = 1.0_dp
+    end function jacobian_diagonal
 
     !> || row_scale * res ||_2: the merit norm (fixed scaling from the diagonal of A0).
     pure real(dp) function scaled_norm(sys, res)

@@ -25,7 +25,7 @@ module newton_method
     use contact_system, only: solution_t, system_t, law_t, iteration_record_t, new_law, &
                               contact_points_t, &
                               point_tractions, complete_residual, complete_jacobian, &
-                              scaled_norm, relative_change
+                              jacobian_diagonal, relative_change
     use interface_law, only: friction_threshold, in_tension, is_slipping
     implicit none
     private
@@ -34,17 +34,19 @@ module newton_method
 
     integer, parameter :: plain_limit = 25          !! Newton steps before continuation
     real(dp), parameter :: armijo = 1.0e-4_dp       !! sufficient decrease of the merit
+    real(dp), parameter :: round_off = 1.0e3_dp*epsilon(1.0_dp)  !! merit of a solution
     integer, parameter :: watchdog = 10             !! full steps allowed without descent
 
     !> Merit bookkeeping of one Newton stage.
     type :: newton_state_t
         real(dp), allocatable :: res(:)      !! F at the current iterate
         real(dp) :: phi = 0.0_dp             !! merit there
-        real(dp) :: phi_ref = 1.0_dp         !! merit of [q; 0] (relative residuals)
+        real(dp) :: block_scale(2) = 1.0_dp  !! max |v|, max |r| at the start of the stage
         real(dp) :: phi_best = 0.0_dp        !! lowest merit reached with sufficient decrease
         real(dp), allocatable :: z_best(:)   !! where
         real(dp), allocatable :: dz_best(:)  !! the Newton direction computed there
         integer :: relaxed = 0               !! full steps taken since, without descent
+        integer, allocatable :: seen(:, :)   !! their set patterns (cycle detection)
     end type newton_state_t
     real(dp), parameter :: top_level = 4.0_dp       !! continuation starts at 10^4 eps, eta
     real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
@@ -168,7 +170,7 @@ contains
         integer :: iter
         call start_state(d, sys, law, sol, s)
         code = set_pattern(law, point_tractions(sol%pts, sol%z))
-        converged = s%phi <= m%tol_inner*s%phi_ref
+        converged = s%phi <= round_off
         iterations: do iter = 1, max_iter
             if (converged) exit iterations
             call newton_direction(d, sys, law, sol, s%res, dz, err)
@@ -182,10 +184,10 @@ contains
                 call log_step(sol, stage, iter, law, new_code, code, incr, -1.0_dp, t)
                 exit iterations
             end if
-            call log_step(sol, stage, iter, law, new_code, code, incr, s%phi/s%phi_ref, t)
+            call log_step(sol, stage, iter, law, new_code, code, incr, s%phi, t)
             converged = (t == 1.0_dp .and. s%relaxed == 0 .and. &
-                         (all(new_code == code) .or. incr <= m%tol_inner)) &
-                        .or. s%phi <= m%tol_inner*s%phi_ref
+                         (all(new_code == code) .or. incr <= round_off)) &
+                        .or. s%phi <= round_off
             code = new_code
         end do iterations
         sol%n_outer = stage
@@ -198,13 +200,11 @@ contains
         type(law_t), intent(in) :: law
         type(solution_t), intent(in) :: sol
         type(newton_state_t), intent(out) :: s
-        real(dp), allocatable :: rhs0(:)
-        allocate (s%res(d%n), rhs0(d%n))
-        rhs0 = 0.0_dp
-        rhs0(1:d%nv) = sys%q
-        s%phi_ref = max(scaled_norm(sys, rhs0), tiny(1.0_dp))
+        allocate (s%res(d%n))
+        s%block_scale = [max(maxval(abs(sol%z(1:d%nv))), tiny(1.0_dp)), &
+                         max(maxval(abs(sol%z(d%nv + 1:))), tiny(1.0_dp))]
         call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
-        s%phi = scaled_norm(sys, s%res)
+        s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
         s%phi_best = s%phi
         s%z_best = sol%z
         s%relaxed = 0
@@ -230,8 +230,10 @@ contains
         sol%n_inner = sol%n_inner + 1
     end subroutine newton_direction
 
-    !> The full step when it lowers the best merit, or while the watchdog allows; else the
-    !! exact line search from the best point along its direction. t = 0: no descent there.
+    !> The full step when it lowers the best merit, or while the watchdog allows and its set
+    !! pattern is new since the best point; else (no descent for `watchdog` steps, or a cycle
+    !! of set patterns) the exact line search from the best point along its direction.
+    !! t = 0: no descent there.
     subroutine take_step(d, sys, law, sol, s, dz, t)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
@@ -240,19 +242,40 @@ contains
         type(newton_state_t), intent(inout) :: s
         real(dp), intent(in) :: dz(:)
         real(dp), intent(out) :: t
+        integer, allocatable :: code(:)
+        logical :: descent, cycled
+        integer :: k
         t = 1.0_dp
         call complete_residual(d, sys, law, sol%pts, sol%z + dz, s%res)
-        s%phi = scaled_norm(sys, s%res)
-        if (s%phi <= (1.0_dp - armijo)*s%phi_best .or. s%relaxed < watchdog) then
+        s%phi = merit(d, sys, law, sol%pts, s, sol%z + dz, s%res)
+        code = set_pattern(law, point_tractions(sol%pts, sol%z + dz))
+        descent = s%phi <= (1.0_dp - armijo)*s%phi_best
+        cycled = .false.
+        do k = 1, s%relaxed
+            cycled = cycled .or. all(s%seen(:, k) == code)
+        end do
+        if (cycled .and. .not. descent .and. s%relaxed < watchdog) then
+            ! a set pattern met again since the best point: half the step breaks the cycle
+            t = 0.5_dp
+            sol%z = sol%z + t*dz
+            call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
+            s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
+            s%relaxed = s%relaxed + 1
+            s%seen(:, s%relaxed) = set_pattern(law, point_tractions(sol%pts, sol%z))
+            return
+        end if
+        if (descent .or. (s%relaxed < watchdog .and. .not. cycled)) then
             sol%z = sol%z + dz
             s%relaxed = s%relaxed + 1
+            if (.not. allocated(s%seen)) allocate (s%seen(size(code), watchdog))
+            if (s%relaxed <= watchdog) s%seen(:, s%relaxed) = code
         else
-            call line_search(d, sys, law, sol%pts, s%z_best, s%dz_best, s%phi_best, t)
+            call line_search(d, sys, law, sol%pts, s, t)
             sol%z = s%z_best + t*s%dz_best
             call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
-            s%phi = scaled_norm(sys, s%res)
+            s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
         end if
-        if (s%phi <= (1.0_dp - armijo)*s%phi_best .or. t < 1.0_dp) then
+        if (descent .or. t < 1.0_dp) then
             s%phi_best = s%phi
             s%z_best = sol%z
             s%relaxed = 0
@@ -270,39 +293,71 @@ contains
             code = code + merge(2, -2, sigma(1, :) >= 0.0_dp)
     end function set_pattern
 
-    !> Step length t on the ray z + t dz: the exact minimiser of the piecewise quadratic
-    !! phi(t)^2 over (0, 1]; 0 if no point of the ray is better than z.
-    subroutine line_search(d, sys, law, pts, z, dz, phi0, t)
+    !> Step length t on the ray z_best + t dz_best: the exact minimiser of the merit over
+    !! (0, 1] (on each piece between kinks F is affine and the weights constant, so the merit
+    !! squared is quadratic there); 0 if no point of the ray is better than z_best.
+    subroutine line_search(d, sys, law, pts, s, t)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(law_t), intent(in) :: law
         type(contact_points_t), intent(in) :: pts
-        real(dp), intent(in) :: z(:), dz(:)
-        real(dp), intent(in) :: phi0         !! merit at z
+        type(newton_state_t), intent(in) :: s
         real(dp), intent(out) :: t
-        real(dp), allocatable :: lin0(:), lin1(:), f_a(:), f_b(:), knots(:)
-        real(dp) :: best, phi_cand, t_cand, s
+        real(dp), allocatable :: lin0(:), lin1(:), f_a(:), f_b(:), knots(:), wgt(:)
+        real(dp) :: best, phi_cand, frac, t_mid
         integer :: k
-        lin0 = matmul(sys%a0, z)
-        lin0(1:d%nv) = lin0(1:d%nv) - sys%q
-        lin1 = matmul(sys%a0, dz)
-        allocate (f_a(d%n), f_b(d%n))
-        knots = ray_kinks(law, point_tractions(pts, z), point_tractions(pts, dz))
-        best = phi0
-        t = 0.0_dp
-        call complete_residual(d, sys, law, pts, z, f_a, lin0)
-        segments: do k = 2, size(knots)
-            call complete_residual(d, sys, law, pts, z + knots(k)*dz, f_b, &
-                                   lin0 + knots(k)*lin1)
-            call segment_minimum(sys, f_a, f_b, s, phi_cand)
-            t_cand = knots(k - 1) + s*(knots(k) - knots(k - 1))
-            if (phi_cand < best) then
-                best = phi_cand
-                t = t_cand
-            end if
-            f_a = f_b
-        end do segments
+        associate (z => s%z_best, dz => s%dz_best)
+            lin0 = matmul(sys%a0, z)
+            lin0(1:d%nv) = lin0(1:d%nv) - sys%q
+            lin1 = matmul(sys%a0, dz)
+            allocate (f_a(d%n), f_b(d%n))
+            knots = ray_kinks(law, point_tractions(pts, z), point_tractions(pts, dz))
+            best = s%phi_best
+            t = 0.0_dp
+            call complete_residual(d, sys, law, pts, z, f_a, lin0)
+            segments: do k = 2, size(knots)
+                call complete_residual(d, sys, law, pts, z + knots(k)*dz, f_b, &
+                                       lin0 + knots(k)*lin1)
+                t_mid = 0.5_dp*(knots(k - 1) + knots(k))
+                wgt = merit_weights(d, sys, law, pts, s, z + t_mid*dz)
+                call segment_minimum(wgt, f_a, f_b, frac, phi_cand)
+                if (phi_cand < best) then
+                    best = phi_cand
+                    t = knots(k - 1) + frac*(knots(k) - knots(k - 1))
+                end if
+                f_a = f_b
+            end do segments
+        end associate
     end subroutine line_search
+
+    !> The merit: the Jacobi correction |F_i / J_ii| (J the generalised Jacobian at z) of
+    !! every equation, relative to the block scale of its unknowns, in the 2-norm. Tension
+    !! and slip rows are thus measured in tractions like the others, not multiplied by
+    !! 1/eta_bar or 1/eps_bar (which makes a fixed row scaling useless as a merit here).
+    real(dp) function merit(d, sys, law, pts, s, z, res)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        type(newton_state_t), intent(in) :: s
+        real(dp), intent(in) :: z(:), res(:)
+        merit = norm2(merit_weights(d, sys, law, pts, s, z)*res)
+    end function merit
+
+    !> 1 / (|J_ii| block scale) at z.
+    function merit_weights(d, sys, law, pts, s, z) result(wgt)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        type(newton_state_t), intent(in) :: s
+        real(dp), intent(in) :: z(:)
+        real(dp), allocatable :: wgt(:)
+        wgt = abs(jacobian_diagonal(d, sys, law, pts, point_tractions(pts, z)))
+        where (wgt == 0.0_dp) wgt = 1.0_dp
+        wgt(1:d%nv) = 1.0_dp/(wgt(1:d%nv)*s%block_scale(1))
+        wgt(d%nv + 1:) = 1.0_dp/(wgt(d%nv + 1:)*s%block_scale(2))
+    end function merit_weights
 
     !> 0, the kinks of F on the ray z + t dz inside (0, 1) in ascending order, and 1: where a
     !! point's sigma_z or |sigma_x| - f sigma_z changes sign (tractions are linear in t).
@@ -352,15 +407,15 @@ contains
     end subroutine sort_ascending
 
     !> Minimum of || D (f_a + s (f_b - f_a)) || over s in [0, 1] (F is affine between kinks).
-    pure subroutine segment_minimum(sys, f_a, f_b, s, phi)
-        type(system_t), intent(in) :: sys
+    pure subroutine segment_minimum(wgt, f_a, f_b, s, phi)
+        real(dp), intent(in) :: wgt(:)      !! merit weights on the segment
         real(dp), intent(in) :: f_a(:), f_b(:)
         real(dp), intent(out) :: s      !! position of the minimum in the segment
         real(dp), intent(out) :: phi    !! the minimum
         real(dp), allocatable :: a(:), b(:)
         real(dp) :: bb
-        a = sys%row_scale*f_a
-        b = sys%row_scale*(f_b - f_a)
+        a = wgt*f_a
+        b = wgt*(f_b - f_a)
         bb = dot_product(b, b)
         s = 1.0_dp
         if (bb > 0.0_dp) s = min(1.0_dp, max(0.0_dp, -dot_product(a, b)/bb))
