@@ -1,17 +1,22 @@
-!> Unilateral contact with regularised Coulomb friction: the paper's two-loop iteration (§3–4).
+!> Unilateral contact with regularised Coulomb friction: one case solved by the method the deck
+!! selects (SOLVER f7): the semismooth Newton method on the complete problem (newton_method,
+!! the default) or the paper's two-loop iteration (§3–4, below), and the checks every answer
+!! must pass against the complete problem.
 !!
-!! Discrete system (paper 4.2, SPEC §4), z = [v; r]:
+!! Discrete system (paper 4.2, SPEC §4; contact_system), z = [v; r]:
 !!   K v + M^T r = q
 !!   M v - (T + c eps S0 + c kappa Gbar + (c/eta_bar) G) r = - c kappa b
 !! with kappa = (1 - eps^2)/eps (eps = eps_bar), c the friction compliance (model.f90),
-!! Gbar / G the Gauss-point masses of the slipping / tensile points, and
+!! Gbar / G the Gauss-point masses of the slip set / tension set, decided independently at each
+!! point by interface_law (paper 4.6a/4.7a and 4.6b/4.7b), and
 !! b_a = sum over slipping points of w tau0 sign(sigma_x) g_a (paper 4.5a, with the threshold and
 !! the sign taken at the Gauss point rather than through nodal coefficients: identical where the
 !! sign does not change inside an element, and exact at the points that decide the sets).
-!! Inner loop: sets (slip, sign, tension) from the previous iterate, starting from adhesive
-!! contact; stops when the sets repeat or the solution changes by less than tol_inner; a set
-!! pattern that recurs (a cycle) is broken by halving the step. Outer loop: tau0 <- f max(sigma_z,
-!! 0) at the Gauss points (paper 3.6), under-relaxed when the increments stop shrinking.
+!! Two-loop inner loop: sets (slip, sign, tension) from the previous iterate, starting from
+!! adhesive contact; stops when the sets repeat or the solution changes by less than tol_inner;
+!! a set pattern that recurs (a cycle) is broken by halving the step. Outer loop: tau0 <- f
+!! max(sigma_z, 0) at the Gauss points (paper 3.6), under-relaxed when the increments stop
+!! shrinking.
 module contact_solver
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, add_context, EXIT_ANALYSIS

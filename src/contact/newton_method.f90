@@ -6,16 +6,19 @@
 !!
 !! Globalisation:
 !! - start: the adhesive (bonded, bilateral) solution A0 z = [q; 0], the paper's start;
-!! - line search on the merit phi(z) = || D F(z) ||_2 with the fixed scaling D = 1/sqrt|diag A0|.
-!!   F is piecewise linear along a Newton ray z + t dz (its kinks are where a point crosses
-!!   sigma_z = 0 or |sigma_x| = f sigma_z), so phi^2 is piecewise quadratic in t: the full step
-!!   is taken when it lowers phi (Armijo, 1e-4), else the exact minimiser of phi on (0, 1];
+!! - merit: the Jacobi correction |F_i / J_ii| of every equation (J at the point where F is
+!!   evaluated) relative to max |v| or max |r| at the start of the stage, in the 2-norm: the
+!!   penalty and slip rows, whose entries carry 1/eta_bar and 1/eps_bar, count in tractions;
+!! - watchdog: full steps while they lower the best merit, or for up to `watchdog` steps without
+!!   descent as long as no set pattern repeats (a repeated pattern, a cycle, gets a half step);
+!!   then the exact line search from the best point along its direction: F is piecewise linear
+!!   along a Newton ray (kinks where a point crosses sigma_z = 0 or |sigma_x| = f sigma_z), so
+!!   the merit is minimised exactly piece by piece;
 !! - continuation where the plain iteration stalls: eps_bar and eta_bar both scaled by
 !!   10^s, s = 4, 3, ..., 0, each stage started from the previous solution (a failed stage is
 !!   retried with half the decrement).
 !! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
-!! then linear between the iterates and the step solves F = 0), or when the relative merit
-!! phi/phi([q;0]) or the relative increment falls below tol inner.
+!! then linear between the iterates and the step solves F = 0) or the merit is at round-off.
 module newton_method
     use kinds, only: dp
     use errors, only: error_t, new_error, EXIT_ANALYSIS
