@@ -39,6 +39,7 @@ module newton_method
     real(dp), parameter :: armijo = 1.0e-4_dp       !! sufficient decrease of the merit
     real(dp), parameter :: round_off = 1.0e3_dp*epsilon(1.0_dp)  !! merit of a solution
     integer, parameter :: watchdog = 10             !! full steps allowed without descent
+    integer, parameter :: memory = 16               !! set patterns kept for cycle detection
 
     !> Merit bookkeeping of one Newton stage.
     type :: newton_state_t
@@ -49,7 +50,9 @@ module newton_method
         real(dp), allocatable :: z_best(:)   !! where
         real(dp), allocatable :: dz_best(:)  !! the Newton direction computed there
         integer :: relaxed = 0               !! full steps taken since, without descent
-        integer, allocatable :: seen(:, :)   !! their set patterns (cycle detection)
+        real(dp) :: phi_now = 0.0_dp         !! merit at the current iterate
+        integer, allocatable :: seen(:, :)   !! set patterns of the last iterates (ring)
+        integer :: n_seen = 0                !! iterates recorded in seen
     end type newton_state_t
     real(dp), parameter :: top_level = 4.0_dp       !! continuation starts at 10^4 eps, eta
     real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
@@ -211,6 +214,10 @@ contains
         s%phi_best = s%phi
         s%z_best = sol%z
         s%relaxed = 0
+        s%phi_now = s%phi
+        allocate (s%seen(sol%pts%n, memory))
+        s%n_seen = 1
+        s%seen(:, 1) = set_pattern(law, point_tractions(sol%pts, sol%z))
     end subroutine start_state
 
     !> The generalised Newton direction J dz = -F at sol%z (one linear solve).
@@ -233,10 +240,10 @@ contains
         sol%n_inner = sol%n_inner + 1
     end subroutine newton_direction
 
-    !> The full step when it lowers the best merit, or while the watchdog allows and its set
-    !! pattern is new since the best point; else (no descent for `watchdog` steps, or a cycle
-    !! of set patterns) the exact line search from the best point along its direction.
-    !! t = 0: no descent there.
+    !> The full step when it lowers the best merit, or while the watchdog allows, unless its
+    !! set pattern was met before in this stage (a cycle): then the exact line search along
+    !! the step (half the step if that finds no descent). When the watchdog has run out: the
+    !! exact line search from the best point along its direction. t = 0: no descent there.
     subroutine take_step(d, sys, law, sol, s, dz, t)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
@@ -246,7 +253,7 @@ contains
         real(dp), intent(in) :: dz(:)
         real(dp), intent(out) :: t
         integer, allocatable :: code(:)
-        logical :: descent, cycled
+        logical :: descent, cycled, searched
         integer :: k
         t = 1.0_dp
         call complete_residual(d, sys, law, sol%pts, sol%z + dz, s%res)
@@ -254,31 +261,32 @@ contains
         code = set_pattern(law, point_tractions(sol%pts, sol%z + dz))
         descent = s%phi <= (1.0_dp - armijo)*s%phi_best
         cycled = .false.
-        do k = 1, s%relaxed
+        do k = 1, min(s%n_seen, size(s%seen, 2))
             cycled = cycled .or. all(s%seen(:, k) == code)
         end do
-        if (cycled .and. .not. descent .and. s%relaxed < watchdog) then
-            ! a set pattern met again since the best point: half the step breaks the cycle
-            t = 0.5_dp
+        searched = .false.
+        if (cycled) then
+            call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t)
+            if (t <= 0.0_dp) t = 0.5_dp
             sol%z = sol%z + t*dz
-            call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
-            s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
             s%relaxed = s%relaxed + 1
-            s%seen(:, s%relaxed) = set_pattern(law, point_tractions(sol%pts, sol%z))
-            return
-        end if
-        if (descent .or. (s%relaxed < watchdog .and. .not. cycled)) then
+        else if (descent .or. s%relaxed < watchdog) then
             sol%z = sol%z + dz
             s%relaxed = s%relaxed + 1
-            if (.not. allocated(s%seen)) allocate (s%seen(size(code), watchdog))
-            if (s%relaxed <= watchdog) s%seen(:, s%relaxed) = code
         else
-            call line_search(d, sys, law, sol%pts, s, t)
+            call line_search(d, sys, law, sol%pts, s, s%z_best, s%dz_best, s%phi_best, t)
             sol%z = s%z_best + t*s%dz_best
+            searched = .true.
+        end if
+        if (t < 1.0_dp) then
             call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
             s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
         end if
-        if (descent .or. t < 1.0_dp) then
+        s%phi_now = s%phi
+        s%n_seen = s%n_seen + 1
+        s%seen(:, modulo(s%n_seen - 1, size(s%seen, 2)) + 1) = &
+            set_pattern(law, point_tractions(sol%pts, sol%z))
+        if (s%phi <= (1.0_dp - armijo)*s%phi_best .or. searched) then
             s%phi_best = s%phi
             s%z_best = sol%z
             s%relaxed = 0
@@ -296,26 +304,28 @@ contains
             code = code + merge(2, -2, sigma(1, :) >= 0.0_dp)
     end function set_pattern
 
-    !> Step length t on the ray z_best + t dz_best: the exact minimiser of the merit over
-    !! (0, 1] (on each piece between kinks F is affine and the weights constant, so the merit
-    !! squared is quadratic there); 0 if no point of the ray is better than z_best.
-    subroutine line_search(d, sys, law, pts, s, t)
+    !> Step length t on the ray z + t dz: the exact minimiser of the merit over (0, 1] (on each
+    !! piece between kinks F is affine and the weights constant, so the merit squared is
+    !! quadratic there); 0 if no point of the ray is better than z.
+    subroutine line_search(d, sys, law, pts, s, z, dz, phi0, t)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(law_t), intent(in) :: law
         type(contact_points_t), intent(in) :: pts
         type(newton_state_t), intent(in) :: s
+        real(dp), intent(in) :: z(:), dz(:)   !! the ray
+        real(dp), intent(in) :: phi0          !! merit at z
         real(dp), intent(out) :: t
         real(dp), allocatable :: lin0(:), lin1(:), f_a(:), f_b(:), knots(:), wgt(:)
         real(dp) :: best, phi_cand, frac, t_mid
         integer :: k
-        associate (z => s%z_best, dz => s%dz_best)
+        associate (z => z, dz => dz)
             lin0 = matmul(sys%a0, z)
             lin0(1:d%nv) = lin0(1:d%nv) - sys%q
             lin1 = matmul(sys%a0, dz)
             allocate (f_a(d%n), f_b(d%n))
             knots = ray_kinks(law, point_tractions(pts, z), point_tractions(pts, dz))
-            best = s%phi_best
+            best = phi0
             t = 0.0_dp
             call complete_residual(d, sys, law, pts, z, f_a, lin0)
             segments: do k = 2, size(knots)
