@@ -73,7 +73,7 @@ contains
         call adhesive_start(d, sys, sol, err)
         if (allocated(err)) return
         z_start = sol%z
-        call newton_stage(m, d, sys, sys%law, 1, min(plain_limit, m%max_inner), sol, &
+        call newton_stage(d, sys, sys%law, 1, min(plain_limit, m%max_inner), sol, &
                           converged, err)
         if (allocated(err) .or. converged) return
         call log_note(sol, 'plain Newton stalled: continuation')
@@ -124,7 +124,7 @@ contains
         stage = 1
         stages: do
             stage = stage + 1
-            call newton_stage(m, d, sys, stage_law(m, sys, level), stage, m%max_inner, sol, &
+            call newton_stage(d, sys, stage_law(m, sys, level), stage, m%max_inner, sol, &
                               converged, err)
             if (allocated(err)) return
             if (converged) then
@@ -160,8 +160,7 @@ contains
     !! the merit below the best point's, the iteration returns to that point and takes the
     !! exact line-search step along the direction computed there (so the merit decreases at
     !! least every watchdog + 1 steps, and a cycle of set patterns cannot repeat).
-    subroutine newton_stage(m, d, sys, law, stage, max_iter, sol, converged, err)
-        type(model_t), intent(in) :: m
+    subroutine newton_stage(d, sys, law, stage, max_iter, sol, converged, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(law_t), intent(in) :: law
