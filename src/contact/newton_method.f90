@@ -14,8 +14,9 @@
 !!   then the exact line search from the best point along its direction: F is piecewise linear
 !!   along a Newton ray (kinks where a point crosses sigma_z = 0 or |sigma_x| = f sigma_z), so
 !!   the merit is minimised exactly piece by piece;
-!! - continuation where the plain iteration stalls: eps_bar and eta_bar both scaled by
-!!   10^s, s = 4, 3, ..., 0, each stage started from the previous solution (a failed stage is
+!! - continuation where the plain iteration stalls (25 steps, or the watchdog runs out once),
+!!   from the adhesive start: eps_bar and eta_bar both scaled by
+!!   10^s, s = 3, 2, 1, 0, each stage started from the previous solution (a failed stage is
 !!   retried with half the decrement).
 !! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
 !! then linear between the iterates and the step solves F = 0) or the merit is at round-off.
@@ -53,8 +54,9 @@ module newton_method
         real(dp) :: phi_now = 0.0_dp         !! merit at the current iterate
         integer, allocatable :: seen(:, :)   !! set patterns of the last iterates (ring)
         integer :: n_seen = 0                !! iterates recorded in seen
+        logical :: exhausted = .false.       !! the watchdog has run out at least once
     end type newton_state_t
-    real(dp), parameter :: top_level = 4.0_dp       !! continuation starts at 10^4 eps, eta
+    real(dp), parameter :: top_level = 3.0_dp       !! continuation starts at 10^3 eps, eta
     real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
 
 contains
@@ -73,7 +75,7 @@ contains
         call adhesive_start(d, sys, sol, err)
         if (allocated(err)) return
         z_start = sol%z
-        call newton_stage(d, sys, sys%law, 1, min(plain_limit, m%max_inner), sol, &
+        call newton_stage(d, sys, sys%law, 1, min(plain_limit, m%max_inner), .false., sol, &
                           converged, err)
         if (allocated(err) .or. converged) return
         call log_note(sol, 'plain Newton stalled: continuation')
@@ -124,8 +126,8 @@ contains
         stage = 1
         stages: do
             stage = stage + 1
-            call newton_stage(d, sys, stage_law(m, sys, level), stage, m%max_inner, sol, &
-                              converged, err)
+            call newton_stage(d, sys, stage_law(m, sys, level), stage, m%max_inner, .true., &
+                              sol, converged, err)
             if (allocated(err)) return
             if (converged) then
                 if (level <= 0.0_dp) return
@@ -160,11 +162,12 @@ contains
     !! the merit below the best point's, the iteration returns to that point and takes the
     !! exact line-search step along the direction computed there (so the merit decreases at
     !! least every watchdog + 1 steps, and a cycle of set patterns cannot repeat).
-    subroutine newton_stage(d, sys, law, stage, max_iter, sol, converged, err)
+    subroutine newton_stage(d, sys, law, stage, max_iter, patient, sol, converged, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(law_t), intent(in) :: law
         integer, intent(in) :: stage, max_iter
+        logical, intent(in) :: patient     !! else give up when the watchdog first runs out
         type(solution_t), intent(inout) :: sol
         logical, intent(out) :: converged
         type(error_t), allocatable, intent(out) :: err
@@ -194,6 +197,7 @@ contains
                          (all(new_code == code) .or. incr <= round_off)) &
                         .or. s%phi <= round_off
             code = new_code
+            if (.not. (converged .or. patient) .and. s%exhausted) exit iterations
         end do iterations
         sol%n_outer = stage
     end subroutine newton_stage
@@ -276,6 +280,7 @@ contains
             call line_search(d, sys, law, sol%pts, s, s%z_best, s%dz_best, s%phi_best, t)
             sol%z = s%z_best + t*s%dz_best
             searched = .true.
+            s%exhausted = .true.
         end if
         if (t < 1.0_dp) then
             call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
@@ -452,7 +457,7 @@ contains
         if (residual < 0.0_dp) then
             write (rec%note, '(a,es8.1)') 'stalled: no descent, eps_bar ', law%eps
         else if (t < 1.0_dp) then
-            write (rec%note, '(a,f9.6)') 'damped step x', t
+            write (rec%note, '(a,es10.3)') 'damped step x', t
         else if (stage > 1) then
             write (rec%note, '(a,es8.1)') 'Newton, eps_bar ', law%eps
         end if
