@@ -40,6 +40,7 @@ module newton_method
     real(dp), parameter :: armijo = 1.0e-4_dp       !! sufficient decrease of the merit
     real(dp), parameter :: round_off = 1.0e3_dp*epsilon(1.0_dp)  !! merit of a solution
     integer, parameter :: watchdog = 10             !! full steps allowed without descent
+    real(dp), parameter :: stall_increment = 1.0e-12_dp  !! a damped step this small: stalled
     integer, parameter :: memory = 16               !! set patterns kept for cycle detection
 
     !> Merit bookkeeping of one Newton stage.
@@ -188,7 +189,8 @@ contains
             call take_step(d, sys, law, sol, s, dz, t)
             incr = relative_change(d, sol%z, z_old)
             new_code = set_pattern(law, point_tractions(sol%pts, sol%z))
-            if (t <= 0.0_dp) then
+            if (t <= 0.0_dp .or. (t < 1.0_dp .and. incr <= stall_increment)) then
+                ! no descent, or a step that no longer moves: stalled at a kink
                 call log_step(sol, stage, iter, law, new_code, code, incr, -1.0_dp, t)
                 exit iterations
             end if
@@ -243,7 +245,8 @@ contains
         sol%n_inner = sol%n_inner + 1
     end subroutine newton_direction
 
-    !> The full step when it lowers the best merit, or while the watchdog allows, unless its
+    !> The full step when it keeps the set pattern (it then solves F = 0), when it lowers the
+    !! best merit, or while the watchdog allows, unless its
     !! set pattern was met before in this stage (a cycle): then the exact line search along
     !! the step (half the step if that finds no descent). When the watchdog has run out: the
     !! exact line search from the best point along its direction. t = 0: no descent there.
@@ -268,7 +271,11 @@ contains
             cycled = cycled .or. all(s%seen(:, k) == code)
         end do
         searched = .false.
-        if (cycled) then
+        if (all(code == s%seen(:, modulo(s%n_seen - 1, size(s%seen, 2)) + 1))) then
+            ! the full step keeps the sets its Jacobian was built with: it solves F = 0
+            sol%z = sol%z + dz
+            s%relaxed = 0
+        else if (cycled) then
             call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t)
             if (t <= 0.0_dp) t = 0.5_dp
             sol%z = sol%z + t*dz
