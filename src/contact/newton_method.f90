@@ -142,8 +142,9 @@ contains
                 level = max(good_level - step, 0.0_dp)
             end if
         end do stages
-        write (text, '(a,es9.2,a)') 'the contact problem did not converge: Newton stalled '// &
-            'at eps_bar, eta_bar x 10^', level, ' of the continuation (no solution found)'
+        write (text, '(a,f6.3,a,i0,a)') 'the contact problem did not converge: Newton stalled '// &
+            'at eps_bar, eta_bar x 10^', level, ' of the continuation after ', sol%n_solves, &
+            ' linear solves (no solution found)'
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine continuation
 
