@@ -15,7 +15,8 @@ module contact_system
     use errors, only: error_t, add_context
     use quadrature, only: gauss_legendre
     use shape_functions, only: eval_basis, max_local
-    use model, only: model_t, MODEL_BEAM, FIELD_SX, FIELD_SZ, friction_compliance
+    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_SX, FIELD_SZ, &
+                     friction_compliance
     use discretization, only: discretization_t
     use mindlin_structure, only: section_of, assemble_stiffness, assemble_loads, &
                                  assemble_coupling
@@ -84,11 +85,13 @@ module contact_system
         real(dp), allocatable :: row_scale(:)  !! 1/sqrt|diag a0|: fixed scaling of the residual
         real(dp) :: c = 0.0_dp, kappa = 0.0_dp, penalty = 0.0_dp
         type(law_t) :: law                   !! the deck's law
+        integer, allocatable :: translation(:, :)  !! (2, k): unknown ranges of the rigid
+                                                   !! translations of the structure (K t = 0)
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
-    public :: jacobian_diagonal
+    public :: jacobian_diagonal, linear_part
 
 contains
 
@@ -119,6 +122,10 @@ contains
         if (allocated(err)) return
         sys%c = friction_compliance(m)
         sys%law = new_law(m, sys%c, m%eps_bar, m%eta_bar)
+        sys%translation = reshape([d%offset(FIELD_W) + 1, d%offset(FIELD_W) &
+                                   + d%basis(FIELD_W)%n_dof], [2, 1])
+        if (m%kind == MODEL_BEAM) sys%translation = reshape([sys%translation(:, 1), &
+            d%offset(FIELD_U) + 1, d%offset(FIELD_U) + d%basis(FIELD_U)%n_dof], [2, 2])
         sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
         sys%penalty = sys%law%penalty
         ! - c eps S0 on the sigma_x block: the stick branch of the law, everywhere
@@ -257,7 +264,7 @@ contains
         if (present(lin)) then
             res = lin
         else
-            res = matmul(sys%a0, z)
+            res = linear_part(d, sys, z)
             res(1:d%nv) = res(1:d%nv) - sys%q
         end if
         call add_interface_terms(sys, law, pts, point_tractions(pts, z), res)
@@ -301,6 +308,28 @@ contains
             a(d%fixed(i), d%fixed(i)) = 1.0_dp
         end do
     end subroutine complete_jacobian
+
+    !> A0 z, with K applied to v less its rigid translations (w, and u_s for the beam, by their
+    !! first coefficient): K annihilates them exactly, but in floating point K times a large
+    !! rigid settlement leaves round-off of eps |K| |v|, which for a structure much stiffer than
+    !! the soil swamps the forces the soil exerts (the stiff-structure case of issue 7).
+    pure function linear_part(d, sys, z) result(lin)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: z(:)
+        real(dp) :: lin(d%n)
+        real(dp) :: v(d%nv)
+        integer :: k
+        v = z(1:d%nv)
+        do k = 1, size(sys%translation, 2)
+            associate (i1 => sys%translation(1, k), i2 => sys%translation(2, k))
+                v(i1:i2) = v(i1:i2) - z(i1)
+            end associate
+        end do
+        lin(1:d%nv) = matmul(sys%a0(1:d%nv, 1:d%nv), v) &
+                      + matmul(sys%a0(1:d%nv, d%nv + 1:), z(d%nv + 1:))
+        lin(d%nv + 1:) = matmul(sys%a0(d%nv + 1:, :), z)
+    end function linear_part
 
     !> The diagonal of complete_jacobian at the tractions sigma (the off-diagonal
     !! d tau0/d sigma_z block does not touch it).
