@@ -14,8 +14,8 @@ module contact_system
     use kinds, only: dp, pi
     use errors, only: error_t, add_context
     use quadrature, only: gauss_legendre
-    use shape_functions, only: eval_basis, max_local
-    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_SX, FIELD_SZ, &
+    use shape_functions, only: eval_basis, max_local, basis_t, INTERP_P2, INTERP_S2
+    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ, &
                      friction_compliance
     use discretization, only: discretization_t
     use mindlin_structure, only: section_of, assemble_stiffness, assemble_loads, &
@@ -87,6 +87,8 @@ module contact_system
         type(law_t) :: law                   !! the deck's law
         integer, allocatable :: translation(:, :)  !! (2, k): unknown ranges of the rigid
                                                    !! translations of the structure (K t = 0)
+        integer :: psi_range(2) = 0          !! beam: psi unknowns (rigid rotation psi = 1 ...)
+        real(dp), allocatable :: rotation_w(:)  !! ... with w = x: its w coefficients
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
@@ -124,8 +126,13 @@ contains
         sys%law = new_law(m, sys%c, m%eps_bar, m%eta_bar)
         sys%translation = reshape([d%offset(FIELD_W) + 1, d%offset(FIELD_W) &
                                    + d%basis(FIELD_W)%n_dof], [2, 1])
-        if (m%kind == MODEL_BEAM) sys%translation = reshape([sys%translation(:, 1), &
-            d%offset(FIELD_U) + 1, d%offset(FIELD_U) + d%basis(FIELD_U)%n_dof], [2, 2])
+        if (m%kind == MODEL_BEAM) then
+            sys%translation = reshape([sys%translation(:, 1), &
+                d%offset(FIELD_U) + 1, d%offset(FIELD_U) + d%basis(FIELD_U)%n_dof], [2, 2])
+            sys%psi_range = [d%offset(FIELD_PSI) + 1, d%offset(FIELD_PSI) &
+                             + d%basis(FIELD_PSI)%n_dof]
+            sys%rotation_w = linear_coefficients(d%basis(FIELD_W))
+        end if
         sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
         sys%penalty = sys%law%penalty
         ! - c eps S0 on the sigma_x block: the stick branch of the law, everywhere
@@ -309,8 +316,9 @@ contains
         end do
     end subroutine complete_jacobian
 
-    !> A0 z, with K applied to v less its rigid translations (w, and u_s for the beam, by their
-    !! first coefficient): K annihilates them exactly, but in floating point K times a large
+    !> A0 z, with K applied to v less its rigid-body part (beam: the rotation w = x, psi = 1 by
+    !! the mean psi; then the translations of w, and of u_s for the beam, by their first
+    !! coefficient): K annihilates them exactly, but in floating point K times a large
     !! rigid settlement leaves round-off of eps |K| |v|, which for a structure much stiffer than
     !! the soil swamps the forces the soil exerts (the stiff-structure case of issue 7).
     pure function linear_part(d, sys, z) result(lin)
@@ -318,18 +326,56 @@ contains
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: z(:)
         real(dp) :: lin(d%n)
-        real(dp) :: v(d%nv)
-        integer :: k
-        v = z(1:d%nv)
-        do k = 1, size(sys%translation, 2)
-            associate (i1 => sys%translation(1, k), i2 => sys%translation(2, k))
-                v(i1:i2) = v(i1:i2) - z(i1)
-            end associate
-        end do
-        lin(1:d%nv) = matmul(sys%a0(1:d%nv, 1:d%nv), v) &
+        lin(1:d%nv) = matmul(sys%a0(1:d%nv, 1:d%nv), flexible_part(sys, z(1:d%nv))) &
                       + matmul(sys%a0(1:d%nv, d%nv + 1:), z(d%nv + 1:))
         lin(d%nv + 1:) = matmul(sys%a0(d%nv + 1:, :), z)
     end function linear_part
+
+    !> v less its rigid-body part, which K annihilates.
+    pure function flexible_part(sys, v_in) result(v)
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: v_in(:)
+        real(dp) :: v(size(v_in))
+        real(dp) :: theta
+        integer :: k
+        v = v_in
+        if (allocated(sys%rotation_w)) then
+            associate (i1 => sys%psi_range(1), i2 => sys%psi_range(2), &
+                       j1 => sys%translation(1, 1), j2 => sys%translation(2, 1))
+                theta = sum(v(i1:i2))/real(i2 - i1 + 1, dp)
+                v(i1:i2) = v(i1:i2) - theta
+                v(j1:j2) = v(j1:j2) - theta*sys%rotation_w
+            end associate
+        end if
+        do k = 1, size(sys%translation, 2)
+            associate (i1 => sys%translation(1, k), i2 => sys%translation(2, k))
+                v(i1:i2) = v(i1:i2) - v(i1)
+            end associate
+        end do
+    end function flexible_part
+
+    !> Coefficients of the function x in a basis (it reproduces linear functions): nodal values
+    !! for P1 and P2, Greville abscissae (t(i+1) + t(i+2))/2 for the quadratic B-splines.
+    pure function linear_coefficients(basis) result(c)
+        type(basis_t), intent(in) :: basis
+        real(dp), allocatable :: c(:)
+        integer :: i, e
+        allocate (c(basis%n_dof))
+        select case (basis%family)
+        case (INTERP_P2)
+            do e = 1, basis%ne
+                c(2*e - 1) = basis%x(e - 1)
+                c(2*e) = 0.5_dp*(basis%x(e - 1) + basis%x(e))
+            end do
+            c(basis%n_dof) = basis%x(basis%ne)
+        case (INTERP_S2)
+            do i = 1, basis%n_dof
+                c(i) = 0.5_dp*(basis%knots(i + 1) + basis%knots(i + 2))
+            end do
+        case default
+            c = basis%x(0:basis%ne)
+        end select
+    end function linear_coefficients
 
     !> The diagonal of complete_jacobian at the tractions sigma (the off-diagonal
     !! d tau0/d sigma_z block does not touch it).
