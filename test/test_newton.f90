@@ -94,12 +94,11 @@ contains
     end subroutine run
 
     !> Solve m and assert the four checks of the module header; what names the case.
-    subroutine require_solved(m, what, err, sol_out, equilibrium_tol)
+    subroutine require_solved(m, what, err, sol_out)
         type(model_t), intent(in) :: m
         character(len=*), intent(in) :: what
         type(error_t), allocatable, intent(out) :: err
         type(solution_t), intent(out), optional :: sol_out
-        real(dp), intent(in), optional :: equilibrium_tol  !! of V; default 1e-8
         type(solution_t) :: sol
         type(station_table_t) :: tab
         type(error_t), allocatable :: run_err
@@ -110,7 +109,6 @@ contains
             return
         end if
         eq_tol = 1.0e-8_dp
-        if (present(equilibrium_tol)) eq_tol = equilibrium_tol
         v = total_vertical_load(m)
         scale = v*[1.0_dp, 1.0_dp, m%length]
         call check(err, all(abs(sol%reaction - sol%applied) <= eq_tol*scale), &
