@@ -10,16 +10,20 @@
 !!   evaluated) relative to max |v| or max |r| at the start of the stage, in the 2-norm: the
 !!   penalty and slip rows, whose entries carry 1/eta_bar and 1/eps_bar, count in tractions;
 !! - watchdog: full steps while they lower the best merit, or for up to `watchdog` steps without
-!!   descent as long as no set pattern repeats (a repeated pattern, a cycle, gets a half step);
-!!   then the exact line search from the best point along its direction: F is piecewise linear
-!!   along a Newton ray (kinks where a point crosses sigma_z = 0 or |sigma_x| = f sigma_z), so
-!!   the merit is minimised exactly piece by piece;
-!! - continuation where the plain iteration stalls (25 steps, or the watchdog runs out once),
-!!   from the adhesive start: eps_bar and eta_bar both scaled by
+!!   descent; then the exact line search from the best point along its direction. F is
+!!   piecewise linear along a Newton ray (kinks where a point crosses sigma_z = 0 or
+!!   |sigma_x| = f sigma_z), so the merit is minimised exactly piece by piece. A step to a set
+!!   pattern met in the last 16 iterates (a cycle) is replaced by the exact line search along
+!!   it; a full step that keeps the set pattern is always taken (it solves F = 0);
+!! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once, or a
+!!   damped step no longer moves), from the adhesive start: eps_bar and eta_bar both scaled by
 !!   10^s, s = 3, 2, 1, 0, each stage started from the previous solution (a failed stage is
-!!   retried with half the decrement).
+!!   retried from the last converged one with half the decrement; if the first fails, or the
+!!   decrement falls below 1/8 decade, the case ends with status 2).
 !! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
-!! then linear between the iterates and the step solves F = 0) or the merit is at round-off.
+!! then linear between the iterates and the step solves F = 0) or the merit is at round-off,
+!! and the residual of 4.2a is below 1e-12 of the load or no longer halves (further exact
+!! steps refine the solution of a stiff structure).
 module newton_method
     use kinds, only: dp
     use errors, only: error_t, new_error, EXIT_ANALYSIS
@@ -34,7 +38,7 @@ module newton_method
     implicit none
     private
 
-    public :: solve_newton, set_pattern
+    public :: solve_newton
 
     integer, parameter :: plain_limit = 25          !! Newton steps before continuation
     real(dp), parameter :: armijo = 1.0e-4_dp       !! sufficient decrease of the merit
@@ -44,6 +48,8 @@ module newton_method
     integer, parameter :: watchdog = 10             !! full steps allowed without descent
     real(dp), parameter :: stall_increment = 1.0e-12_dp  !! a damped step this small: stalled
     integer, parameter :: memory = 16               !! set patterns kept for cycle detection
+    real(dp), parameter :: top_level = 3.0_dp       !! continuation starts at 10^3 eps, eta
+    real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
 
     !> Merit bookkeeping of one Newton stage.
     type :: newton_state_t
@@ -59,8 +65,6 @@ module newton_method
         integer :: n_seen = 0                !! iterates recorded in seen
         logical :: exhausted = .false.       !! the watchdog has run out at least once
     end type newton_state_t
-    real(dp), parameter :: top_level = 3.0_dp       !! continuation starts at 10^3 eps, eta
-    real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
 
 contains
 
