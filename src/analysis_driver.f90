@@ -93,8 +93,11 @@ contains
         end if
         selected = [(mod(i - 1, opt%shard_count) == opt%shard_index - 1, i=1, n)]
         threads = thread_count(opt%threads, count(selected))
+        ! a sweep's cases always use single-threaded BLAS, however many run at once: the
+        ! summation order, and so every digit, is then the same in serial, parallel and
+        ! sharded runs
         blas_before = blas_thread_count()
-        if (threads > 1) call set_blas_threads(1)
+        if (n > 1) call set_blas_threads(1)
         call system_clock(clock_start)
         done = 0
         !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) private(i)
@@ -109,7 +112,7 @@ contains
             !$omp end critical (fricon_progress)
         end do cases_loop
         !$omp end parallel do
-        if (threads > 1) call set_blas_threads(blas_before)
+        if (n > 1) call set_blas_threads(blas_before)
         do i = 1, n
             if (selected(i)) call report_case(log_unit, err_unit, deck%path, out_dir, results(i), &
                                               status)

@@ -10,6 +10,8 @@ module model
     integer, parameter, public :: LOAD_POINT = 1, LOAD_PATCH = 2, LOAD_MOMENT = 3, LOAD_RING = 4
     integer, parameter, public :: FIELD_U = 1, FIELD_W = 2, FIELD_PSI = 3, &
                                   FIELD_SX = 4, FIELD_SZ = 5
+    !> Solution methods of the contact problem (SOLVER field 7).
+    integer, parameter, public :: METHOD_NEWTON = 1, METHOD_TWOLOOP = 2
 
     !> One LOAD card, in physical units (forces, lengths; moment in force*length).
     type, public :: load_t
@@ -55,6 +57,7 @@ module model
         integer :: max_inner = 100
         real(dp) :: eta_bar = 1.0e-9_dp   !! penalty of the tension zone (SPEC §4)
         real(dp) :: tau0_start = -1.0_dp  !! start threshold, nondim; < 0: f * mean pressure
+        integer :: method = METHOD_NEWTON  !! METHOD_NEWTON (default) or METHOD_TWOLOOP (paper)
         ! output
         integer :: stations = 0           !! 0: every node of the mesh
     end type model_t

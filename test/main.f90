@@ -10,6 +10,7 @@ program tester
     use test_structure, only: collect_structure
     use test_deck_reader, only: collect_deck_reader
     use test_contact_solver, only: collect_contact_solver
+    use test_newton, only: collect_newton
     use test_report_writer, only: collect_report_writer
     use test_convergence, only: collect_convergence
     use test_paper, only: collect_paper
@@ -63,6 +64,10 @@ program tester
     if (wanted('contact_solver')) then
         call collect_contact_solver(tests)
         call run_suite('contact_solver', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('newton')) then
+        call collect_newton(tests)
+        call run_suite('newton', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('report_writer')) then
         call collect_report_writer(tests)

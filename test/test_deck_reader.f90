@@ -7,7 +7,7 @@ module test_deck_reader
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_INPUT
     use model, only: model_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, LOAD_RING, &
-                     relative_stiffness, total_vertical_load
+                     relative_stiffness, total_vertical_load, METHOD_NEWTON, METHOD_TWOLOOP
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck, case_count, case_model, &
                            default_deck_lines
@@ -66,6 +66,7 @@ contains
                  new_unittest('unknown_words', test_unknown_words), &
                  new_unittest('stations_below_two', test_stations), &
                  new_unittest('eps_bar_range', test_eps_bar), &
+                 new_unittest('solver_method', test_solver_method), &
                  new_unittest('name_columns', test_name_columns), &
                  new_unittest('extra_fields', test_extra_fields), &
                  new_unittest('sweep_incompatible', test_sweep_incompatible), &
@@ -317,6 +318,8 @@ contains
             if (allocated(err)) return
             call check(err, m%tau0_start < 0.0_dp .and. m%stations == 0, 'tau0 and stations')
             if (allocated(err)) return
+            call check(err, m%method == METHOD_NEWTON, 'SOLVER method defaults to NEWTON')
+            if (allocated(err)) return
             call check(err, m%loads(1)%x1 == 0.0_dp .and. m%loads(1)%kind == LOAD_POINT, &
                        'POINT x1 defaults to the centre')
         end associate
@@ -331,7 +334,7 @@ contains
                  card('friction', '0.6'), &
                  card('load', 'point', '1.0', '0.1'), &
                  card('mesh', '10', 'edges', 'p2', 's2', 'p1', 'P1', 'p2'), &
-                 card('solver', '1e-6', '1e-9', '50', '60', '1e-8', '0.2'), &
+                 card('solver', '1e-6', '1e-9', '50', '60', '1e-8', '0.2', 'twoloop'), &
                  card('output', '11'), &
                  card('end')]
         call parse_ok('t.dat', lines, deck, err)
@@ -347,8 +350,31 @@ contains
                        'SOLVER counts and OUTPUT stations')
             if (allocated(err)) return
             call check_close(err, m%tau0_start, 0.2_dp, 0.0_dp, 0.0_dp, 'tau0')
+            if (allocated(err)) return
+            call check(err, m%method == METHOD_TWOLOOP, 'SOLVER method word twoloop')
         end associate
     end subroutine test_case_insensitive
+
+    !> SOLVER f7: NEWTON (the default) or TWOLOOP; any other word is an input error.
+    subroutine test_solver_method(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        character(len=w), allocatable :: lines(:)
+        lines = beam_nondim()
+        lines = [lines(1:4), card('SOLVER', '', '', '', '', '', '', 'NEWTON'), lines(5)]
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, deck%base%method == METHOD_NEWTON, 'SOLVER method NEWTON')
+        if (allocated(err)) return
+        lines(5) = card('SOLVER', '', '', '', '', '', '', 'TWOLOOP')
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, deck%base%method == METHOD_TWOLOOP, 'SOLVER method TWOLOOP')
+        if (allocated(err)) return
+        lines(5) = card('SOLVER', '', '', '', '', '', '', 'SECANT')
+        call expect_error(lines, [character(len=120) :: 'test/bad.dat:5:71-80: SOLVER method', &
+                          'must be NEWTON or TWOLOOP, got ''SECANT'''], err)
+    end subroutine test_solver_method
 
     subroutine test_comments(err)
         type(error_t), allocatable, intent(out) :: err

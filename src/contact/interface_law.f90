@@ -12,6 +12,7 @@ module interface_law
     integer, parameter, public :: STATE_LIFTOFF = 0, STATE_STICK = 1, STATE_SLIP = 2
 
     public :: friction_threshold, in_tension, is_slipping, contact_state
+    public :: slip_excess, tensile_part, threshold_slope
 
 contains
 
@@ -46,4 +47,28 @@ contains
             state = STATE_STICK
         end if
     end function contact_state
+
+    !> (|sigma_x| - tau0)^+ sign(sigma_x): the part of the shear beyond the threshold, which the
+    !! slip branch of the law turns into slip (SPEC §4; nonzero exactly on the slip set).
+    elemental real(dp) function slip_excess(sigma_x, tau0)
+        real(dp), intent(in) :: sigma_x, tau0
+        slip_excess = 0.0_dp
+        if (is_slipping(sigma_x, tau0)) slip_excess = sign(abs(sigma_x) - tau0, sigma_x)
+    end function slip_excess
+
+    !> The tensile part of sigma_z that the exterior penalty acts on (paper 3.7-3.9): sigma_z on
+    !! the tension set, else 0.
+    elemental real(dp) function tensile_part(sigma_z)
+        real(dp), intent(in) :: sigma_z
+        tensile_part = 0.0_dp
+        if (in_tension(sigma_z)) tensile_part = sigma_z
+    end function tensile_part
+
+    !> d tau0 / d sigma_z of friction_threshold: f in compression, 0 on the tension set (the
+    !! one-sided derivative the semismooth Newton method uses at sigma_z = 0).
+    elemental real(dp) function threshold_slope(f, sigma_z)
+        real(dp), intent(in) :: f, sigma_z
+        threshold_slope = f
+        if (in_tension(sigma_z)) threshold_slope = 0.0_dp
+    end function threshold_slope
 end module interface_law

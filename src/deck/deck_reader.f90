@@ -16,7 +16,7 @@
 !!     FRICTION  0.5       1.0E-6
 !!     LOAD      PATCH     8000.0              0.0       0.4
 !!     MESH      40        UNIFORM   P1        P1        P1        P1        P1
-!!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9
+!!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9              NEWTON
 !!     OUTPUT
 !!     SWEEP     F         0.3       0.5       0.7
 !!     END
@@ -28,10 +28,11 @@
 !!
 !! SWEEP cases are numbered 1..case_count with the last SWEEP card varying fastest.
 module deck_reader
+    use iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_INPUT, EXIT_INTERNAL
     use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
-                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP
     use shape_functions, only: interp_code
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
                            FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
@@ -89,6 +90,7 @@ module deck_reader
 
     integer, parameter :: max_cases = 100000        !! largest number of SWEEP combinations
     integer, parameter :: max_line_kept = 1024      !! longer lines are cut (they are errors)
+    integer(int64), parameter :: max_deck_bytes = 50000000_int64   !! a deck is text of cards
     character(len=*), parameter :: utf8_bom = achar(239)//achar(187)//achar(191)
     character(len=*), parameter :: field_hint = 'fields are 10 columns wide: f1 is columns '// &
         '11-20, f2 21-30, f3 31-40, ... (free format is not read; see the column ruler in README)'
@@ -146,8 +148,8 @@ contains
         deck%stem = stem_of(path)
         allocate (deck%lines(0), deck%sweeps(0))
         msg = ''
-        open (newunit=u, file=path, status='old', action='read', form='formatted', &
-              access='sequential', iostat=ios, iomsg=msg)
+        open (newunit=u, file=path, status='old', action='read', form='unformatted', &
+              access='stream', iostat=ios, iomsg=msg)
         if (ios /= 0) then
             call new_error(err, EXIT_INPUT, path//': cannot open the deck: '//trim(msg))
             return
@@ -335,8 +337,8 @@ contains
         chars: do c = 1, len_trim(text)
             code = iachar(text(c:c))
             if (code == 9 .or. code < 32 .or. code == 127) then
-                call add_diagnostic(st%diag, i, c, c, merge('TAB character    ', &
-                    'control character', code == 9)//' in a comment (column '//int_text(c)// &
+                call add_diagnostic(st%diag, i, c, c, trim(merge('TAB character    ', &
+                    'control character', code == 9))//' in a comment (column '//int_text(c)// &
                     '): use blanks', echo_text(text))
                 return
             end if
@@ -530,7 +532,9 @@ contains
             '(FRICTION f eps_bar; f = 0 for a frictionless interface)')
         if (missing(st, C_LOAD)) call deck_error(st, 'missing LOAD card (at least '// &
             'one load is required)')
-        if (st%end_line == 0 .and. st%last_line == 0) then
+        if (st%unreadable_line(C_END) > 0) then
+            continue     ! an END whose name line could not be read has its own error
+        else if (st%end_line == 0 .and. st%last_line == 0) then
             call deck_error(st, 'missing END card (the deck is empty)')
         else if (st%end_line == 0) then
             call deck_error(st, 'missing END card (the deck ends at line '// &
@@ -697,10 +701,12 @@ contains
         end do
     end subroutine read_mesh
 
-    !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0.
+    !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0 method.
     subroutine read_solver(st, cd)
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
+        character(len=field_width) :: word
+        integer :: s
         call take_real(st, cd, 1, 'SOLVER tol_outer (tolerance of the friction loop)', &
                        RULE_POSITIVE, .false., st%m%tol_outer)
         call take_real(st, cd, 2, 'SOLVER tol_inner (tolerance of the contact loop)', &
@@ -713,7 +719,9 @@ contains
                        RULE_POSITIVE, .false., st%m%eta_bar)
         call take_real(st, cd, 6, 'SOLVER tau0 (starting friction threshold, nondimensional)', &
                        RULE_POSITIVE, .false., st%m%tau0_start)
-        call check_unused(st, cd, 6)
+        call take_word(st, cd, 7, 'SOLVER method', 'NEWTON TWOLOOP', .false., word, s)
+        if (s == FIELD_OK) st%m%method = merge(METHOD_TWOLOOP, METHOD_NEWTON, word == 'TWOLOOP')
+        call check_unused(st, cd, 7)
     end subroutine read_solver
 
     !> LOAD kind F_z F_x x1 x2; accepted (appended) only when the card has no error.
@@ -1379,59 +1387,70 @@ contains
         if (len(stem) == 0) stem = 'deck'
     end function stem_of
 
-    !> All lines of an open file (a DOS carriage return at the end of a line is dropped).
+    !> All lines of a deck opened for stream input: the bytes split at LF only (a CR before
+    !! the LF, a DOS line end, is dropped; a lone CR stays in its line, where it is an error
+    !! with its column, instead of silently ending a record as a formatted read would). A line
+    !! is kept up to max_line_kept + 1 characters (longer is an error).
     subroutine read_all_lines(u, raw, n, ios, msg)
         integer, intent(in) :: u
         type(text_line_t), allocatable, intent(out) :: raw(:)
         integer, intent(out) :: n               !! lines read
         integer, intent(out) :: ios             !! 0, or the failing iostat
         character(len=*), intent(inout) :: msg  !! iomsg on failure
-        type(text_line_t), allocatable :: grown(:)
-        character(len=:), allocatable :: line
-        logical :: at_end
+        character(len=:), allocatable :: bytes
+        integer(int64) :: size_bytes
+        integer :: start, stop_at, k
         n = 0
-        allocate (raw(64))
-        lines: do
-            call read_one_line(u, line, at_end, ios, msg)
-            if (ios /= 0 .or. (at_end .and. len(line) == 0)) exit lines
-            if (n == max_lines) then
-                ios = 1
-                msg = 'more than '//int_text(max_lines)//' lines: not a deck'
-                exit lines
+        allocate (raw(0))
+        inquire (unit=u, size=size_bytes)
+        if (size_bytes > max_deck_bytes) then
+            ios = 1
+            msg = 'larger than '//int_text(int(max_deck_bytes/1000000))//' MB: not a deck'
+            return
+        end if
+        if (size_bytes <= 0) then
+            ios = 0
+            return
+        end if
+        allocate (character(len=size_bytes) :: bytes)
+        read (u, iostat=ios, iomsg=msg) bytes
+        if (ios /= 0) return
+        k = count_lines(bytes)
+        if (k > max_lines) then
+            ios = 1
+            msg = 'more than '//int_text(max_lines)//' lines: not a deck'
+            return
+        end if
+        deallocate (raw)
+        allocate (raw(k))
+        start = 1
+        lines: do n = 1, k
+            stop_at = index(bytes(start:), achar(10))
+            if (stop_at == 0) then
+                stop_at = len(bytes) + 1
+            else
+                stop_at = start + stop_at - 1
             end if
-            if (n == size(raw)) then
-                allocate (grown(2*n))
-                grown(1:n) = raw(1:n)
-                call move_alloc(grown, raw)
+            raw(n)%text = bytes(start:min(stop_at - 1, start + max_line_kept))
+            if (stop_at - 1 >= start .and. stop_at - 1 <= start + max_line_kept) then
+                if (bytes(stop_at - 1:stop_at - 1) == achar(13)) &
+                    raw(n)%text = bytes(start:stop_at - 2)          ! CR LF
             end if
-            n = n + 1
-            raw(n)%text = line
-            if (at_end) exit lines
+            start = stop_at + 1
         end do lines
+        n = k
     end subroutine read_all_lines
 
-    !> One line of any length (kept up to max_line_kept + 1 characters: longer is an error).
-    subroutine read_one_line(u, line, at_end, ios, msg)
-        integer, intent(in) :: u
-        character(len=:), allocatable, intent(out) :: line
-        logical, intent(out) :: at_end          !! end of file reached
-        integer, intent(out) :: ios
-        character(len=*), intent(inout) :: msg
-        character(len=256) :: chunk
-        integer :: got
-        line = ''
-        at_end = .false.
-        chunks: do
-            got = 0
-            read (u, '(a)', advance='no', iostat=ios, iomsg=msg, size=got) chunk
-            if (len(line) <= max_line_kept) &
-                line = line//chunk(1:min(got, max_line_kept + 1 - len(line)))
-            if (ios /= 0) exit chunks
-        end do chunks
-        if (is_iostat_end(ios)) at_end = .true.
-        if (is_iostat_eor(ios) .or. is_iostat_end(ios)) ios = 0
-        if (len(line) > 0) then
-            if (line(len(line):len(line)) == achar(13)) line = line(1:len(line) - 1)
+    !> Lines of a text: the LFs, plus one for a last line without LF.
+    pure integer function count_lines(bytes) result(k)
+        character(len=*), intent(in) :: bytes
+        integer :: i
+        k = 0
+        do i = 1, len(bytes)
+            if (bytes(i:i) == achar(10)) k = k + 1
+        end do
+        if (len(bytes) > 0) then
+            if (bytes(len(bytes):len(bytes)) /= achar(10)) k = k + 1
         end if
-    end subroutine read_one_line
+    end function count_lines
 end module deck_reader

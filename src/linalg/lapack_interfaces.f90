@@ -3,7 +3,7 @@ module lapack_interfaces
     use kinds, only: dp
     implicit none
     private
-    public :: dsytrf, dsytrs, dpotrf, dlansy
+    public :: dsytrf, dsytrs, dpotrf, dlansy, dgesv, dgetrs
 
     interface
         subroutine dsytrf(uplo, n, a, lda, ipiv, work, lwork, info)
@@ -33,6 +33,25 @@ module lapack_interfaces
             real(dp), intent(inout) :: a(lda, *)
             integer, intent(out) :: info
         end subroutine dpotrf
+
+        subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp
+            integer, intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: ipiv(*)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine dgesv
+
+        subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp
+            character(len=1), intent(in) :: trans
+            integer, intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(in) :: a(lda, *)
+            integer, intent(in) :: ipiv(*)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine dgetrs
 
         function dlansy(norm, uplo, n, a, lda, work)
             import :: dp

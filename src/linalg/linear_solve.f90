@@ -1,11 +1,12 @@
-!> Symmetric indefinite solve (Bunch–Kaufman LDL^T, LAPACK dsytrf/dsytrs) with INFO in words.
+!> Dense solves with INFO in words: symmetric indefinite (Bunch–Kaufman LDL^T, LAPACK
+!! dsytrf/dsytrs) and general (LU with partial pivoting, dgesv/dgetrs).
 module linear_solve
     use kinds, only: dp
     use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
-    use lapack_interfaces, only: dsytrf, dsytrs
+    use lapack_interfaces, only: dsytrf, dsytrs, dgesv, dgetrs
     implicit none
     private
-    public :: solve_symmetric
+    public :: solve_symmetric, solve_general, solve_equilibrated
 
 contains
 
@@ -65,6 +66,86 @@ contains
                            '(non-finite solution)')
         end if
     end subroutine solve_symmetric
+
+    !> Solve A x = b for a general square A (LU, dgesv); A is overwritten by its factors. Two
+    !! steps of iterative refinement, as in solve_symmetric.
+    subroutine solve_general(a, b, x, err)
+        real(dp), intent(inout) :: a(:, :)   !! n x n matrix
+        real(dp), intent(in) :: b(:)         !! right-hand side
+        real(dp), intent(out) :: x(:)        !! solution
+        type(error_t), allocatable, intent(out) :: err
+        integer, allocatable :: ipiv(:)
+        real(dp), allocatable :: rhs(:, :), a_copy(:, :)
+        integer :: n, info, step
+        character(len=160) :: text
+
+        n = size(a, 1)
+        if (size(a, 2) /= n .or. size(b) /= n .or. size(x) /= n .or. n < 1) then
+            call new_error(err, EXIT_INTERNAL, 'solve_general: inconsistent array sizes')
+            return
+        end if
+        if (.not. all(a == a) .or. .not. all(b == b)) then
+            call new_error(err, EXIT_INTERNAL, 'solve_general: NaN in the system matrix or load')
+            return
+        end if
+        allocate (ipiv(n), rhs(n, 1))
+        a_copy = a
+        rhs(:, 1) = b
+        call dgesv(n, 1, a, n, ipiv, rhs, n, info)
+        if (info > 0) then
+            write (text, '(a,i0,a,i0,a)') 'the contact system is singular (U(', info, &
+                ',', info, ') = 0 in LU): the structure is not held (rigid-body motion)'
+            call new_error(err, EXIT_ANALYSIS, trim(text))
+            return
+        else if (info < 0) then
+            write (text, '(a,i0)') 'dgesv: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
+        x = rhs(:, 1)
+        refinement: do step = 1, 2
+            rhs(:, 1) = b - matmul(a_copy, x)
+            call dgetrs('N', n, 1, a, n, ipiv, rhs, n, info)
+            if (info /= 0) then
+                write (text, '(a,i0)') 'dgetrs: illegal argument ', -info
+                call new_error(err, EXIT_INTERNAL, trim(text))
+                return
+            end if
+            x = x + rhs(:, 1)
+        end do refinement
+        if (.not. all(abs(x) <= huge(1.0_dp))) then
+            call new_error(err, EXIT_ANALYSIS, 'the contact system is numerically singular '// &
+                           '(non-finite solution)')
+        end if
+    end subroutine solve_general
+
+    !> Solve A x = b after the symmetric diagonal scaling D A D (D = 1/sqrt|diag A|, 1 where
+    !! the diagonal is 0): LDL^T when A is symmetric, else LU. A is overwritten.
+    subroutine solve_equilibrated(a, b, x, symmetric, err)
+        real(dp), intent(inout) :: a(:, :)   !! n x n matrix
+        real(dp), intent(in) :: b(:)         !! right-hand side
+        real(dp), intent(out) :: x(:)        !! solution
+        logical, intent(in) :: symmetric     !! A = A^T (then only the lower triangle is used)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: s(:), y(:)
+        integer :: i, n
+        n = size(a, 1)
+        allocate (s(n), y(n))
+        do i = 1, n
+            s(i) = 1.0_dp
+            if (a(i, i) /= 0.0_dp) s(i) = 1.0_dp/sqrt(abs(a(i, i)))
+        end do
+        do i = 1, n
+            a(:, i) = a(:, i)*s*s(i)
+        end do
+        if (symmetric) then
+            call solve_symmetric(a, b*s, y, err)
+        else
+            call solve_general(a, b*s, y, err)
+        end if
+        if (allocated(err)) return
+        x = s*y
+    end subroutine solve_equilibrated
 
     !> r = b - A x with A symmetric, only its lower triangle defined (as dsytrf used it).
     pure subroutine symmetric_residual(a, x, b, r)

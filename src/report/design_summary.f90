@@ -202,7 +202,7 @@ contains
         v = total_vertical_load(m)
         s%utilisation = -1.0_dp
         if (m%f > 0.0_dp) s%utilisation = abs(sum(m%loads%fx))/(m%f*v)
-        s%linear_solves = sol%n_inner
+        s%linear_solves = sol%n_solves
         s%n_tension_flags = count(iand(tab%flag, FLAG_TENSION) /= 0)
         s%n_overlap_flags = count(iand(tab%flag, FLAG_OVERLAP) /= 0)
         scale = v*[1.0_dp, 1.0_dp, m%length]

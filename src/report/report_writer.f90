@@ -754,7 +754,7 @@ contains
             end associate
         end do
         write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, ' inner'
-        write (u, '(3x,a,i0)') 'linear solves: ', sol%n_inner
+        write (u, '(3x,a,i0)') 'linear solves: ', sol%n_solves
     end subroutine write_log
 
     !> A station table from a list of columns; flagged rows end with ` !T` (tension beyond

@@ -1,0 +1,424 @@
+!> The discrete contact problem (paper 4.2, SPEC §4) as data: the interface Gauss points, the
+!! set-independent matrix, and the residual and generalised Jacobian of the complete problem.
+!!
+!! z = [v; r] (displacement, then traction coefficients). The complete problem is
+!!   F(z) = A0 z - [q; 0] + N(r) = 0,
+!!   N_x = - c (eps - eps0) S0 r_x - c kappa sum_p w_p g(p) (|sigma_x| - tau0)^+ sign(sigma_x)
+!!   N_z = - (c/eta_bar) sum_p w_p h(p) min(sigma_z, 0),       tau0 = f max(sigma_z, 0)
+!! with A0 = [K M^T; M -(T + c eps0 S0)] assembled once (eps0 the deck's eps_bar), kappa =
+!! (1 - eps^2)/eps, g / h the sigma_x / sigma_z basis functions at Gauss point p and w_p its
+!! weight (times 2 pi r for the plate). The law at a point is that of `interface_law`; a
+!! regularisation other than the deck's (law_t) serves the continuation of the Newton method.
+!! Constrained unknowns (d%fixed) have the equation z_i = 0.
+module contact_system
+    use kinds, only: dp, pi
+    use errors, only: error_t, add_context
+    use quadrature, only: gauss_legendre
+    use shape_functions, only: eval_basis, max_local, basis_t, INTERP_P2, INTERP_S2
+    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ, &
+                     friction_compliance
+    use discretization, only: discretization_t
+    use mindlin_structure, only: section_of, assemble_stiffness, assemble_loads, &
+                                 assemble_coupling
+    use halfspace_operator, only: assemble_flexibility
+    use interface_law, only: friction_threshold, slip_excess, tensile_part, threshold_slope, &
+                             is_slipping, in_tension
+    implicit none
+    private
+
+    !> Gauss points of the interface where the sets are decided (paper 4.6–4.7), with the
+    !! traction basis there.
+    type, public :: contact_points_t
+        integer :: n = 0
+        integer, allocatable :: elem(:)
+        real(dp), allocatable :: xi(:), x(:)
+        real(dp), allocatable :: wt(:)       !! Gauss weight * Jacobian (* 2 pi r for the plate)
+        integer :: nl(2) = 0                 !! basis functions per point: sigma_x, sigma_z
+        integer, allocatable :: idx(:, :, :) !! (max_local, 2, n): global unknowns (x, z field)
+        real(dp), allocatable :: val(:, :, :)  !! (max_local, 2, n): basis values
+    end type contact_points_t
+
+    !> One line of the solver log.
+    type, public :: iteration_record_t
+        integer :: outer = 0, inner = 0
+        integer :: n_slip = 0, n_tension = 0, n_changed = 0
+        real(dp) :: increment = 0.0_dp       !! relative change of the solution
+        real(dp) :: residual = -1.0_dp       !! relative residual of (4.2)
+        character(len=40) :: note = ''
+    end type iteration_record_t
+
+    !> The converged state of one case and how it was reached.
+    type, public :: solution_t
+        real(dp), allocatable :: z(:)        !! [v; r], physical units
+        real(dp), allocatable :: tau0(:)     !! friction threshold at the contact points
+        integer, allocatable :: state(:)     !! STATE_* at the contact points (reported)
+        logical, allocatable :: slip(:)      !! slip set (paper 4.6a/4.7a): |sigma_x| > tau0
+        logical, allocatable :: tension(:)   !! tension set (paper 4.6b/4.7b): sigma_z <= 0
+        real(dp), allocatable :: sigma(:, :) !! (sigma_x, sigma_z) at the contact points
+        type(contact_points_t) :: pts
+        type(iteration_record_t), allocatable :: history(:)
+        character(len=8) :: method = ''      !! NEWTON or TWOLOOP
+        integer :: n_outer = 0, n_inner = 0
+        integer :: n_solves = 0              !! linear solves (factorisations) of the case
+        real(dp) :: residual(2) = 0.0_dp     !! relative residuals of equations 4.2a, 4.2b
+        real(dp) :: law_residual = 0.0_dp    !! 4.2b of the complete problem as a traction error
+        real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)
+        real(dp) :: applied(3) = 0.0_dp      !! the same of the loads
+        real(dp) :: admissibility = 0.0_dp   !! max(|sigma_x| - f sigma_z) over contact points
+        real(dp) :: complementarity = 0.0_dp !! max |Sigma_z gap| at lift-off stations (report)
+        real(dp) :: compatibility = 0.0_dp   !! max |gap|/max|w| at contact stations (report)
+        real(dp) :: min_sigma_z = 0.0_dp     !! most tensile sigma_z (penalty, O(eta_bar))
+    end type solution_t
+
+    !> Regularisation of the interface law: the deck's, or a stage of a continuation.
+    type, public :: law_t
+        real(dp) :: f = 0.0_dp               !! friction coefficient
+        real(dp) :: eps = 1.0e-6_dp          !! eps_bar
+        real(dp) :: slip = 0.0_dp            !! c kappa = c (1 - eps^2)/eps
+        real(dp) :: penalty = 0.0_dp         !! c / eta_bar
+    end type law_t
+
+    !> The set-independent data of one case.
+    type, public :: system_t
+        real(dp), allocatable :: a0(:, :)    !! matrix without the set-dependent terms
+        real(dp), allocatable :: q(:)        !! structural loads
+        real(dp), allocatable :: row_scale(:)  !! 1/sqrt|diag a0|: fixed scaling of the residual
+        real(dp) :: c = 0.0_dp, kappa = 0.0_dp, penalty = 0.0_dp
+        type(law_t) :: law                   !! the deck's law
+        integer, allocatable :: translation(:, :)  !! (2, k): unknown ranges of the rigid
+                                                   !! translations of the structure (K t = 0)
+        integer :: psi_range(2) = 0          !! beam: psi unknowns (rigid rotation psi = 1 ...)
+        real(dp), allocatable :: rotation_w(:)  !! ... with w = x: its w coefficients
+    end type system_t
+
+    public :: build_system, add_point_mass, contact_points, new_law, relative_change
+    public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
+    public :: jacobian_diagonal, linear_part
+
+contains
+
+    !> K, M, T, S0 and q assembled once per case into the base matrix.
+    subroutine build_system(m, d, pts, sys, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(contact_points_t), intent(in) :: pts
+        type(system_t), intent(out) :: sys
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: t_mat(:, :), mm(:, :)
+        integer :: nv, n, i
+        nv = d%nv
+        n = d%n
+        allocate (sys%a0(n, n), sys%q(nv), mm(d%nr, nv))
+        sys%a0 = 0.0_dp
+        call assemble_stiffness(section_of(m), d, sys%a0(1:nv, 1:nv))
+        call assemble_coupling(m, d, mm)
+        sys%a0(nv + 1:n, 1:nv) = mm
+        sys%a0(1:nv, nv + 1:n) = transpose(mm)
+        call assemble_flexibility(m, d, t_mat, err)
+        if (allocated(err)) then
+            call add_context(err, 'assembling the half-space flexibility T')
+            return
+        end if
+        sys%a0(nv + 1:n, nv + 1:n) = -t_mat
+        call assemble_loads(m, d, sys%q, err)
+        if (allocated(err)) return
+        sys%c = friction_compliance(m)
+        sys%law = new_law(m, sys%c, m%eps_bar, m%eta_bar)
+        sys%translation = reshape([d%offset(FIELD_W) + 1, d%offset(FIELD_W) &
+                                   + d%basis(FIELD_W)%n_dof], [2, 1])
+        if (m%kind == MODEL_BEAM) then
+            sys%translation = reshape([sys%translation(:, 1), &
+                d%offset(FIELD_U) + 1, d%offset(FIELD_U) + d%basis(FIELD_U)%n_dof], [2, 2])
+            sys%psi_range = [d%offset(FIELD_PSI) + 1, d%offset(FIELD_PSI) &
+                             + d%basis(FIELD_PSI)%n_dof]
+            sys%rotation_w = linear_coefficients(d%basis(FIELD_W))
+        end if
+        sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
+        sys%penalty = sys%law%penalty
+        ! - c eps S0 on the sigma_x block: the stick branch of the law, everywhere
+        do i = 1, pts%n
+            call add_point_mass(pts, i, 1, -sys%c*m%eps_bar, sys%a0)
+        end do
+        allocate (sys%row_scale(n))
+        do i = 1, n
+            sys%row_scale(i) = 1.0_dp
+            if (sys%a0(i, i) /= 0.0_dp) sys%row_scale(i) = 1.0_dp/sqrt(abs(sys%a0(i, i)))
+        end do
+    end subroutine build_system
+
+    !> The law with regularisation eps_bar = eps, penalty parameter eta_bar = eta.
+    pure function new_law(m, c, eps, eta) result(law)
+        type(model_t), intent(in) :: m
+        real(dp), intent(in) :: c      !! friction compliance (model.f90)
+        real(dp), intent(in) :: eps    !! eps_bar of the friction law
+        real(dp), intent(in) :: eta    !! eta_bar of the penalty
+        type(law_t) :: law
+        law%f = m%f
+        law%eps = eps
+        law%slip = c*(1.0_dp - eps**2)/eps
+        law%penalty = c/eta
+    end function new_law
+
+    !> a(i,j) += factor * wt g_i g_j at contact point p for traction field k (1: x, 2: z).
+    pure subroutine add_point_mass(pts, p, k, factor, a)
+        type(contact_points_t), intent(in) :: pts
+        integer, intent(in) :: p, k
+        real(dp), intent(in) :: factor
+        real(dp), intent(inout) :: a(:, :)
+        integer :: i, j
+        associate (idx => pts%idx(:, k, p), val => pts%val(:, k, p))
+            do j = 1, pts%nl(k)
+                do i = 1, pts%nl(k)
+                    a(idx(i), idx(j)) = a(idx(i), idx(j)) + factor*pts%wt(p)*val(i)*val(j)
+                end do
+            end do
+        end associate
+    end subroutine add_point_mass
+
+    !> Gauss points per element: (highest traction degree + 1), exact for the masses.
+    pure function contact_points(m, d) result(pts)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(contact_points_t) :: pts
+        real(dp), allocatable :: xg(:), wg(:)
+        integer :: ng, e, g, p
+        real(dp) :: h
+        ng = max(d%basis(FIELD_SX)%degree, d%basis(FIELD_SZ)%degree) + 1
+        allocate (xg(ng), wg(ng))
+        call gauss_legendre(ng, xg, wg)
+        pts%n = ng*d%msh%ne
+        allocate (pts%elem(pts%n), pts%xi(pts%n), pts%x(pts%n), pts%wt(pts%n))
+        p = 0
+        elements: do e = 1, d%msh%ne
+            h = d%msh%x(e) - d%msh%x(e - 1)
+            gauss_points: do g = 1, ng
+                p = p + 1
+                pts%elem(p) = e
+                pts%xi(p) = xg(g)
+                pts%x(p) = d%msh%x(e - 1) + 0.5_dp*(xg(g) + 1.0_dp)*h
+                pts%wt(p) = 0.5_dp*wg(g)*h
+                if (m%kind /= MODEL_BEAM) pts%wt(p) = pts%wt(p)*2.0_dp*pi*pts%x(p)
+            end do gauss_points
+        end do elements
+        call tabulate_basis(d, pts)
+    end function contact_points
+
+    !> The traction basis at every contact point, with global unknown numbers.
+    pure subroutine tabulate_basis(d, pts)
+        type(discretization_t), intent(in) :: d
+        type(contact_points_t), intent(inout) :: pts
+        integer, parameter :: fields(2) = [FIELD_SX, FIELD_SZ]
+        integer :: p, k, idx(max_local)
+        real(dp) :: val(max_local), der(max_local), x
+        allocate (pts%idx(max_local, 2, pts%n), pts%val(max_local, 2, pts%n))
+        pts%idx = 1
+        pts%val = 0.0_dp
+        do k = 1, 2
+            pts%nl(k) = d%basis(fields(k))%n_local
+            points: do p = 1, pts%n
+                call eval_basis(d%basis(fields(k)), pts%elem(p), pts%xi(p), idx, val, der, x)
+                pts%idx(1:pts%nl(k), k, p) = idx(1:pts%nl(k)) + d%offset(fields(k))
+                pts%val(1:pts%nl(k), k, p) = val(1:pts%nl(k))
+            end do points
+        end do
+    end subroutine tabulate_basis
+
+    !> (sigma_x, sigma_z) at every contact point for the unknowns z = [v; r].
+    pure function point_tractions(pts, z) result(sigma)
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: z(:)
+        real(dp) :: sigma(2, pts%n)
+        integer :: p, k
+        do p = 1, pts%n
+            do k = 1, 2
+                sigma(k, p) = dot_product(pts%val(1:pts%nl(k), k, p), &
+                                          z(pts%idx(1:pts%nl(k), k, p)))
+            end do
+        end do
+    end function point_tractions
+
+    !> res += the interface terms N(r) of the complete problem for the tractions sigma.
+    pure subroutine add_interface_terms(sys, law, pts, sigma, res)
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        real(dp), intent(inout) :: res(:)
+        real(dp) :: fx, fz, tau0
+        integer :: p
+        points: do p = 1, pts%n
+            tau0 = friction_threshold(law%f, sigma(2, p))
+            fx = -sys%c*(law%eps - sys%law%eps)*sigma(1, p) &
+                 - law%slip*slip_excess(sigma(1, p), tau0)
+            fz = -law%penalty*tensile_part(sigma(2, p))
+            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
+                res(ix) = res(ix) + fx*pts%wt(p)*pts%val(1:pts%nl(1), 1, p)
+                res(iz) = res(iz) + fz*pts%wt(p)*pts%val(1:pts%nl(2), 2, p)
+            end associate
+        end do points
+    end subroutine add_interface_terms
+
+    !> F(z) of the complete problem for the law `law`; lin = A0 z - [q; 0] may be passed
+    !! when known (the line search evaluates F along a ray from its affine part).
+    pure subroutine complete_residual(d, sys, law, pts, z, res, lin)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: z(:)
+        real(dp), intent(out) :: res(:)
+        real(dp), intent(in), optional :: lin(:)
+        if (present(lin)) then
+            res = lin
+        else
+            res = linear_part(d, sys, z)
+            res(1:d%nv) = res(1:d%nv) - sys%q
+        end if
+        call add_interface_terms(sys, law, pts, point_tractions(pts, z), res)
+        res(d%fixed) = z(d%fixed)
+    end subroutine complete_residual
+
+    !> The generalised Jacobian of F at the tractions sigma (sets decided there by
+    !! interface_law). symmetric is false when the d tau0/d sigma_z block is present.
+    pure subroutine complete_jacobian(d, sys, law, pts, sigma, a, symmetric)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        real(dp), allocatable, intent(out) :: a(:, :)
+        logical, intent(out) :: symmetric
+        real(dp) :: tau0, coupling
+        integer :: p, i
+        a = sys%a0
+        symmetric = .true.
+        points: do p = 1, pts%n
+            if (law%eps /= sys%law%eps) &
+                call add_point_mass(pts, p, 1, -sys%c*(law%eps - sys%law%eps), a)
+            if (in_tension(sigma(2, p))) call add_point_mass(pts, p, 2, -law%penalty, a)
+            tau0 = friction_threshold(law%f, sigma(2, p))
+            if (.not. is_slipping(sigma(1, p), tau0)) cycle points
+            call add_point_mass(pts, p, 1, -law%slip, a)
+            coupling = law%slip*sign(1.0_dp, sigma(1, p))*threshold_slope(law%f, sigma(2, p))
+            if (coupling == 0.0_dp) cycle points
+            symmetric = .false.
+            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
+                do i = 1, pts%nl(2)
+                    a(ix, iz(i)) = a(ix, iz(i)) + coupling*pts%wt(p) &
+                                   *pts%val(1:pts%nl(1), 1, p)*pts%val(i, 2, p)
+                end do
+            end associate
+        end do points
+        do i = 1, size(d%fixed)
+            a(d%fixed(i), :) = 0.0_dp
+            a(:, d%fixed(i)) = 0.0_dp
+            a(d%fixed(i), d%fixed(i)) = 1.0_dp
+        end do
+    end subroutine complete_jacobian
+
+    !> A0 z, with K applied to v less its rigid-body part (beam: the rotation w = x, psi = 1 by
+    !! the mean psi; then the translations of w, and of u_s for the beam, by their first
+    !! coefficient): K annihilates them exactly, but in floating point K times a large
+    !! rigid settlement leaves round-off of eps |K| |v|, which for a structure much stiffer than
+    !! the soil swamps the forces the soil exerts (the stiff-structure case of issue 7).
+    pure function linear_part(d, sys, z) result(lin)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: z(:)
+        real(dp) :: lin(d%n)
+        lin(1:d%nv) = matmul(sys%a0(1:d%nv, 1:d%nv), flexible_part(sys, z(1:d%nv))) &
+                      + matmul(sys%a0(1:d%nv, d%nv + 1:), z(d%nv + 1:))
+        lin(d%nv + 1:) = matmul(sys%a0(d%nv + 1:, :), z)
+    end function linear_part
+
+    !> v less its rigid-body part, which K annihilates.
+    pure function flexible_part(sys, v_in) result(v)
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: v_in(:)
+        real(dp) :: v(size(v_in))
+        real(dp) :: theta
+        integer :: k
+        v = v_in
+        if (allocated(sys%rotation_w)) then
+            associate (i1 => sys%psi_range(1), i2 => sys%psi_range(2), &
+                       j1 => sys%translation(1, 1), j2 => sys%translation(2, 1))
+                theta = sum(v(i1:i2))/real(i2 - i1 + 1, dp)
+                v(i1:i2) = v(i1:i2) - theta
+                v(j1:j2) = v(j1:j2) - theta*sys%rotation_w
+            end associate
+        end if
+        do k = 1, size(sys%translation, 2)
+            associate (i1 => sys%translation(1, k), i2 => sys%translation(2, k))
+                v(i1:i2) = v(i1:i2) - v(i1)
+            end associate
+        end do
+    end function flexible_part
+
+    !> Coefficients of the function x in a basis (it reproduces linear functions): nodal values
+    !! for P1 and P2, Greville abscissae (t(i+1) + t(i+2))/2 for the quadratic B-splines.
+    pure function linear_coefficients(basis) result(c)
+        type(basis_t), intent(in) :: basis
+        real(dp), allocatable :: c(:)
+        integer :: i, e
+        allocate (c(basis%n_dof))
+        select case (basis%family)
+        case (INTERP_P2)
+            do e = 1, basis%ne
+                c(2*e - 1) = basis%x(e - 1)
+                c(2*e) = 0.5_dp*(basis%x(e - 1) + basis%x(e))
+            end do
+            c(basis%n_dof) = basis%x(basis%ne)
+        case (INTERP_S2)
+            do i = 1, basis%n_dof
+                c(i) = 0.5_dp*(basis%knots(i + 1) + basis%knots(i + 2))
+            end do
+        case default
+            c = basis%x(0:basis%ne)
+        end select
+    end function linear_coefficients
+
+    !> The diagonal of complete_jacobian at the tractions sigma (the off-diagonal
+    !! d tau0/d sigma_z block does not touch it).
+    pure function jacobian_diagonal(d, sys, law, pts, sigma) result(dg)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        real(dp) :: dg(d%n)
+        real(dp) :: fx, fz
+        integer :: i, p
+        do i = 1, d%n
+            dg(i) = sys%a0(i, i)
+        end do
+        points: do p = 1, pts%n
+            fx = -sys%c*(law%eps - sys%law%eps)
+            if (is_slipping(sigma(1, p), friction_threshold(law%f, sigma(2, p)))) &
+                fx = fx - law%slip
+            fz = 0.0_dp
+            if (in_tension(sigma(2, p))) fz = -law%penalty
+            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
+                dg(ix) = dg(ix) + fx*pts%wt(p)*pts%val(1:pts%nl(1), 1, p)**2
+                dg(iz) = dg(iz) + fz*pts%wt(p)*pts%val(1:pts%nl(2), 2, p)**2
+            end associate
+        end do points
+        dg(d%fixed) = 1.0_dp
+    end function jacobian_diagonal
+
+    !> || row_scale * res ||_2: the merit norm (fixed scaling from the diagonal of A0).
+    pure real(dp) function scaled_norm(sys, res)
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: res(:)
+        scaled_norm = norm2(sys%row_scale*res)
+    end function scaled_norm
+
+    !> max over displacement and traction blocks of |dz|_inf / |z|_inf.
+    pure real(dp) function relative_change(d, z_new, z_old) result(incr)
+        type(discretization_t), intent(in) :: d
+        real(dp), intent(in) :: z_new(:), z_old(:)
+        incr = max(maxval(abs(z_new(1:d%nv) - z_old(1:d%nv))) &
+                   /max(maxval(abs(z_new(1:d%nv))), tiny(1.0_dp)), &
+                   maxval(abs(z_new(d%nv + 1:) - z_old(d%nv + 1:))) &
+                   /max(maxval(abs(z_new(d%nv + 1:))), tiny(1.0_dp)))
+    end function relative_change
+end module contact_system

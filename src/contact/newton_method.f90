@@ -1,0 +1,497 @@
+!> Globalised semismooth (generalised) Newton method on the complete discrete problem (paper
+!! 4.2 with tau0 = f max(sigma_z, 0) inside the equations, SPEC §4; F and its generalised
+!! Jacobian in contact_system). The friction threshold and the contact sets are solved together:
+!! on the slipping points in compression the Jacobian holds the non-symmetric block
+!! d tau0/d sigma_z (LU then; LDL^T where the Jacobian is symmetric).
+!!
+!! Globalisation:
+!! - start: the adhesive (bonded, bilateral) solution A0 z = [q; 0], the paper's start;
+!! - merit: the Jacobi correction |F_i / J_ii| of every equation (J at the point where F is
+!!   evaluated) relative to max |v| or max |r| at the start of the stage, in the 2-norm: the
+!!   penalty and slip rows, whose entries carry 1/eta_bar and 1/eps_bar, count in tractions;
+!! - watchdog: full steps while they lower the best merit, or for up to `watchdog` steps without
+!!   descent; then the exact line search from the best point along its direction. F is
+!!   piecewise linear along a Newton ray (kinks where a point crosses sigma_z = 0 or
+!!   |sigma_x| = f sigma_z), so the merit is minimised exactly piece by piece. A step to a set
+!!   pattern met in the last 16 iterates (a cycle) is replaced by the exact line search along
+!!   it; a full step that keeps the set pattern is always taken (it solves F = 0);
+!! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once, or a
+!!   damped step no longer moves), from the adhesive start: eps_bar and eta_bar both scaled by
+!!   10^s, s = 3, 2, 1, 0, each stage started from the previous solution (a failed stage is
+!!   retried from the last converged one with half the decrement; if the first fails, or the
+!!   decrement falls below 1/8 decade, the case ends with status 2).
+!! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
+!! then linear between the iterates and the step solves F = 0) or the merit is at round-off,
+!! and the residual of 4.2a is below 1e-12 of the load or no longer halves (further exact
+!! steps refine the solution of a stiff structure).
+module newton_method
+    use kinds, only: dp
+    use errors, only: error_t, new_error, EXIT_ANALYSIS
+    use model, only: model_t
+    use discretization, only: discretization_t
+    use linear_solve, only: solve_equilibrated
+    use contact_system, only: solution_t, system_t, law_t, iteration_record_t, new_law, &
+                              contact_points_t, &
+                              point_tractions, complete_residual, complete_jacobian, &
+                              jacobian_diagonal, relative_change, linear_part
+    use interface_law, only: friction_threshold, in_tension, is_slipping
+    implicit none
+    private
+
+    public :: solve_newton
+
+    integer, parameter :: plain_limit = 25          !! Newton steps before continuation
+    real(dp), parameter :: armijo = 1.0e-4_dp       !! sufficient decrease of the merit
+    real(dp), parameter :: round_off = 1.0e3_dp*epsilon(1.0_dp)  !! merit of a solution
+    real(dp), parameter :: refine_tol = 1.0e-12_dp  !! refine an exact step while 4.2a's
+                                                    !! residual is above this (of max |q|)
+    integer, parameter :: watchdog = 10             !! full steps allowed without descent
+    real(dp), parameter :: stall_increment = 1.0e-12_dp  !! a damped step this small: stalled
+    integer, parameter :: memory = 16               !! set patterns kept for cycle detection
+    real(dp), parameter :: top_level = 3.0_dp       !! continuation starts at 10^3 eps, eta
+    real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
+
+    !> Merit bookkeeping of one Newton stage.
+    type :: newton_state_t
+        real(dp), allocatable :: res(:)      !! F at the current iterate
+        real(dp) :: phi = 0.0_dp             !! merit there
+        real(dp) :: block_scale(2) = 1.0_dp  !! max |v|, max |r| at the start of the stage
+        real(dp) :: phi_best = 0.0_dp        !! lowest merit reached with sufficient decrease
+        real(dp), allocatable :: z_best(:)   !! where
+        real(dp), allocatable :: dz_best(:)  !! the Newton direction computed there
+        integer :: relaxed = 0               !! full steps taken since, without descent
+        real(dp) :: phi_now = 0.0_dp         !! merit at the current iterate
+        integer, allocatable :: seen(:, :)   !! set patterns of the last iterates (ring)
+        integer :: n_seen = 0                !! iterates recorded in seen
+        logical :: exhausted = .false.       !! the watchdog has run out at least once
+    end type newton_state_t
+
+contains
+
+    !> Solve the complete problem from the adhesive start; continuation if the plain method
+    !! stalls. Fails with EXIT_ANALYSIS when neither converges.
+    subroutine solve_newton(m, d, sys, sol, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(solution_t), intent(inout) :: sol
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: z_start(:)
+        logical :: converged
+        sol%method = 'NEWTON'
+        call adhesive_start(d, sys, sol, err)
+        if (allocated(err)) return
+        z_start = sol%z
+        call newton_stage(d, sys, sys%law, 1, min(plain_limit, m%max_inner), .false., sol, &
+                          converged, err)
+        if (allocated(err) .or. converged) return
+        call log_note(sol, 'plain Newton stalled: continuation')
+        sol%z = z_start
+        call continuation(m, d, sys, sol, err)
+    end subroutine solve_newton
+
+    !> Bonded bilateral contact: A0 z = [q; 0], one symmetric solve.
+    subroutine adhesive_start(d, sys, sol, err)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(solution_t), intent(inout) :: sol
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: a(:, :), rhs(:)
+        integer :: i
+        a = sys%a0
+        allocate (rhs(d%n))
+        rhs = 0.0_dp
+        rhs(1:d%nv) = sys%q
+        do i = 1, size(d%fixed)
+            a(d%fixed(i), :) = 0.0_dp
+            a(:, d%fixed(i)) = 0.0_dp
+            a(d%fixed(i), d%fixed(i)) = 1.0_dp
+            rhs(d%fixed(i)) = 0.0_dp
+        end do
+        call solve_equilibrated(a, rhs, sol%z, .true., err)
+        if (allocated(err)) return
+        sol%n_solves = sol%n_solves + 1
+    end subroutine adhesive_start
+
+    !> Stages s = top_level .. 0 (eps_bar, eta_bar times 10^s) from sol%z; a stage that fails
+    !! is retried from the last converged one with half the decrement.
+    subroutine continuation(m, d, sys, sol, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(solution_t), intent(inout) :: sol
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: z_good(:)
+        real(dp) :: level, good_level, step
+        integer :: stage
+        logical :: converged
+        character(len=200) :: text
+        level = top_level
+        good_level = huge(1.0_dp)
+        step = 1.0_dp
+        z_good = sol%z
+        stage = 1
+        stages: do
+            stage = stage + 1
+            call newton_stage(d, sys, stage_law(m, sys, level), stage, m%max_inner, .true., &
+                              sol, converged, err)
+            if (allocated(err)) return
+            if (converged) then
+                if (level <= 0.0_dp) return
+                good_level = level
+                z_good = sol%z
+                level = max(level - step, 0.0_dp)
+            else
+                step = 0.5_dp*step
+                if (good_level == huge(1.0_dp) .or. step < min_decrement) exit stages
+                sol%z = z_good
+                level = max(good_level - step, 0.0_dp)
+            end if
+        end do stages
+        write (text, '(a,f6.3,a,i0,a)') 'the contact problem did not converge: Newton stalled '// &
+            'at eps_bar, eta_bar x 10^', level, ' of the continuation after ', sol%n_solves, &
+            ' linear solves (no solution found)'
+        call new_error(err, EXIT_ANALYSIS, trim(text))
+    end subroutine continuation
+
+    !> The deck's law with eps_bar and eta_bar scaled by 10^level (eps_bar at most 0.5).
+    pure function stage_law(m, sys, level) result(law)
+        type(model_t), intent(in) :: m
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: level
+        type(law_t) :: law
+        law = new_law(m, sys%c, min(m%eps_bar*10.0_dp**level, 0.5_dp), &
+                      m%eta_bar*10.0_dp**level)
+    end function stage_law
+
+    !> Newton iterations for one law from sol%z; converged tells whether it stopped on a
+    !! convergence test (else it stalled or reached max_iter). Watchdog: full steps are taken
+    !! even when they raise the merit, up to `watchdog` in a row; if none of them has lowered
+    !! the merit below the best point's, the iteration returns to that point and takes the
+    !! exact line-search step along the direction computed there (so the merit decreases at
+    !! least every watchdog + 1 steps, and a cycle of set patterns cannot repeat).
+    subroutine newton_stage(d, sys, law, stage, max_iter, patient, sol, converged, err)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        integer, intent(in) :: stage, max_iter
+        logical, intent(in) :: patient     !! else give up when the watchdog first runs out
+        type(solution_t), intent(inout) :: sol
+        logical, intent(out) :: converged
+        type(error_t), allocatable, intent(out) :: err
+        type(newton_state_t) :: s
+        real(dp), allocatable :: dz(:), z_old(:)
+        integer, allocatable :: code(:), new_code(:)
+        real(dp) :: t, incr, phi_exact, equilibrium
+        integer :: iter
+        logical :: exact
+        phi_exact = huge(1.0_dp)
+        call start_state(d, sys, law, sol, s)
+        code = set_pattern(law, point_tractions(sol%pts, sol%z))
+        converged = s%phi <= round_off .and. maxval(abs(s%res(1:d%nv))) &
+                    <= refine_tol*maxval(abs(sys%q))
+        iterations: do iter = 1, max_iter
+            if (converged) exit iterations
+            call newton_direction(d, sys, law, sol, s%res, dz, err)
+            if (allocated(err)) return
+            if (s%relaxed == 0) s%dz_best = dz
+            z_old = sol%z
+            call take_step(d, sys, law, sol, s, dz, t)
+            incr = relative_change(d, sol%z, z_old)
+            new_code = set_pattern(law, point_tractions(sol%pts, sol%z))
+            if (t <= 0.0_dp .or. (t < 1.0_dp .and. incr <= stall_increment)) then
+                ! no descent, or a step that no longer moves: stalled at a kink
+                call log_step(sol, stage, iter, law, new_code, code, incr, -1.0_dp, t)
+                exit iterations
+            end if
+            call log_step(sol, stage, iter, law, new_code, code, incr, s%phi, t)
+            exact = t == 1.0_dp .and. s%relaxed == 0 .and. &
+                    (all(new_code == code) .or. incr <= round_off)
+            ! an exact step solves F = 0 up to the accuracy of the solve: a stiff structure
+            ! may need further steps (iterative refinement with the accurate residual)
+            equilibrium = maxval(abs(s%res(1:d%nv)))/max(maxval(abs(sys%q)), tiny(1.0_dp))
+            exact = exact .or. s%phi <= round_off
+            converged = exact .and. (equilibrium <= refine_tol .or. &
+                                     equilibrium > 0.5_dp*phi_exact)
+            if (exact) phi_exact = equilibrium
+            code = new_code
+            if (.not. (converged .or. patient) .and. s%exhausted) exit iterations
+        end do iterations
+        sol%n_outer = stage
+    end subroutine newton_stage
+
+    !> Merit bookkeeping at the start of a stage.
+    subroutine start_state(d, sys, law, sol, s)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(solution_t), intent(in) :: sol
+        type(newton_state_t), intent(out) :: s
+        allocate (s%res(d%n))
+        s%block_scale = [max(maxval(abs(sol%z(1:d%nv))), tiny(1.0_dp)), &
+                         max(maxval(abs(sol%z(d%nv + 1:))), tiny(1.0_dp))]
+        call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
+        s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
+        s%phi_best = s%phi
+        s%z_best = sol%z
+        s%relaxed = 0
+        s%phi_now = s%phi
+        allocate (s%seen(sol%pts%n, memory))
+        s%n_seen = 1
+        s%seen(:, 1) = set_pattern(law, point_tractions(sol%pts, sol%z))
+    end subroutine start_state
+
+    !> The generalised Newton direction J dz = -F at sol%z (one linear solve).
+    subroutine newton_direction(d, sys, law, sol, res, dz, err)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(solution_t), intent(inout) :: sol
+        real(dp), intent(in) :: res(:)
+        real(dp), allocatable, intent(out) :: dz(:)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: a(:, :)
+        logical :: symmetric
+        allocate (dz(d%n))
+        call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
+                               symmetric)
+        call solve_equilibrated(a, -res, dz, symmetric, err)
+        if (allocated(err)) return
+        sol%n_solves = sol%n_solves + 1
+        sol%n_inner = sol%n_inner + 1
+    end subroutine newton_direction
+
+    !> The full step when it keeps the set pattern (it then solves F = 0), when it lowers the
+    !! best merit, or while the watchdog allows, unless its
+    !! set pattern was met before in this stage (a cycle): then the exact line search along
+    !! the step (half the step if that finds no descent). When the watchdog has run out: the
+    !! exact line search from the best point along its direction. t = 0: no descent there.
+    subroutine take_step(d, sys, law, sol, s, dz, t)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(solution_t), intent(inout) :: sol
+        type(newton_state_t), intent(inout) :: s
+        real(dp), intent(in) :: dz(:)
+        real(dp), intent(out) :: t
+        integer, allocatable :: code(:)
+        logical :: descent, cycled, searched
+        integer :: k
+        t = 1.0_dp
+        call complete_residual(d, sys, law, sol%pts, sol%z + dz, s%res)
+        s%phi = merit(d, sys, law, sol%pts, s, sol%z + dz, s%res)
+        code = set_pattern(law, point_tractions(sol%pts, sol%z + dz))
+        descent = s%phi <= (1.0_dp - armijo)*s%phi_best
+        cycled = .false.
+        do k = 1, min(s%n_seen, size(s%seen, 2))
+            cycled = cycled .or. all(s%seen(:, k) == code)
+        end do
+        searched = .false.
+        if (all(code == s%seen(:, modulo(s%n_seen - 1, size(s%seen, 2)) + 1))) then
+            ! the full step keeps the sets its Jacobian was built with: it solves F = 0
+            sol%z = sol%z + dz
+            s%relaxed = 0
+        else if (cycled) then
+            call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t)
+            if (t <= 0.0_dp) t = 0.5_dp
+            sol%z = sol%z + t*dz
+            s%relaxed = s%relaxed + 1
+        else if (descent .or. s%relaxed < watchdog) then
+            sol%z = sol%z + dz
+            s%relaxed = s%relaxed + 1
+        else
+            call line_search(d, sys, law, sol%pts, s, s%z_best, s%dz_best, s%phi_best, t)
+            sol%z = s%z_best + t*s%dz_best
+            searched = .true.
+            s%exhausted = .true.
+        end if
+        if (t < 1.0_dp) then
+            call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
+            s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
+        end if
+        s%phi_now = s%phi
+        s%n_seen = s%n_seen + 1
+        s%seen(:, modulo(s%n_seen - 1, size(s%seen, 2)) + 1) = &
+            set_pattern(law, point_tractions(sol%pts, sol%z))
+        if (s%phi <= (1.0_dp - armijo)*s%phi_best .or. searched) then
+            s%phi_best = s%phi
+            s%z_best = sol%z
+            s%relaxed = 0
+        end if
+    end subroutine take_step
+
+    !> Set pattern of the complete problem at the tractions sigma: 1 for tension (penalty),
+    !! plus +-2 for slipping with that sign (interface_law decides both, independently).
+    pure function set_pattern(law, sigma) result(code)
+        type(law_t), intent(in) :: law
+        real(dp), intent(in) :: sigma(:, :)
+        integer :: code(size(sigma, 2))
+        code = merge(1, 0, in_tension(sigma(2, :)))
+        where (is_slipping(sigma(1, :), friction_threshold(law%f, sigma(2, :)))) &
+            code = code + merge(2, -2, sigma(1, :) >= 0.0_dp)
+    end function set_pattern
+
+    !> Step length t on the ray z + t dz: the exact minimiser of the merit over (0, 1] (on each
+    !! piece between kinks F is affine and the weights constant, so the merit squared is
+    !! quadratic there); 0 if no point of the ray is better than z.
+    subroutine line_search(d, sys, law, pts, s, z, dz, phi0, t)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        type(newton_state_t), intent(in) :: s
+        real(dp), intent(in) :: z(:), dz(:)   !! the ray
+        real(dp), intent(in) :: phi0          !! merit at z
+        real(dp), intent(out) :: t
+        real(dp), allocatable :: lin0(:), lin1(:), f_a(:), f_b(:), knots(:), wgt(:)
+        real(dp) :: best, phi_cand, frac, t_mid
+        integer :: k
+        associate (z => z, dz => dz)
+            lin0 = linear_part(d, sys, z)
+            lin0(1:d%nv) = lin0(1:d%nv) - sys%q
+            lin1 = linear_part(d, sys, dz)
+            allocate (f_a(d%n), f_b(d%n))
+            knots = ray_kinks(law, point_tractions(pts, z), point_tractions(pts, dz))
+            best = phi0
+            t = 0.0_dp
+            call complete_residual(d, sys, law, pts, z, f_a, lin0)
+            segments: do k = 2, size(knots)
+                call complete_residual(d, sys, law, pts, z + knots(k)*dz, f_b, &
+                                       lin0 + knots(k)*lin1)
+                t_mid = 0.5_dp*(knots(k - 1) + knots(k))
+                wgt = merit_weights(d, sys, law, pts, s, z + t_mid*dz)
+                call segment_minimum(wgt, f_a, f_b, frac, phi_cand)
+                if (phi_cand < best) then
+                    best = phi_cand
+                    t = knots(k - 1) + frac*(knots(k) - knots(k - 1))
+                end if
+                f_a = f_b
+            end do segments
+        end associate
+    end subroutine line_search
+
+    !> The merit: the Jacobi correction |F_i / J_ii| (J the generalised Jacobian at z) of
+    !! every equation, relative to the block scale of its unknowns, in the 2-norm. Tension
+    !! and slip rows are thus measured in tractions like the others, not multiplied by
+    !! 1/eta_bar or 1/eps_bar (which makes a fixed row scaling useless as a merit here).
+    real(dp) function merit(d, sys, law, pts, s, z, res)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        type(newton_state_t), intent(in) :: s
+        real(dp), intent(in) :: z(:), res(:)
+        merit = norm2(merit_weights(d, sys, law, pts, s, z)*res)
+    end function merit
+
+    !> 1 / (|J_ii| block scale) at z.
+    function merit_weights(d, sys, law, pts, s, z) result(wgt)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        type(newton_state_t), intent(in) :: s
+        real(dp), intent(in) :: z(:)
+        real(dp), allocatable :: wgt(:)
+        wgt = abs(jacobian_diagonal(d, sys, law, pts, point_tractions(pts, z)))
+        where (wgt == 0.0_dp) wgt = 1.0_dp
+        wgt(1:d%nv) = 1.0_dp/(wgt(1:d%nv)*s%block_scale(1))
+        wgt(d%nv + 1:) = 1.0_dp/(wgt(d%nv + 1:)*s%block_scale(2))
+    end function merit_weights
+
+    !> 0, the kinks of F on the ray z + t dz inside (0, 1) in ascending order, and 1: where a
+    !! point's sigma_z or |sigma_x| - f sigma_z changes sign (tractions are linear in t).
+    pure function ray_kinks(law, sig0, dsig) result(knots)
+        type(law_t), intent(in) :: law
+        real(dp), intent(in) :: sig0(:, :)   !! tractions at t = 0
+        real(dp), intent(in) :: dsig(:, :)   !! their change per unit t
+        real(dp), allocatable :: knots(:)
+        real(dp) :: cand(3), num(3), den(3)
+        integer :: p, j, n
+        allocate (knots(3*size(sig0, 2) + 2))
+        n = 1
+        knots(1) = 0.0_dp
+        points: do p = 1, size(sig0, 2)
+            num = [sig0(2, p), sig0(1, p) - law%f*sig0(2, p), sig0(1, p) + law%f*sig0(2, p)]
+            den = [dsig(2, p), dsig(1, p) - law%f*dsig(2, p), dsig(1, p) + law%f*dsig(2, p)]
+            kinds_of_kink: do j = 1, merge(3, 1, law%f > 0.0_dp)
+                if (den(j) == 0.0_dp) cycle kinds_of_kink
+                cand(j) = -num(j)/den(j)
+                if (cand(j) > 0.0_dp .and. cand(j) < 1.0_dp) then
+                    n = n + 1
+                    knots(n) = cand(j)
+                end if
+            end do kinds_of_kink
+        end do points
+        n = n + 1
+        knots(n) = 1.0_dp
+        knots = knots(1:n)
+        call sort_ascending(knots)
+    end function ray_kinks
+
+    !> Insertion sort (the knots are few: three per contact point at most).
+    pure subroutine sort_ascending(x)
+        real(dp), intent(inout) :: x(:)
+        real(dp) :: key
+        integer :: i, j
+        outer: do i = 2, size(x)
+            key = x(i)
+            j = i - 1
+            shift: do while (j >= 1)
+                if (x(j) <= key) exit shift
+                x(j + 1) = x(j)
+                j = j - 1
+            end do shift
+            x(j + 1) = key
+        end do outer
+    end subroutine sort_ascending
+
+    !> Minimum of || D (f_a + s (f_b - f_a)) || over s in [0, 1] (F is affine between kinks).
+    pure subroutine segment_minimum(wgt, f_a, f_b, s, phi)
+        real(dp), intent(in) :: wgt(:)      !! merit weights on the segment
+        real(dp), intent(in) :: f_a(:), f_b(:)
+        real(dp), intent(out) :: s      !! position of the minimum in the segment
+        real(dp), intent(out) :: phi    !! the minimum
+        real(dp), allocatable :: a(:), b(:)
+        real(dp) :: bb
+        a = wgt*f_a
+        b = wgt*(f_b - f_a)
+        bb = dot_product(b, b)
+        s = 1.0_dp
+        if (bb > 0.0_dp) s = min(1.0_dp, max(0.0_dp, -dot_product(a, b)/bb))
+        phi = norm2(a + s*b)
+    end subroutine segment_minimum
+
+    !> One line of the log for a Newton step (residual < 0: the step was rejected).
+    subroutine log_step(sol, stage, iter, law, new_code, code, incr, residual, t)
+        type(solution_t), intent(inout) :: sol
+        integer, intent(in) :: stage, iter
+        type(law_t), intent(in) :: law
+        integer, intent(in) :: new_code(:), code(:)
+        real(dp), intent(in) :: incr, residual, t
+        type(iteration_record_t) :: rec
+        rec%outer = stage
+        rec%inner = iter
+        rec%n_tension = count(modulo(new_code, 2) == 1)
+        rec%n_slip = count(abs(new_code - modulo(new_code, 2)) == 2)
+        rec%n_changed = count(new_code /= code)
+        rec%increment = incr
+        rec%residual = residual
+        if (residual < 0.0_dp) then
+            write (rec%note, '(a,es8.1)') 'stalled: no descent, eps_bar ', law%eps
+        else if (t < 1.0_dp) then
+            write (rec%note, '(a,es10.3)') 'damped step x', t
+        else if (stage > 1) then
+            write (rec%note, '(a,es8.1)') 'Newton, eps_bar ', law%eps
+        end if
+        sol%history = [sol%history, rec]
+    end subroutine log_step
+
+    subroutine log_note(sol, note)
+        type(solution_t), intent(inout) :: sol
+        character(len=*), intent(in) :: note
+        type(iteration_record_t) :: rec
+        rec%note = note
+        sol%history = [sol%history, rec]
+    end subroutine log_note
+end module newton_method

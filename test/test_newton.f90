@@ -1,0 +1,310 @@
+!> The globalised semismooth Newton method (issue 7): the practical cases the two-loop
+!! iteration failed, a hard-case grid, and agreement with the two-loop method.
+!!
+!! Every case must end solved with its checks inside tolerance. The expected values are not
+!! fricon output; each comes from statics or from the interface law itself:
+!! - equilibrium: the reactions int sigma_z, int sigma_x and their moment equal the applied
+!!   loads (statics of the free structure), to 1e-8 of the vertical load V (of V l for moments);
+!! - the complete problem (4.2 with tau0 = f max(sigma_z, 0) of the final state): its 4.2b
+!!   residual as a traction error below 1e-8 of max |r| (a solution satisfies it exactly; 1e-8
+!!   leaves room for round-off only);
+!! - complementarity, at the Gauss points where the discrete problem imposes it: the penalty
+!!   makes sigma_z = -(eta_bar/c) gap on lifted-off points, so no sigma_z may be more tensile
+!!   than (eta_bar/c) max |gap| (factor 10 for the weak enforcement). (At the stations, P1
+!!   tractions extrapolated to an end node can be tensile by O(h), which is discretisation.)
+!! - friction admissibility: the regularised law gives |sigma_x| - f sigma_z =
+!!   eps_bar/(1 - eps_bar^2) slip/c on slipping points, O(eps_bar) times a slip that soft
+!!   structures make large: below 10 times that for the largest slip (factor 10 for the
+!!   weak enforcement), and never below 1e3 eps_bar max(1, max Sigma_z), the bound of
+!!   contact_solver's admissibility and soft-beam tests.
+module test_newton
+    use kinds, only: dp
+    use harness, only: unittest_t, new_unittest, error_t, check, check_close
+    use errors, only: EXIT_ANALYSIS
+    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, complete_model, &
+                     total_vertical_load, friction_compliance, METHOD_NEWTON, METHOD_TWOLOOP
+    use discretization, only: discretization_t, new_discretization
+    use contact_solver, only: solution_t, solve_contact
+    use station_results, only: station_table_t, tabulate
+    use station_columns, only: Q_GAP, Q_SLIP, Q_W
+    use station_test_support, only: nd, nd_all
+    use deck_reader, only: deck_t, read_deck, case_model
+    use shape_functions, only: INTERP_P2
+    implicit none
+    private
+    public :: collect_newton
+
+contains
+
+    subroutine collect_newton(tests)
+        type(unittest_t), allocatable, intent(out) :: tests(:)
+        tests = [new_unittest('beam_horizontal_load_03', test_beam_horizontal), &
+                 new_unittest('wide_beam', test_wide_beam), &
+                 new_unittest('beam_physical_edges_meshes', test_beam_physical_edges), &
+                 new_unittest('plate_p2_meshes', test_plate_p2), &
+                 new_unittest('hard_case_grid', test_hard_grid), &
+                 new_unittest('stiff_thin_no_wrong_answer', test_stiff_thin), &
+                 new_unittest('newton_agrees_with_two_loop', test_agreement), &
+                 new_unittest('fig07_ref_case5_one_state', test_fig07_case5)]
+    end subroutine collect_newton
+
+    !> NONDIM plate (a = 1, F = 1), central point load; nu = 0.3, nu_f = 0.1 (paper).
+    function nondim_plate(rho, zeta, f, ne) result(m)
+        real(dp), intent(in) :: rho, zeta, f
+        integer, intent(in) :: ne
+        type(model_t) :: m
+        m%kind = MODEL_PLATE
+        m%nondim = .true.
+        m%rho_in = rho
+        m%zeta_in = zeta
+        m%nu = 0.3_dp
+        m%nu_f = 0.1_dp
+        m%f = f
+        m%ne = ne
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+        call complete_model(m)
+    end function nondim_plate
+
+    !> NONDIM beam (l = 1, F = 1): central point load V = 1 with horizontal component h_load.
+    function nondim_beam(rho, zeta, beta, f, h_load, ne) result(m)
+        real(dp), intent(in) :: rho, zeta, beta, f, h_load
+        integer, intent(in) :: ne
+        type(model_t) :: m
+        m%kind = MODEL_BEAM
+        m%nondim = .true.
+        m%rho_in = rho
+        m%zeta_in = zeta
+        m%beta_in = beta
+        m%nu = 0.3_dp
+        m%nu_f = 0.1_dp
+        m%f = f
+        m%ne = ne
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=h_load, x1=0.0_dp)]
+        call complete_model(m)
+    end function nondim_beam
+
+    subroutine run(m, sol, tab, err)
+        type(model_t), intent(in) :: m
+        type(solution_t), intent(out) :: sol
+        type(station_table_t), intent(out) :: tab
+        type(error_t), allocatable, intent(out) :: err
+        type(discretization_t) :: d
+        call new_discretization(m, d, err)
+        if (allocated(err)) return
+        call solve_contact(m, d, sol, err)
+        if (allocated(err)) return
+        call tabulate(m, d, sol, tab, err)
+    end subroutine run
+
+    !> Solve m and assert the four checks of the module header; what names the case.
+    subroutine require_solved(m, what, err, sol_out)
+        type(model_t), intent(in) :: m
+        character(len=*), intent(in) :: what
+        type(error_t), allocatable, intent(out) :: err
+        type(solution_t), intent(out), optional :: sol_out
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: run_err
+        real(dp) :: v, scale(3), p_max, gap, slip_law, eq_tol
+        call run(m, sol, tab, run_err)
+        if (allocated(run_err)) then
+            call check(err, .false., what//': not solved: '//run_err%message)
+            return
+        end if
+        eq_tol = 1.0e-8_dp
+        v = total_vertical_load(m)
+        scale = v*[1.0_dp, 1.0_dp, m%length]
+        call check(err, all(abs(sol%reaction - sol%applied) <= eq_tol*scale), &
+                   what//': reactions do not balance the loads')
+        if (allocated(err)) return
+        call check(err, sol%law_residual <= 1.0e-8_dp, &
+                   what//': residual of the complete problem (4.2b) too large')
+        if (allocated(err)) return
+        ! scale of a gap: the settlements (a tensile Gauss point may sit where every station
+        ! is still in contact, whose reported gap is 0)
+        gap = max(maxval(abs(tab%val(Q_GAP, :))), maxval(abs(tab%val(Q_W, :))))
+        call check(err, -sol%min_sigma_z <= 10.0_dp*m%eta_bar/friction_compliance(m)*gap, &
+                   what//': complementarity violated (tension beyond the penalty law)')
+        if (allocated(err)) return
+        p_max = maxval(nd_all(m, tab, 'Sigma_z^h'))
+        slip_law = m%eps_bar/(1.0_dp - m%eps_bar**2)*maxval(abs(tab%val(Q_SLIP, :))) &
+                   /friction_compliance(m)*nd(m, tab, 'Sigma_z', 0)
+        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= max(1.0e3_dp*m%eps_bar &
+                   *max(1.0_dp, p_max), 10.0_dp*slip_law), what//': friction not admissible')
+        if (present(sol_out)) sol_out = sol
+    end subroutine require_solved
+
+    !> Issue 7: a beam with H = 0.3 V and f = 0.6 (utilisation H/(fV) = 0.5).
+    subroutine test_beam_horizontal(err)
+        type(error_t), allocatable, intent(out) :: err
+        call require_solved(nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.3_dp, 40), &
+                            'beam H = 0.3 V, f = 0.6', err)
+    end subroutine test_beam_horizontal
+
+    !> Issue 7: a wide beam, b/l = 1.
+    subroutine test_wide_beam(err)
+        type(error_t), allocatable, intent(out) :: err
+        call require_solved(nondim_beam(0.01_dp, 0.1_dp, 1.0_dp, 0.6_dp, 0.1_dp, 40), &
+                            'wide beam b/l = 1', err)
+    end subroutine test_wide_beam
+
+    !> Issue 7: input/beam_physical.dat with its MESH card changed to EDGES and 60, 80, 100,
+    !! 120 elements (refining must never turn a solved case into a failure).
+    subroutine test_beam_physical_edges(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer, parameter :: meshes(4) = [60, 80, 100, 120]
+        type(deck_t) :: deck
+        type(model_t) :: m
+        character(len=:), allocatable :: label
+        character(len=40) :: what
+        integer :: k
+        call read_deck('input/beam_physical.dat', deck, err)
+        if (allocated(err)) return
+        call case_model(deck, 1, m, label, err)
+        if (allocated(err)) return
+        m%grading = 'EDGES'
+        meshes_loop: do k = 1, size(meshes)
+            m%ne = meshes(k)
+            write (what, '(a,i0)') 'beam_physical.dat EDGES N_e = ', meshes(k)
+            call require_solved(m, trim(what), err)
+            if (allocated(err)) return
+        end do meshes_loop
+    end subroutine test_beam_physical_edges
+
+    !> Issue 7: P2 meshes (every field P2) at N_e = 20 and 80 on a plate with rho = 0.001,
+    !! zeta = 0.1, f = 0.6.
+    subroutine test_plate_p2(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer, parameter :: meshes(2) = [20, 80]
+        type(model_t) :: m
+        character(len=40) :: what
+        integer :: k
+        meshes_loop: do k = 1, size(meshes)
+            m = nondim_plate(1.0e-3_dp, 0.1_dp, 0.6_dp, meshes(k))
+            m%interp = INTERP_P2
+            write (what, '(a,i0)') 'P2 plate N_e = ', meshes(k)
+            call require_solved(m, trim(what), err)
+            if (allocated(err)) return
+        end do meshes_loop
+    end subroutine test_plate_p2
+
+    !> Hard-case grid: beam and plate, rho 1e-6, 1e-2, 1e4; zeta 0.001, 0.1, 0.5; f 0, 0.6,
+    !! 2 (beam: H = f V/4, utilisation 0.25; b/l = 0.05); N_e 20 and 40 alternating. The
+    !! stiff and thin corner (rho = 1e4 with zeta = 0.001) is test_stiff_thin.
+    subroutine test_hard_grid(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), parameter :: rhos(3) = [1.0e-6_dp, 1.0e-2_dp, 1.0e4_dp]
+        real(dp), parameter :: zetas(3) = [1.0e-3_dp, 0.1_dp, 0.5_dp]
+        real(dp), parameter :: fs(3) = [0.0_dp, 0.6_dp, 2.0_dp]
+        type(model_t) :: m
+        character(len=80) :: what
+        integer :: kind, i, j, k, ne, n_case
+        n_case = 0
+        kinds_loop: do kind = MODEL_BEAM, MODEL_PLATE
+            rho_loop: do i = 1, size(rhos)
+                zeta_loop: do j = 1, size(zetas)
+                    if (rhos(i) > 1.0_dp .and. zetas(j) < 0.01_dp) cycle zeta_loop
+                    f_loop: do k = 1, size(fs)
+                        n_case = n_case + 1
+                        ne = merge(20, 40, mod(n_case, 2) == 0)
+                        if (kind == MODEL_BEAM) then
+                            m = nondim_beam(rhos(i), zetas(j), 0.05_dp, fs(k), 0.25_dp*fs(k), ne)
+                        else
+                            m = nondim_plate(rhos(i), zetas(j), fs(k), ne)
+                        end if
+                        write (what, '(a,3(a,es8.1),a,i0)') merge('beam ', 'plate', &
+                            kind == MODEL_BEAM), ' rho', rhos(i), ' zeta', zetas(j), ' f', &
+                            fs(k), ' N_e ', ne
+                        call require_solved(m, trim(what), err)
+                        if (allocated(err)) return
+                    end do f_loop
+                end do zeta_loop
+            end do rho_loop
+        end do kinds_loop
+    end subroutine test_hard_grid
+
+    !> rho = 1e4 with zeta = 0.001 (a structure 1e4 times stiffer than the soil in bending and
+    !! far stiffer still in membrane action): the dense solves lose the accuracy the
+    !! equilibrium check asks for (issue 7, item 4, not solved here). The case must be solved
+    !! with its checks, or end with status 2 -- never with a wrong answer.
+    subroutine test_stiff_thin(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(error_t), allocatable :: run_err
+        m = nondim_plate(1.0e4_dp, 1.0e-3_dp, 0.6_dp, 30)
+        call run(m, sol, tab, run_err)
+        if (allocated(run_err)) then
+            call check(err, run_err%code == EXIT_ANALYSIS, 'stiff thin plate: expected status 2')
+            return
+        end if
+        call require_solved(m, 'stiff thin plate', err)
+    end subroutine test_stiff_thin
+
+    !> Newton and the paper's two-loop iteration solve the same equations: where both
+    !! converge they agree to 1e-8 (max-norm of each block of z = [v; r], relative). The
+    !! two-loop runs with tol outer = tol inner = 1e-13 so that its own stopping error is far
+    !! below 1e-8.
+    subroutine test_agreement(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: cases(3)
+        type(solution_t) :: newton, two_loop
+        type(discretization_t) :: d
+        real(dp) :: diff(2)
+        integer :: k
+        cases(1) = nondim_plate(1.0e-3_dp, 0.1_dp, 0.6_dp, 20)
+        cases(2) = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.3_dp, 40)
+        cases(3) = nondim_beam(1.0e-5_dp, 0.2_dp, 0.05_dp, 0.6_dp, 0.1_dp, 30)
+        cases_loop: do k = 1, size(cases)
+            cases(k)%method = METHOD_NEWTON
+            call require_solved(cases(k), 'agreement case, Newton', err, newton)
+            if (allocated(err)) return
+            cases(k)%method = METHOD_TWOLOOP
+            cases(k)%tol_outer = 1.0e-13_dp
+            cases(k)%tol_inner = 1.0e-13_dp
+            cases(k)%max_outer = 1000
+            call require_solved(cases(k), 'agreement case, two-loop', err, two_loop)
+            if (allocated(err)) return
+            call new_discretization(cases(k), d, err)
+            if (allocated(err)) return
+            associate (zn => newton%z, zt => two_loop%z, nv => d%nv)
+                diff = [maxval(abs(zn(1:nv) - zt(1:nv)))/maxval(abs(zt(1:nv))), &
+                        maxval(abs(zn(nv + 1:) - zt(nv + 1:)))/maxval(abs(zt(nv + 1:)))]
+            end associate
+            call check_close(err, maxval(diff), 0.0_dp, 0.0_dp, 1.0e-8_dp, &
+                             'Newton and two-loop: relative difference of [v; r]')
+            if (allocated(err)) return
+        end do cases_loop
+    end subroutine test_agreement
+
+    !> input/paper/fig07_ref.dat case 5 (issue 7): the "second converged state" with
+    !! max |Sigma_x| = 1.449 failed the complete problem (4.2b residual 7e2); every method the
+    !! issue's authors tried independently (two-loop from 7 starts, Newton with and without
+    !! continuation, a smoothing Newton without active sets) reaches max |Sigma_x| = 1.386299
+    !! to 6e-11. The Newton method must reach it too, with the checks of require_solved.
+    subroutine test_fig07_case5(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        type(discretization_t) :: d
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        character(len=:), allocatable :: label
+        call read_deck('input/paper/fig07_ref.dat', deck, err)
+        if (allocated(err)) return
+        call case_model(deck, 5, m, label, err)
+        if (allocated(err)) return
+        m%method = METHOD_NEWTON
+        call require_solved(m, 'fig07_ref case 5', err)
+        if (allocated(err)) return
+        call new_discretization(m, d, err)
+        if (allocated(err)) return
+        call solve_contact(m, d, sol, err)
+        if (allocated(err)) return
+        call tabulate(m, d, sol, tab, err)
+        if (allocated(err)) return
+        call check_close(err, maxval(abs(nd_all(m, tab, 'Sigma_x^h'))), 1.386299_dp, &
+                         1.0e-6_dp, 0.0_dp, 'fig07_ref case 5: max |Sigma_x|')
+    end subroutine test_fig07_case5
+end module test_newton
