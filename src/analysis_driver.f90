@@ -3,7 +3,7 @@
 module analysis_driver
     use iso_fortran_env, only: int64
     use kinds, only: dp
-    use errors, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
+    use errors, only: error_t, add_context, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use model, only: model_t, MODEL_BEAM, relative_stiffness
     use deck_reader, only: deck_t, case_count, case_model
     use discretization, only: discretization_t, new_discretization
@@ -18,6 +18,8 @@ module analysis_driver
     use error_estimate, only: estimate_errors
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten
     use blas_threads, only: set_blas_threads, blas_thread_count
+    use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
+                               case_unknowns
     implicit none
     private
 
@@ -93,6 +95,13 @@ contains
         end if
         selected = [(mod(i - 1, opt%shard_count) == opt%shard_index - 1, i=1, n)]
         threads = thread_count(opt%threads, count(selected))
+        call fit_memory(cases, selected, threads, err)
+        if (allocated(err)) then
+            write (err_unit, '(a)') 'ERROR: '//deck%path//': '//err%message
+            status = err%code
+            return
+        end if
+        if (opt%progress .and. n == 1) call announce_size(err_unit, deck%stem, cases(1))
         ! a sweep's cases always use single-threaded BLAS, however many run at once: the
         ! summation order, and so every digit, is then the same in serial, parallel and
         ! sharded runs
@@ -123,6 +132,42 @@ contains
             status = max(status, err%code)
         end if
     end subroutine run_analysis
+
+    !> Refuse (exit status 1) a case that alone needs more memory than the machine has; solve
+    !! fewer cases at once when the memory does not hold `threads` of the largest.
+    subroutine fit_memory(cases, selected, threads, err)
+        type(model_t), intent(in) :: cases(:)
+        logical, intent(in) :: selected(:)
+        integer, intent(inout) :: threads
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: available, largest
+        integer :: i
+        available = memory_available()
+        largest = 0.0_dp
+        do i = 1, size(cases)
+            if (.not. selected(i)) cycle
+            call check_memory(cases(i), 1, available, err)
+            if (allocated(err)) then
+                call add_context(err, 'case '//case_number(i, size(cases)))
+                return
+            end if
+            largest = max(largest, memory_needed(case_unknowns(cases(i))))
+        end do
+        threads = max(1, min(threads, int(0.8_dp*available/max(largest, 1.0_dp))))
+    end subroutine fit_memory
+
+    !> A case large enough to take a while: its size and rough time and memory on stderr.
+    subroutine announce_size(unit, name, m)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: name
+        type(model_t), intent(in) :: m
+        integer :: n
+        n = case_unknowns(m)
+        if (time_needed(n) < 5.0_dp) return
+        write (unit, '(a,i0,a,f0.1,a)') 'fricon: '//name//': ', n, ' unknowns, about '// &
+            seconds(time_needed(n))//' per solve round and ', memory_needed(n)/1.0e9_dp, ' GB'
+        flush (unit)
+    end subroutine announce_size
 
     !> Threads for the case loop: the --jobs option, else OpenMP's default (all cores), never
     !! more than the cases.

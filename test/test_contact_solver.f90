@@ -2,12 +2,14 @@
 module test_contact_solver
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
-    use errors, only: EXIT_ANALYSIS
+    use errors, only: EXIT_ANALYSIS, EXIT_INPUT
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
                      complete_model, relative_stiffness, METHOD_NEWTON, METHOD_TWOLOOP
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF
     use station_results, only: station_table_t, tabulate, contact_extent
+    use resource_limits, only: check_memory, memory_needed, case_unknowns
+    use model, only: METHOD_NEWTON, METHOD_TWOLOOP
     use station_columns, only: Q_GAP
     use station_test_support, only: nd, nd_all
     implicit none
@@ -30,7 +32,9 @@ contains
                  new_unittest('uplift_status_2', test_uplift), &
                  new_unittest('no_convergence_status_2', test_no_convergence), &
                  new_unittest('soft_beam_hard_case', test_soft_beam), &
-                 new_unittest('ill_conditioned_refused', test_ill_conditioned)]
+                 new_unittest('ill_conditioned_refused', test_ill_conditioned), &
+                 new_unittest('iteration_cap_allocates_nothing', test_iteration_cap), &
+                 new_unittest('memory_beyond_machine_refused', test_memory_limit)]
     end subroutine collect_contact_solver
 
     !> NONDIM plate (a = 1, F = 1): central point load, nu = 0.3.
@@ -354,4 +358,47 @@ contains
         end if
         call check(err, run_err%code == EXIT_ANALYSIS, 'expected status 2')
     end subroutine test_ill_conditioned
+    !> Issue 10: SOLVER max inner = 1e9 crashed allocating 320 GB (the two-loop method kept
+    !! every set pattern). Both methods must solve with such a cap: nothing is allocated in
+    !! proportion to it.
+    subroutine test_iteration_cap(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        integer :: k
+        do k = 1, 2
+            m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 20)
+            m%max_inner = 1000000000
+            m%method = merge(METHOD_NEWTON, METHOD_TWOLOOP, k == 1)
+            call run(m, sol, tab, err)
+            if (allocated(err)) return
+        end do
+    end subroutine test_iteration_cap
+
+    !> A case whose dense system does not fit is refused with its need and the limit: N_e =
+    !! 20000 on a plate gives n = 100005 unknowns, 32 n^2 bytes = 320 GB > 0.8 x 16 GB; N_e =
+    !! 20 (n = 105) fits; and two cases at once need twice one.
+    subroutine test_memory_limit(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(error_t), allocatable :: refusal
+        m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 20000)
+        call check(err, case_unknowns(m) == 100005, 'unknowns of a P1 plate: 5 (N_e + 1)')
+        if (allocated(err)) return
+        call check_memory(m, 1, 16.0e9_dp, refusal)
+        call check(err, allocated(refusal), 'a 320 GB case was not refused')
+        if (allocated(err)) return
+        call check(err, refusal%code == EXIT_INPUT .and. index(refusal%message, 'GB') > 0 .and. &
+                   index(refusal%message, '12.8 GB usable') > 0, 'refusal lacks need or limit: '// &
+                   refusal%message)
+        if (allocated(err)) return
+        m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 20)
+        call check_memory(m, 1, 16.0e9_dp, refusal)
+        call check(err, .not. allocated(refusal), 'a small case was refused')
+        if (allocated(err)) return
+        call check(err, memory_needed(200) > 0.0_dp .and. &
+                   abs(memory_needed(2000) - 4.0_dp*memory_needed(1000) + 3.0_dp*20.0e6_dp) < 1.0_dp, &
+                   'memory estimate not 32 n^2 + 20 MB')
+    end subroutine test_memory_limit
 end module test_contact_solver

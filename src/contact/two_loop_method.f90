@@ -137,15 +137,18 @@ contains
         integer, allocatable :: code(:), new_code(:), seen(:, :)
         real(dp), allocatable :: z_new(:), z_base(:)
         real(dp) :: incr, merit_base, lambda
-        integer :: inner, n_changed
+        integer :: inner, n_changed, n_seen
         logical :: cycled
         character(len=200) :: text
+        integer, parameter :: memory = 64   !! set patterns remembered for cycle detection
+                                            !! (a ring: nothing grows with max inner)
 
-        allocate (z_new(d%n), seen(sol%pts%n, m%max_inner))
+        allocate (z_new(d%n), seen(sol%pts%n, memory))
         n_changed = 0
         inner_loop: do inner = 1, m%max_inner
             code = set_code(sol)
-            seen(:, inner) = code
+            seen(:, mod(inner - 1, memory) + 1) = code
+            n_seen = min(inner, memory)
             merit_base = huge(1.0_dp)
             if (searching .and. inner > 1) merit_base = merit(d, sys, sol)
             call solve_with_sets(d, sys, sol, z_new, err)
@@ -165,7 +168,7 @@ contains
             new_code = set_code(sol)
             n_changed = count(new_code /= code)
             cycled = .not. searching .and. n_changed > 0 .and. &
-                     any(all(seen(:, 1:inner) == spread(new_code, 2, inner), dim=1))
+                     any(all(seen(:, 1:n_seen) == spread(new_code, 2, n_seen), dim=1))
             if (cycled) then
                 ! the plain fixed point met a set pattern again: take half the step
                 lambda = 0.5_dp

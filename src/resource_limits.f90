@@ -1,0 +1,92 @@
+!> What a case needs, estimated from the deck before anything is solved, and the refusal of a
+!! case the machine cannot hold (exit status 1 with the need and the limit) instead of an
+!! allocation failure or a swap storm in the middle of a run.
+!!
+!! Memory: the solver keeps a few dense copies of the system of n = displacement + traction
+!! unknowns (the matrix, its factors, the Jacobian); measured peaks on a plate (P1, Newton):
+!! 37 MB at n = 1005, 111 MB at n = 2005, 400 MB at n = 4005, i.e. about 3.1 n^2 doubles;
+!! the estimate takes 4 n^2 doubles + 20 MB. Time: dominated by dense factorisations, about
+!! 12 s at n = 4000 on the 2-core development machine, scaling as n^3 (a rough guide, printed
+!! with the progress, never used to refuse). The limit is 80 % of the memory the system reports
+!! available (MemAvailable of /proc/meminfo; 8 GB when it cannot be read), shared by the cases a
+!! sweep solves at once.
+module resource_limits
+    use iso_fortran_env, only: int64
+    use kinds, only: dp
+    use errors, only: error_t, new_error, EXIT_INPUT
+    use model, only: model_t
+    use discretization, only: discretization_t, new_discretization
+    implicit none
+    private
+
+    real(dp), parameter :: bytes_per_n2 = 32.0_dp          !! 4 doubles per n^2
+    real(dp), parameter :: base_bytes = 20.0e6_dp
+    real(dp), parameter :: seconds_at_4000 = 12.0_dp
+    real(dp), parameter :: usable_fraction = 0.8_dp
+    real(dp), parameter :: fallback_available = 8.0e9_dp
+
+    public :: case_unknowns, memory_needed, time_needed, memory_available, check_memory
+
+contains
+
+    !> Unknowns of the case (displacements + tractions), from its discretisation.
+    integer function case_unknowns(m) result(n)
+        type(model_t), intent(in) :: m
+        type(discretization_t) :: d
+        type(error_t), allocatable :: err
+        call new_discretization(m, d, err)
+        n = 0
+        if (.not. allocated(err)) n = d%n
+    end function case_unknowns
+
+    pure real(dp) function memory_needed(n) result(bytes)
+        integer, intent(in) :: n
+        bytes = bytes_per_n2*real(n, dp)**2 + base_bytes
+    end function memory_needed
+
+    pure real(dp) function time_needed(n) result(seconds)
+        integer, intent(in) :: n
+        seconds = seconds_at_4000*(real(n, dp)/4000.0_dp)**3
+    end function time_needed
+
+    !> MemAvailable of /proc/meminfo in bytes (the fallback when it cannot be read).
+    real(dp) function memory_available() result(bytes)
+        character(len=200) :: line
+        integer :: u, ios
+        real(dp) :: kb
+        bytes = fallback_available
+        open (newunit=u, file='/proc/meminfo', status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, 'MemAvailable:') /= 1) cycle
+            read (line(14:), *, iostat=ios) kb
+            if (ios == 0 .and. kb > 0.0_dp) bytes = kb*1024.0_dp
+            exit
+        end do
+        close (u)
+    end function memory_available
+
+    !> Refuse a case whose estimated memory, times the cases solved at once, exceeds the
+    !! usable memory.
+    subroutine check_memory(m, at_once, available, err)
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: at_once          !! cases of a sweep solved at the same time
+        real(dp), intent(in) :: available       !! bytes
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: need, limit
+        character(len=400) :: text
+        integer :: n
+        n = case_unknowns(m)
+        need = memory_needed(n)*real(max(at_once, 1), dp)
+        limit = usable_fraction*available
+        if (need <= limit) return
+        write (text, '(a,i0,a,i0,a,f0.1,a,i0,a,f0.1,a)') 'N_e = ', m%ne, ' gives ', n, &
+            ' unknowns and needs about ', need/1.0e9_dp, ' GB (dense system; ', max(at_once, 1), &
+            ' case(s) at once), more than the ', limit/1.0e9_dp, ' GB usable on this machine '// &
+            '(80 % of the memory available): use fewer elements, a graded mesh (MESH EDGES or '// &
+            'LOADS) or fewer --jobs'
+        call new_error(err, EXIT_INPUT, trim(text))
+    end subroutine check_memory
+end module resource_limits
