@@ -3,7 +3,7 @@
 module analysis_driver
     use iso_fortran_env, only: int64
     use kinds, only: dp
-    use errors, only: error_t, add_context, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
+    use errors, only: error_t, new_error, add_context, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use model, only: model_t, MODEL_BEAM, relative_stiffness
     use deck_reader, only: deck_t, case_count, case_model
     use discretization, only: discretization_t, new_discretization
@@ -297,6 +297,10 @@ contains
         result%n_outer = sol%n_outer
         result%n_inner = sol%n_inner
         if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
+        if (.not. allocated(err)) then
+            s = summarise(m, sol, tab)
+            call require_admissible(s, err)
+        end if
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
@@ -309,7 +313,6 @@ contains
                                     result%entries, s, sol, tab, err_report)
             return
         end if
-        s = summarise(m, sol, tab)
         result%warnings = [character(len=warning_length) :: result%warnings, &
                            settlement_warnings(m, s%w_max%value)]
         result%entries = summary_entries(m, s, contact_extent(tab, m%length))
@@ -337,6 +340,19 @@ contains
             result%message = err%message
         end if
     end subroutine solve_case
+
+    !> A case whose tractions break the friction law beyond what the regularisation allows is
+    !! no result (status 2), whatever the solver's own stopping rule said.
+    subroutine require_admissible(s, err)
+        type(summary_t), intent(in) :: s
+        type(error_t), allocatable, intent(out) :: err
+        character(len=240) :: text
+        if (s%admissibility <= s%admissibility_tol) return
+        write (text, '(a,es10.3,a,es10.3,a)') 'the friction admissibility check failed: max(|Sigma_x| '// &
+            '- f Sigma_z) = ', s%admissibility, ' exceeds the ', s%admissibility_tol, &
+            ' the regularised law allows at the largest slip: no solution'
+        call new_error(err, EXIT_ANALYSIS, trim(text))
+    end subroutine require_admissible
 
     !> The report's closing lines: each warning, then the note (if any).
     pure function report_notes(warnings, note) result(lines)

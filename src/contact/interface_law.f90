@@ -12,7 +12,7 @@ module interface_law
     integer, parameter, public :: STATE_LIFTOFF = 0, STATE_STICK = 1, STATE_SLIP = 2
 
     public :: friction_threshold, in_tension, is_slipping, contact_state
-    public :: slip_excess, tensile_part, threshold_slope
+    public :: slip_excess, tensile_part, threshold_slope, admissible_excess
 
 contains
 
@@ -55,6 +55,17 @@ contains
         slip_excess = 0.0_dp
         if (is_slipping(sigma_x, tau0)) slip_excess = sign(abs(sigma_x) - tau0, sigma_x)
     end function slip_excess
+
+    !> The largest |sigma_x| - tau0 the regularised law allows at a slip delta (SPEC §4):
+    !! delta = c [eps tau + ((1 - eps^2)/eps) (|tau| - tau0)^+ sign tau] gives
+    !! |tau| - tau0 = eps (|delta|/c - eps |tau|)/(1 - eps^2) <= eps |delta| / (c (1 - eps^2)).
+    !! The friction admissibility check measures the excess against this (Coulomb: 0).
+    elemental real(dp) function admissible_excess(eps_bar, slip, c) result(excess)
+        real(dp), intent(in) :: eps_bar   !! regularisation
+        real(dp), intent(in) :: slip      !! slip delta [length]
+        real(dp), intent(in) :: c         !! friction compliance (model friction_compliance)
+        excess = eps_bar*abs(slip)/(c*(1.0_dp - eps_bar**2))
+    end function admissible_excess
 
     !> The tensile part of sigma_z that the exterior penalty acts on (paper 3.7-3.9): sigma_z on
     !! the tension set, else 0.

@@ -11,10 +11,10 @@
 !! each edge, where the plate/beam model itself starts to hold.
 module design_summary
     use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, total_vertical_load
+    use model, only: model_t, MODEL_BEAM, total_vertical_load, friction_compliance
     use contact_solver, only: solution_t
-    use interface_law, only: STATE_LIFTOFF
-    use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q
+    use interface_law, only: STATE_LIFTOFF, admissible_excess
+    use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q, Q_SLIP
     use station_results, only: station_table_t, FLAG_TENSION, FLAG_OVERLAP
     implicit none
     private
@@ -213,7 +213,12 @@ contains
             sigma_scale = pi*m%length**2/v
         end if
         s%admissibility = sol%admissibility*sigma_scale
-        s%admissibility_tol = 10.0_dp*m%eps_bar*max(1.0_dp, maxval(tab%val(Q_SZ, :))*sigma_scale)
+        ! the excess the regularised law allows at the largest slip (interface_law), doubled for
+        ! the slip read at stations rather than at the Gauss points, plus round-off of the
+        ! tractions (10 eps_bar of the largest pressure)
+        s%admissibility_tol = 2.0_dp*admissible_excess(m%eps_bar, maxval(abs(tab%val(Q_SLIP, :))), &
+                                                       friction_compliance(m))*sigma_scale + &
+                              10.0_dp*m%eps_bar*max(1.0_dp, maxval(tab%val(Q_SZ, :))*sigma_scale)
     end subroutine check_values
 
     !> Largest value of `y` over the stations and its position.
