@@ -156,7 +156,7 @@ contains
             'README.md and'
         write (unit, '(a)') 'doc/OUTPUT.md describe the decks and the outputs.'
         write (unit, '(a)') 'Exit status: the worst of the decks: 0 solved, 1 input or file '// &
-            'error, 2 analysis failed.'
+            'error, 2 analysis failed, 3 internal error.'
     end subroutine print_usage
 
     subroutine usage_error(text)

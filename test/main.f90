@@ -15,6 +15,7 @@ program tester
     use test_convergence, only: collect_convergence
     use test_paper, only: collect_paper
     use test_design_values, only: collect_design_values
+    use test_properties, only: collect_properties
     use test_malformed_decks, only: collect_malformed_decks
     implicit none
     type(unittest_t), allocatable :: tests(:)
@@ -22,7 +23,7 @@ program tester
     integer :: n_pass, n_fail
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
-        'design_values paper malformed_decks '
+        'design_values paper malformed_decks newton properties '
 
     want_suite = ''
     want_test = ''
@@ -85,6 +86,10 @@ program tester
     if (wanted('malformed_decks')) then
         call collect_malformed_decks(tests)
         call run_suite('malformed_decks', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('properties')) then
+        call collect_properties(tests)
+        call run_suite('properties', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)

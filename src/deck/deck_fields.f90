@@ -1,4 +1,4 @@
-!> Low-level card-image parsing (SPEC §8, STYLE §4): column ranges, numbers read like Fortran
+!> Low-level card-image parsing (doc/SPEC.md §8): column ranges, numbers read like Fortran
 !! F10.0, words, the range rules of the deck fields, and the list of input errors with its
 !! rendering (`deck:line:columns: text`, then the line and a caret marker under the field).
 !!

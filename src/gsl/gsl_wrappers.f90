@@ -2,7 +2,7 @@
 !!
 !! Complete elliptic integrals are taken in Carlson's symmetric form (DLMF 19.25.1) with the
 !! COMPLEMENTARY parameter m1 = 1 - k^2 as argument, so that K and E stay accurate as k -> 1
-!! (ring loads at r -> s; see reference/halfspace_kernels.md §C.1):
+!! (ring loads at r -> s; see doc/halfspace_kernels.md §C.1):
 !!   K(k) = R_F(0, m1, 1),   E(k) = R_F(0, m1, 1) - (k^2/3) R_D(0, m1, 1)   (m1 >= 1/2),
 !!   E(k) = (m1/3) (R_D(0, m1, 1) + R_D(0, 1, m1))                           (m1 < 1/2),
 !! the second form free of the cancellation of the first as k -> 1.

@@ -58,7 +58,7 @@ contains
         if (allocated(err)) return
         if (sep == ' ') then
             write (u, '(a)') '# fricon station data: '//title
-            write (u, '(a)') '# all columns nondimensional (SPEC 6); a station at a concentrated '// &
+            write (u, '(a)') '# all columns nondimensional (doc/SPEC.md section 6); a station at a concentrated '// &
                 'load appears twice (left and right limit)'
             do c = 1, size(cols)
                 write (u, '(a,i0,a)') '# ', c, ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
@@ -627,7 +627,7 @@ contains
         call write_conventions(u, m)
         call write_log(u, sol)
         if (len_trim(failure) == 0) then
-            call write_table(u, ' 5. STATIONS (nondimensional, SPEC 6)', nondim_columns(m), &
+            call write_table(u, ' 5. STATIONS (nondimensional, doc/SPEC.md section 6)', nondim_columns(m), &
                              tab, .true.)
             if (.not. m%nondim) call write_table(u, ' 6. STATIONS (physical units)', &
                                                  physical_columns(m), tab, .false.)
@@ -688,7 +688,7 @@ contains
         write (u, fmt) 'G_f (soil)', soil_shear_modulus(m), &
             trim(m%force_unit)//'/'//trim(m%length_unit)//'^2'
         write (u, fmt) 'EI (beam) or D (plate)', flexural_rigidity(m)
-        write (u, fmt) 'c (friction compliance, SPEC 4)', friction_compliance(m)
+        write (u, fmt) 'c (friction compliance, SPEC.md 4)', friction_compliance(m)
         write (u, fmt) 'F (total vertical load)', total_vertical_load(m), trim(m%force_unit)
         write (u, fmt) 'H (total horizontal load)', sum(m%loads%fx), trim(m%force_unit)
         write (u, '(3x,a,i0,a,a,a)', advance='no') 'mesh: N_e = ', d%msh%ne, ', ', &
@@ -821,8 +821,8 @@ contains
         type(entry_t), intent(in) :: e(:)
         type(summary_t), intent(in) :: s
         integer :: i
-        write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional, SPEC 6', &
-            'physical units        ', m%nondim))//')'//repeat(' ', 16)//'estimated error (*)'
+        write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional (SPEC.md 6)', &
+            'physical units            ', m%nondim))//')'//repeat(' ', 16)//'estimated error (*)'
         do i = 1, size(e)
             if (.not. e(i)%defined) then
                 write (u, '(3x,a,t52,a)') e(i)%label, 'n/a'
