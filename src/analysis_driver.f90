@@ -269,9 +269,12 @@ contains
         text = trim(buf)
     end function case_number
 
-    !> One case: solve, tabulate, write report, data files, JSON summary, gnuplot script, PNG.
-    !! A failed case writes its report (ANALYSIS FAILED) and its JSON (status, message) only,
-    !! and removes the data files and figure of an earlier run of the same case.
+    !> One case: solve, tabulate, summarise, estimate the error (all in parallel with other
+    !! cases of a sweep), then write the report, data files, JSON summary, gnuplot script and
+    !! PNG. The writing runs one case at a time (a critical section): it is cheap, and it keeps
+    !! the library's formatted-output and character temporaries out of any race. A failed case
+    !! writes its report (ANALYSIS FAILED) and its JSON only, and removes the data files and
+    !! figure of an earlier run of the same case.
     subroutine solve_case(deck, m, label, out_dir, name, figures, estimates, result)
         type(deck_t), intent(in) :: deck
         type(model_t), intent(inout) :: m
@@ -283,10 +286,8 @@ contains
         type(solution_t) :: sol
         type(station_table_t) :: tab
         type(summary_t) :: s
-        type(error_t), allocatable :: err, err_report
-        character(len=:), allocatable :: base, note
+        type(error_t), allocatable :: err
 
-        base = out_dir//'/'//name
         result%name = name
         result%label = label
         result%message = ''
@@ -304,27 +305,50 @@ contains
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
-            call remove_stale(base)
             allocate (result%entries(0))
-            call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, &
-                              result%entries, s, err%message, report_notes(result%warnings, ''), &
-                              err_report)
-            call write_summary_json(base//'.json', name, deck%path, m, err%code, err%message, &
-                                    result%entries, s, sol, tab, err_report)
+        else
+            result%warnings = [character(len=warning_length) :: result%warnings, &
+                               settlement_warnings(m, s%w_max%value)]
+            result%entries = summary_entries(m, s, contact_extent(tab, m%length))
+            if (estimates) call estimate_errors(m, d, result%entries)
+            result%mean_pressure = s%mean_pressure
+        end if
+        !$omp critical (fricon_output)
+        call write_case_files(deck, m, d, sol, tab, s, out_dir//'/'//name, figures, result)
+        !$omp end critical (fricon_output)
+    end subroutine solve_case
+
+    !> The files of one solved or failed case (see solve_case).
+    subroutine write_case_files(deck, m, d, sol, tab, s, base, figures, result)
+        type(deck_t), intent(in) :: deck
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(in) :: s
+        character(len=*), intent(in) :: base
+        logical, intent(in) :: figures
+        type(case_result_t), intent(inout) :: result
+        type(error_t), allocatable :: err, err_report
+        character(len=:), allocatable :: note
+        call remove_temporaries(base)
+        if (result%status /= EXIT_OK) then
+            call remove_stale(base)
+            call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
+                              result%entries, s, result%message, &
+                              report_notes(result%warnings, ''), err_report)
+            call write_summary_json(base//'.json', result%name, deck%path, m, result%status, &
+                                    result%message, result%entries, s, sol, tab, err_report)
             return
         end if
-        result%warnings = [character(len=warning_length) :: result%warnings, &
-                           settlement_warnings(m, s%w_max%value)]
-        result%entries = summary_entries(m, s, contact_extent(tab, m%length))
-        if (estimates) call estimate_errors(m, d, result%entries)
-        result%mean_pressure = s%mean_pressure
         call write_data_file(base//'.dat', m, tab, err)
         if (.not. allocated(err) .and. .not. m%nondim) call write_physical_csv(base//'.csv', m, &
                                                                                tab, err)
-        if (.not. allocated(err)) call write_summary_json(base//'.json', name, deck%path, m, &
-                                                          EXIT_OK, '', result%entries, s, sol, &
-                                                          tab, err)
-        if (.not. allocated(err)) call write_plot_script(base//'.gp', name, m, label, s, err)
+        if (.not. allocated(err)) call write_summary_json(base//'.json', result%name, deck%path, &
+                                                          m, EXIT_OK, '', result%entries, s, &
+                                                          sol, tab, err)
+        if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
+                                                         result%label, s, err)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
@@ -333,13 +357,13 @@ contains
         note = ''
         if (figures) call render_png(base, note)
         result%message = note
-        call write_report(base//'.txt', deck%path, deck%lines, label, m, d, sol, tab, &
+        call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
                           result%entries, s, '', report_notes(result%warnings, note), err)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
         end if
-    end subroutine solve_case
+    end subroutine write_case_files
 
     !> A case whose tractions break the friction law beyond what the regularisation allows is
     !! no result (status 2), whatever the solver's own stopping rule said.
@@ -371,6 +395,21 @@ contains
     subroutine remove_stale(base)
         character(len=*), intent(in) :: base
         character(len=*), parameter :: ext(5) = ['.dat', '.csv', '.gp ', '.png', '.txt']
+        call remove_files(base, ext)
+    end subroutine remove_stale
+
+    !> The temporary files of this case's outputs that a killed earlier run may have left
+    !! (NAME.ext.tmp): removed before the case writes, so none is ever taken for a result.
+    subroutine remove_temporaries(base)
+        character(len=*), intent(in) :: base
+        character(len=*), parameter :: ext(6) = ['.dat.tmp ', '.csv.tmp ', '.gp.tmp  ', &
+                                                 '.png.tmp ', '.txt.tmp ', '.json.tmp']
+        call remove_files(base, ext)
+    end subroutine remove_temporaries
+
+    subroutine remove_files(base, ext)
+        character(len=*), intent(in) :: base
+        character(len=*), intent(in) :: ext(:)
         integer :: k, u, ios
         logical :: there
         do k = 1, size(ext)
@@ -379,7 +418,7 @@ contains
             open (newunit=u, file=base//trim(ext(k)), status='old', iostat=ios)
             if (ios == 0) close (u, status='delete', iostat=ios)
         end do
-    end subroutine remove_stale
+    end subroutine remove_files
 
     !> The console line: key results with their units.
     pure function console_summary(e) result(text)
