@@ -5,7 +5,7 @@
 !! any station value, the friction law within what the regularisation allows), or it ends
 !! with status 2 for a reason that is true of the problem — "sliding" exactly when H > f V,
 !! "overturning" exactly when the load resultant lies outside the base. A well-posed problem
-!! that fails is a test failure. The generator is an explicit LCG, so every run sees the same
+!! that fails is a test failure. The generator is Park-Miller's (explicit), so every run sees the same
 !! cases on every compiler.
 module test_properties
     use iso_fortran_env, only: int64
@@ -32,11 +32,13 @@ contains
         tests = [new_unittest('random_valid_problems', test_random_problems)]
     end subroutine collect_properties
 
-    !> Next uniform number in [0, 1) of a 64-bit LCG (Knuth's MMIX constants).
+    !> Next uniform number in (0, 1): the Park-Miller minimal standard generator,
+    !! state <- 16807 state mod (2^31 - 1); 16807 (2^31 - 1) < 2^63, so no integer overflows.
     real(dp) function uniform(state)
         integer(int64), intent(inout) :: state
-        state = state*6364136223846793005_int64 + 1442695040888963407_int64
-        uniform = real(ishft(state, -11), dp)/2.0_dp**53
+        integer(int64), parameter :: modulus = 2147483647_int64
+        state = mod(16807_int64*state, modulus)
+        uniform = real(state, dp)/real(modulus, dp)
     end function uniform
 
     real(dp) function between(state, a, b)
