@@ -561,6 +561,7 @@ contains
         text = ''
         do i = 1, size(results)
             if (.not. allocated(results(i)%entries)) cycle
+            if (size(results(i)%entries) < k) cycle      ! a failed case has no results
             if (len_trim(results(i)%entries(k)%unit) > 0) &
                 text = ' ['//trim(results(i)%entries(k)%unit)//']'
             return

@@ -22,6 +22,7 @@ contains
                  new_unittest('input_error_writes_nothing', test_input_error), &
                  new_unittest('failed_case_report_only', test_failed_case), &
                  new_unittest('sweep_summary', test_sweep), &
+                 new_unittest('sweep_first_case_fails', test_sweep_first_fails), &
                  new_unittest('embedded_templates_match', test_templates), &
                  new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep)]
     end subroutine collect_report_writer
@@ -187,6 +188,38 @@ contains
         close (u)
         call check(err, n == 5, 'summary should have a header and 4 rows')
     end subroutine test_sweep
+    !> A beam sweep whose first case slides (F = 0 with H = 0.3 V) and whose second solves
+    !! (F = 0.5): the run ends with status 2, the summary has both rows, the failed one with
+    !! its message and empty result fields (not zeros), the solved one with numbers (the
+    !! hard-case atlas crashed here when the first case had no results).
+    subroutine test_sweep_first_fails(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u, ios
+        character(len=2000) :: header, row1, row2
+        call clean_dir()
+        call parse_deck('sb.dat', [character(len=80) :: card('MODEL', ['BEAM']), &
+                 card('NONDIM', ['0.01 ', '0.1  ', '0.3  ', '0.1  ', '0.05 ']), &
+                 card('FRICTION', ['0.5']), &
+                 card('LOAD', [character(len=10) :: 'POINT', '1.0', '0.3', '0.0']), &
+                 card('SWEEP', ['F  ', '0.0', '0.5']), card('END', [' '])], deck, err)
+        if (allocated(err)) return
+        deck%stem = 'sb'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_ANALYSIS, 'a sweep with a sliding case must end with status 2')
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/sb_summary.csv', status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'no summary for a sweep whose first case failed')
+        if (allocated(err)) return
+        read (u, '(a)') header
+        read (u, '(a)') row1
+        read (u, '(a)') row2
+        close (u)
+        call check(err, index(row1, ',2,') > 0 .and. index(row1, ',,') > 0 .and. &
+                   index(row1, 'sliding') > 0 .and. index(row2, ',0,') > 0 .and. &
+                   index(row2, 'E') > 0, 'summary rows: '//trim(row1)//' / '//trim(row2))
+    end subroutine test_sweep_first_fails
+
     !> A sweep solved on one thread, on two (OpenMP), and in two shards merged by
     !! scripts/merge_shards.sh gives byte-identical summaries and case files: a case's result
     !! does not depend on the thread or the run that solved it (issue 9).
