@@ -214,11 +214,13 @@ contains
         end if
         s%admissibility = sol%admissibility*sigma_scale
         ! the excess the regularised law allows at the largest slip (interface_law), doubled for
-        ! the slip read at stations rather than at the Gauss points, plus round-off of the
-        ! tractions (10 eps_bar of the largest pressure)
+        ! the slip read at stations rather than at the Gauss points, plus the precision of the
+        ! tractions: 1e-8 of the largest pressure (the precision the solver holds the law to;
+        ! with eps_bar = 1e-12 the law's own allowance lies below it)
         s%admissibility_tol = 2.0_dp*admissible_excess(m%eps_bar, maxval(abs(tab%val(Q_SLIP, :))), &
                                                        friction_compliance(m))*sigma_scale + &
-                              10.0_dp*m%eps_bar*max(1.0_dp, maxval(tab%val(Q_SZ, :))*sigma_scale)
+                              max(10.0_dp*m%eps_bar, 1.0e-8_dp)* &
+                              max(1.0_dp, maxval(tab%val(Q_SZ, :))*sigma_scale)
     end subroutine check_values
 
     !> Largest value of `y` over the stations and its position.
