@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Figures of the solver benchmark (issue 7): from output/bench/bench_table.txt (written by
+# `fpm run --profile release --example fricon_bench -- input/paper/*.dat`) draws
+# output/bench/bench_solves.png: the distribution of linear solves per case, NEWTON against
+# TWOLOOP (paper decks and the hard grid), and the time per case against N_e.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+t=output/bench/bench_table.txt
+awk '$1 !~ /^#/ && $7 == "solved" { print $3, $4, $5, $6 }' "$t" >/tmp/bench_rows.txt
+gnuplot <<GP
+set terminal pngcairo size 1500,600 font 'Sans,11' noenhanced
+set output 'output/bench/bench_solves.png'
+set multiplot layout 1,2 title 'Solver benchmark (output/bench/bench_table.txt): solved cases, NEWTON (default) against TWOLOOP (the paper)' font 'Sans,13'
+set grid; set key top left
+set title 'linear solves per case (sorted)'
+set xlabel 'cases, sorted by solves'; set ylabel 'linear solves'; set logscale y
+plot '< grep NEWTON /tmp/bench_rows.txt | sort -n -k3' u 0:3 w lp pt 7 ps 0.6 lw 2 t 'NEWTON', \
+     '< grep TWOLOOP /tmp/bench_rows.txt | sort -n -k3' u 0:3 w lp pt 5 ps 0.6 lw 2 t 'TWOLOOP', \
+     30 w l dt 2 lc rgb '#7f7f7f' t 'target: none over 30'
+set title 'time per case against N_e'
+set xlabel 'N_e'; set ylabel 'discretise + solve [s]'; set logscale xy
+plot '< grep NEWTON /tmp/bench_rows.txt' u 1:4 w p pt 7 ps 0.8 t 'NEWTON', \
+     '< grep TWOLOOP /tmp/bench_rows.txt' u 1:4 w p pt 5 ps 0.8 t 'TWOLOOP'
+unset multiplot
+GP
+echo "bench_figures.sh: output/bench/bench_solves.png"
