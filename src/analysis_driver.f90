@@ -420,6 +420,24 @@ contains
         end do
     end subroutine remove_files
 
+    !> x with four significant digits: fixed notation from 1e-3 to 1e5, else E notation.
+    pure function four_digits(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=24) :: text
+        integer :: decimals
+        if (x == 0.0_dp) then
+            text = '0'
+        else if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e5_dp) then
+            decimals = max(0, 3 - floor(log10(abs(x))))
+            write (text, '(f0.'//achar(iachar('0') + min(decimals, 9))//')') x
+            if (text(1:1) == '.') text = '0'//text
+            if (text(1:2) == '-.') text = '-0'//text(2:)
+        else
+            write (text, '(es10.3)') x
+            text = adjustl(text)
+        end if
+    end function four_digits
+
     !> The console line: key results with their units.
     pure function console_summary(e) result(text)
         type(entry_t), intent(in) :: e(:)
@@ -435,7 +453,7 @@ contains
         do k = 1, size(keys)
             do i = 1, size(e)
                 if (trim(e(i)%key) /= trim(keys(k))) cycle
-                write (buf, '(g0.4)') e(i)%value
+                buf = four_digits(e(i)%value)
                 text = text//trim(names(k))//' = '//trim(adjustl(buf))
                 if (len_trim(e(i)%unit) > 0) text = text//' '//trim(e(i)%unit)
                 if (k < size(keys)) text = text//',  '
