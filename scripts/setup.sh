@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Idempotent set-up of everything fricon needs on a Debian 12 machine (as root, or with sudo):
-# gfortran, OpenBLAS (the BLAS/LAPACK provider, in its OpenMP build: fricon solves the cases of
-# a sweep on OpenMP threads), LAPACK, GSL, gnuplot-nox, and fpm from PyPI.
+# gfortran, OpenBLAS (the BLAS/LAPACK provider), LAPACK, GSL, gnuplot-nox, and fpm from PyPI.
 set -euo pipefail
 
 SUDO=""
@@ -11,21 +10,14 @@ missing=0
 for cmd in gfortran gnuplot gsl-config; do
   command -v "$cmd" >/dev/null 2>&1 || missing=1
 done
-for pkg in libopenblas-openmp-dev liblapack-dev libgsl-dev gnuplot-nox gfortran; do
+for pkg in libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox gfortran; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing=1
 done
 if [ "$missing" -eq 1 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends \
-    gfortran libopenblas-openmp-dev liblapack-dev libgsl-dev gnuplot-nox
-fi
-# the OpenMP build of OpenBLAS provides BLAS and LAPACK (another build may be installed too)
-omp=/usr/lib/x86_64-linux-gnu/openblas-openmp
-if [ -d "$omp" ]; then
-  for lib in libblas.so libblas.so.3 liblapack.so liblapack.so.3 libopenblas.so libopenblas.so.0; do
-    $SUDO update-alternatives --set "$lib-x86_64-linux-gnu" "$omp/$lib" >/dev/null 2>&1 || true
-  done
+    gfortran libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox
 fi
 
 if ! command -v fpm >/dev/null 2>&1; then
