@@ -16,7 +16,7 @@ module test_simplifications
     use contact_solver, only: solution_t, solve_contact
     use station_results, only: station_table_t, tabulate
     use station_columns, only: Q_X, Q_W, Q_PSI, Q_SZ, Q_STATE, Q_Q, Q_M
-    use model_reduction, only: reduction_t, plan_reduction
+    use model_reduction, only: reduction_t, plan_reduction, simplification_text
     use shape_functions, only: INTERP_P2, INTERP_S2
     implicit none
     private
@@ -31,7 +31,8 @@ contains
                  new_unittest('half_beam_s2', test_half_s2), &
                  new_unittest('half_beam_not_when_asymmetric', test_half_refused), &
                  new_unittest('frictionless_plate', test_frictionless_plate), &
-                 new_unittest('frictionless_beam', test_frictionless_beam)]
+                 new_unittest('frictionless_beam', test_frictionless_beam), &
+                 new_unittest('report_line', test_report_line)]
     end subroutine collect_simplifications
 
     !> NONDIM beam (l = 1, F = 1, beta 0.05, zeta 0.1) with the given loads.
@@ -244,4 +245,20 @@ contains
         call require_frictionless(beam(0.01_dp, 0.0_dp, 40, [load_t(kind=LOAD_POINT, &
                                   fz=1.0_dp, x1=0.1_dp)]), 'beam rho 0.01, off-centre', err)
     end subroutine test_frictionless_beam
+
+    !> The report's line (section 2) names what was used and the unknowns saved.
+    subroutine test_report_line(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        character(len=:), allocatable :: text
+        m = beam(0.01_dp, 0.0_dp, 40, [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)])
+        text = simplification_text(m, discretised(m))
+        call check(err, index(text, 'half beam') > 0 .and. index(text, 'f = 0') > 0 .and. &
+                   index(text, 'saved 60.0% of the unknowns (82 of 205 solved)') > 0, &
+                   'symmetric frictionless beam: '//text)
+        if (allocated(err)) return
+        m%simplify = .false.
+        text = simplification_text(m, discretised(m))
+        call check(err, text == 'simplifications used: none (full model)', 'switched off: '//text)
+    end subroutine test_report_line
 end module test_simplifications

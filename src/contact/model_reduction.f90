@@ -73,7 +73,7 @@ contains
         type(discretization_t), intent(in) :: d
         character(len=:), allocatable :: text
         type(reduction_t) :: red
-        character(len=40) :: saved
+        character(len=100) :: saved
         red = plan_reduction(m, d)
         text = 'simplifications used: '
         if (.not. is_active(red)) then
