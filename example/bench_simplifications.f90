@@ -4,7 +4,8 @@
 !! processor seconds of the whole solve_contact and of its assembly (build_system, the same
 !! for both: T is assembled for the full model), and the largest station difference
 !! relative to the column's kind (test_simplifications).
-!! Usage: `fpm run --profile release --example bench_simplifications`.
+!! Usage: `fpm run --profile release --example bench_simplifications [-- N_e ...]`
+!! (default N_e 40 and 160).
 program bench_simplifications
     use iso_fortran_env, only: output_unit
     use kinds, only: dp
@@ -18,8 +19,19 @@ program bench_simplifications
     use station_columns, only: Q_X, Q_W, Q_PSI, Q_SZ, Q_STATE, Q_Q, Q_M
     use model_reduction, only: reduction_t, plan_reduction, simplification_text
     implicit none
-    integer :: ne_list(2) = [40, 160], i
+    integer, allocatable :: ne_list(:)
+    integer :: i
+    character(len=16) :: arg
     call gsl_start()
+    ne_list = [40, 160]
+    if (command_argument_count() > 0) then
+        deallocate (ne_list)
+        allocate (ne_list(command_argument_count()))
+        do i = 1, size(ne_list)
+            call get_command_argument(i, arg)
+            read (arg, *) ne_list(i)
+        end do
+    end if
     write (output_unit, '(a)') '| case | N_e | simplification | unknowns full | unknowns solved '// &
         '| saved | linear solves full / simpl. | full s | simpl. s | assembly s | solve s full '// &
         '| solve s simpl. | time saved | max station diff |'
