@@ -40,6 +40,7 @@ module analysis_driver
         logical :: progress = .false.   !! progress on the error unit: case i of n, time left
         integer :: threads = 0          !! cases solved at once (0: all cores)
         logical :: estimates = .true.   !! error estimates (two coarser solves per case)
+        logical :: full_model = .false. !! no simplifications (model_reduction)
         integer :: shard_index = 1      !! solve cases shard_index, +shard_count, ... only
         integer :: shard_count = 1
     end type run_options_t
@@ -86,6 +87,7 @@ contains
         end do validate
         if (status /= EXIT_OK) return
         if (present(options)) opt = options
+        if (opt%full_model) cases(:)%simplify = .false.
         call prepare_output_dir(out_dir, err)
         if (.not. allocated(err)) call check_deck_not_overwritten(deck%path, out_dir, deck%stem, err)
         if (allocated(err)) then

@@ -58,6 +58,7 @@ module model
         real(dp) :: eta_bar = 1.0e-9_dp   !! penalty of the tension zone (SPEC §4)
         real(dp) :: tau0_start = -1.0_dp  !! start threshold, nondim; < 0: f * mean pressure
         integer :: method = METHOD_NEWTON  !! METHOD_NEWTON (default) or METHOD_TWOLOOP (paper)
+        logical :: simplify = .true.      !! solve only what the scene needs (model_reduction)
         ! output
         integer :: stations = 0           !! 0: every node of the mesh
     end type model_t

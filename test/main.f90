@@ -17,13 +17,14 @@ program tester
     use test_design_values, only: collect_design_values
     use test_properties, only: collect_properties
     use test_malformed_decks, only: collect_malformed_decks
+    use test_simplifications, only: collect_simplifications
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
     integer :: n_pass, n_fail
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
-        'design_values paper malformed_decks newton properties '
+        'design_values paper malformed_decks newton properties simplifications '
 
     want_suite = ''
     want_test = ''
@@ -65,6 +66,10 @@ program tester
     if (wanted('contact_solver')) then
         call collect_contact_solver(tests)
         call run_suite('contact_solver', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('simplifications')) then
+        call collect_simplifications(tests)
+        call run_suite('simplifications', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('newton')) then
         call collect_newton(tests)

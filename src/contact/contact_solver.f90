@@ -16,6 +16,8 @@ module contact_solver
     use newton_method, only: solve_newton
     use two_loop_method, only: solve_two_loop
     use solution_checks, only: check_load_admissible, final_checks
+    use model_reduction, only: reduction_t, plan_reduction, is_active, reduced_discretization, &
+                               reduced_system, reduced_points, expand
     use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP, contact_state, &
                              friction_threshold, in_tension, is_slipping
     implicit none
@@ -43,7 +45,10 @@ contains
         if (allocated(err)) return
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
-        if (m%method == METHOD_TWOLOOP) then
+        if (is_active(plan_reduction(m, d))) then
+            call solve_reduced(m, d, sys, sol, err)
+            return
+        else if (m%method == METHOD_TWOLOOP) then
             call solve_two_loop(m, d, sys, sol, err)
         else
             call solve_newton(m, d, sys, sol, err)
@@ -52,6 +57,36 @@ contains
         if (allocated(err)) return
         call final_checks(m, d, sys, sol, err)
     end subroutine solve_contact
+
+    !> Newton on the reduced problem of model_reduction, checked against the reduced complete
+    !! problem (the model solved: for f = 0 Coulomb's sigma_x = 0, which the full model's
+    !! regularised law would judge at its stick kink), then expanded to the full numbering
+    !! (the contact points, and so the tractions and sets there, are the full model's).
+    subroutine solve_reduced(m, d, sys, sol, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(solution_t), intent(inout) :: sol
+        type(error_t), allocatable, intent(out) :: err
+        type(reduction_t) :: red
+        type(discretization_t) :: dr
+        type(system_t) :: sr
+        type(contact_points_t) :: pts
+        red = plan_reduction(m, d)
+        dr = reduced_discretization(d, red)
+        sr = reduced_system(sys, d, dr, red)
+        pts = sol%pts
+        sol%pts = reduced_points(pts, red)
+        deallocate (sol%z)
+        allocate (sol%z(dr%n))
+        call solve_newton(m, dr, sr, sol, err)
+        if (.not. allocated(err)) then
+            call classify_complete(m, sol)
+            call final_checks(m, dr, sr, sol, err)
+        end if
+        sol%z = expand(red, sol%z)
+        sol%pts = pts
+    end subroutine solve_reduced
 
     !> Tractions, threshold tau0 = f max(sigma_z, 0), sets and states of the complete problem.
     subroutine classify_complete(m, sol)

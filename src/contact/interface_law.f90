@@ -36,12 +36,13 @@ contains
     end function is_slipping
 
     !> The state a reader is told: lift-off where the point is in tension, else slip where the
-    !! shear exceeds the threshold, else stick.
+    !! shear exceeds the threshold or there is no threshold (f = 0: nothing resists sliding,
+    !! also where the frictionless model's sigma_x is exactly 0), else stick.
     elemental integer function contact_state(sigma_x, sigma_z, tau0) result(state)
         real(dp), intent(in) :: sigma_x, sigma_z, tau0
         if (in_tension(sigma_z)) then
             state = STATE_LIFTOFF
-        else if (is_slipping(sigma_x, tau0)) then
+        else if (is_slipping(sigma_x, tau0) .or. tau0 <= 0.0_dp) then
             state = STATE_SLIP
         else
             state = STATE_STICK

@@ -17,6 +17,7 @@ module report_writer
     use figure_templates, only: panel_template, sweep_template
     use summary_table, only: entry_t
     use error_estimate, only: error_method_text
+    use model_reduction, only: simplification_text
     implicit none
     private
 
@@ -697,6 +698,7 @@ contains
             write (u, '(1x,a)', advance='no') interp_name(m%interp(field))
         end do
         write (u, '(a,i0,a,i0)') ', unknowns: displacements ', d%nv, ', tractions ', d%nr
+        write (u, '(3x,a)') simplification_text(m, d)
         write (u, '(3x,a,es9.2,a,es9.2,a,i0,a,i0)') 'solver: tol outer ', m%tol_outer, &
             ', tol inner ', m%tol_inner, ', max outer ', m%max_outer, ', max inner ', m%max_inner
     end subroutine write_groups
