@@ -7,7 +7,9 @@
 !! Phases (processor time, least of repeated runs for small cases): assembly of T; of K and M;
 !! build_system (T, K, M and the base matrix); the whole solve_contact (build included), so
 !! iterations = solve - build; the linear solves it counts; one dense factorisation (LDL^T or
-!! LU of the complete n x n Jacobian, the pre-issue-7 path) of the final system.
+!! LU of the complete n x n Jacobian, the pre-issue-7 path) of the final system; the set-up
+!! of the Schur complement onto the tractions (schur_solver: banded Cholesky of K_ii, S0) and
+!! one factorisation of the final system's Schur complement (the path of every Newton step).
 program bench_linalg
     use kinds, only: dp
     use errors, only: error_t
@@ -17,7 +19,8 @@ program bench_linalg
     use deck_reader, only: deck_t, read_deck, case_model
     use contact_solver, only: solution_t, solve_contact
     use contact_system, only: system_t, contact_points_t, build_system, contact_points, &
-                              complete_jacobian, point_tractions
+                              complete_jacobian, point_tractions, set_terms_t, set_terms
+    use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_factorise
     use mindlin_structure, only: section_of, assemble_stiffness, assemble_coupling
     use halfspace_operator, only: assemble_flexibility
     use linear_solve, only: solve_equilibrated
@@ -39,8 +42,9 @@ program bench_linalg
     if (allocated(err)) error stop 'cannot build the case'
     write (*, '(a)') '# deck: '//trim(path)
     write (*, '(a)') '|   N_e |     n |  nr | T s | K,M s | build s | solve_contact s | '// &
-        'iterations s | solves | dense final factorisation s | solve / factorisation |'
-    write (*, '(a)') '|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|'
+        'iterations s | solves | dense final factorisation s | iterations / dense | '// &
+        'Schur setup s (K_ii band, S0) | Schur final factorisation s | iterations / Schur |'
+    write (*, '(a)') '|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|'
     do i = 2, command_argument_count()
         call get_command_argument(i, arg)
         read (arg, *) ne
@@ -65,7 +69,10 @@ contains
         type(solution_t) :: sol
         type(error_t), allocatable :: err
         real(dp), allocatable :: t_mat(:, :), k(:, :), mm(:, :), a(:, :), b(:), x(:)
-        real(dp) :: t0, t_t, t_km, t_build, t_solve, t_fact
+        real(dp) :: t0, t_t, t_km, t_build, t_solve, t_fact, t_setup, t_schur
+        type(schur_t) :: sc
+        type(schur_factor_t) :: fac
+        type(set_terms_t) :: st
         integer :: rep, n_rep
         logical :: symmetric
         call new_discretization(m, d, err)
@@ -73,6 +80,7 @@ contains
         n_rep = max(1, min(20, 4000/(m%ne*m%ne/100 + 1)))
         if (m%ne >= 320) n_rep = 1
         t_t = huge(1.0_dp); t_km = t_t; t_build = t_t; t_solve = t_t; t_fact = t_t
+        t_setup = t_t; t_schur = t_t
         repeats: do rep = 1, n_rep
             t0 = now()
             call assemble_flexibility(m, d, t_mat, err)
@@ -102,10 +110,20 @@ contains
             call solve_equilibrated(a, b, x, symmetric, err)
             t_fact = min(t_fact, now() - t0)
             deallocate (a, b, x)
+            t0 = now()
+            call new_schur(d, sys, sc)
+            t_setup = min(t_setup, now() - t0)
+            if (.not. sc%ready) error stop 'the Schur complement is not ready'
+            t0 = now()
+            call set_terms(sys, sys%law, pts, point_tractions(pts, sol%z), st)
+            call schur_factorise(sc, st, fac, err)
+            t_schur = min(t_schur, now() - t0)
         end do repeats
-        write (*, '(a,i6,a,i6,a,i5,a,f9.4,a,f9.4,a,f9.4,a,f9.4,a,f9.4,a,i4,a,f9.4,a,f6.1,a)') &
+        write (*, '(a,i6,a,i6,a,i5,a,f9.4,a,f9.4,a,f9.4,a,f9.4,a,f9.4,a,i4,a,f9.4,a,f6.1,'// &
+               'a,f9.4,a,f9.4,a,f6.1,a)') &
             '|', m%ne, '|', d%n, '|', d%nr, '|', t_t, '|', t_km, '|', t_build, '|', t_solve, &
             '|', t_solve - t_build, '|', sol%n_solves, '|', t_fact, '|', &
-            (t_solve - t_build)/t_fact, '|'
+            (t_solve - t_build)/t_fact, '|', t_setup, '|', t_schur, '|', &
+            (t_solve - t_build)/t_schur, '|'
     end subroutine bench_one
 end program bench_linalg

@@ -93,7 +93,15 @@ module contact_system
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
-    public :: jacobian_diagonal, linear_part
+    public :: jacobian_diagonal, linear_part, set_terms
+
+    !> Set-dependent entries of the Jacobian (global unknown numbers).
+    type, public :: set_terms_t
+        integer :: n = 0                     !! entries in use
+        integer, allocatable :: row(:), col(:)
+        real(dp), allocatable :: val(:)
+        logical :: symmetric = .true.        !! no d tau0/d sigma_z block
+    end type set_terms_t
 
 contains
 
@@ -279,7 +287,8 @@ contains
     end subroutine complete_residual
 
     !> The generalised Jacobian of F at the tractions sigma (sets decided there by
-    !! interface_law). symmetric is false when the d tau0/d sigma_z block is present.
+    !! interface_law): A0 plus the set-dependent entries of set_terms, fixed unknowns with
+    !! identity rows and columns. symmetric is false when the d tau0/d sigma_z block is present.
     pure subroutine complete_jacobian(d, sys, law, pts, sigma, a, symmetric)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
@@ -288,33 +297,70 @@ contains
         real(dp), intent(in) :: sigma(:, :)
         real(dp), allocatable, intent(out) :: a(:, :)
         logical, intent(out) :: symmetric
-        real(dp) :: tau0, coupling
-        integer :: p, i
+        type(set_terms_t) :: st
+        integer :: i
         a = sys%a0
-        symmetric = .true.
-        points: do p = 1, pts%n
-            if (law%eps /= sys%law%eps) &
-                call add_point_mass(pts, p, 1, -sys%c*(law%eps - sys%law%eps), a)
-            if (in_tension(sigma(2, p))) call add_point_mass(pts, p, 2, -law%penalty, a)
-            tau0 = friction_threshold(law%f, sigma(2, p))
-            if (.not. is_slipping(sigma(1, p), tau0)) cycle points
-            call add_point_mass(pts, p, 1, -law%slip, a)
-            coupling = law%slip*sign(1.0_dp, sigma(1, p))*threshold_slope(law%f, sigma(2, p))
-            if (coupling == 0.0_dp) cycle points
-            symmetric = .false.
-            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
-                do i = 1, pts%nl(2)
-                    a(ix, iz(i)) = a(ix, iz(i)) + coupling*pts%wt(p) &
-                                   *pts%val(1:pts%nl(1), 1, p)*pts%val(i, 2, p)
-                end do
-            end associate
-        end do points
+        call set_terms(sys, law, pts, sigma, st)
+        symmetric = st%symmetric
+        entries: do i = 1, st%n
+            a(st%row(i), st%col(i)) = a(st%row(i), st%col(i)) + st%val(i)
+        end do entries
         do i = 1, size(d%fixed)
             a(d%fixed(i), :) = 0.0_dp
             a(:, d%fixed(i)) = 0.0_dp
             a(d%fixed(i), d%fixed(i)) = 1.0_dp
         end do
     end subroutine complete_jacobian
+
+    !> The set-dependent entries of the Jacobian at the tractions sigma, as (row, col, value)
+    !! triplets on the traction unknowns (duplicates add): the eps_bar of a continuation stage
+    !! where it differs from the deck's, the penalty on the tension set, the slip terms and
+    !! d tau0/d sigma_z on the slip set. All live on the interface's Gauss points.
+    pure subroutine set_terms(sys, law, pts, sigma, st)
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        type(set_terms_t), intent(out) :: st
+        real(dp) :: tau0, coupling
+        integer :: p, nx, nz
+        nx = pts%nl(1)
+        nz = pts%nl(2)
+        allocate (st%row(pts%n*(2*nx*nx + nz*nz + nx*nz)))
+        allocate (st%col(size(st%row)), st%val(size(st%row)))
+        st%n = 0
+        st%symmetric = .true.
+        points: do p = 1, pts%n
+            if (law%eps /= sys%law%eps) &
+                call add_point_entries(pts, p, 1, 1, -sys%c*(law%eps - sys%law%eps), st)
+            if (in_tension(sigma(2, p))) call add_point_entries(pts, p, 2, 2, -law%penalty, st)
+            tau0 = friction_threshold(law%f, sigma(2, p))
+            if (.not. is_slipping(sigma(1, p), tau0)) cycle points
+            call add_point_entries(pts, p, 1, 1, -law%slip, st)
+            coupling = law%slip*sign(1.0_dp, sigma(1, p))*threshold_slope(law%f, sigma(2, p))
+            if (coupling == 0.0_dp) cycle points
+            st%symmetric = .false.
+            call add_point_entries(pts, p, 1, 2, coupling, st)
+        end do points
+    end subroutine set_terms
+
+    !> Triplets factor * wt g_i h_j at contact point p, g of traction field kr (1: x, 2: z)
+    !! in the rows, h of field kc in the columns.
+    pure subroutine add_point_entries(pts, p, kr, kc, factor, st)
+        type(contact_points_t), intent(in) :: pts
+        integer, intent(in) :: p, kr, kc
+        real(dp), intent(in) :: factor
+        type(set_terms_t), intent(inout) :: st
+        integer :: i, j
+        columns: do j = 1, pts%nl(kc)
+            rows: do i = 1, pts%nl(kr)
+                st%n = st%n + 1
+                st%row(st%n) = pts%idx(i, kr, p)
+                st%col(st%n) = pts%idx(j, kc, p)
+                st%val(st%n) = factor*pts%wt(p)*pts%val(i, kr, p)*pts%val(j, kc, p)
+            end do rows
+        end do columns
+    end subroutine add_point_entries
 
     !> A0 z, with K applied to v less its rigid-body part (beam: the rotation w = x, psi = 1 by
     !! the mean psi; then the translations of w, and of u_s for the beam, by their first
