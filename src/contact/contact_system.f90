@@ -59,7 +59,9 @@ module contact_system
         type(iteration_record_t), allocatable :: history(:)
         character(len=8) :: method = ''      !! NEWTON or TWOLOOP
         integer :: n_outer = 0, n_inner = 0
-        integer :: n_solves = 0              !! linear solves (factorisations) of the case
+        integer :: n_solves = 0              !! linear solves of the case
+        integer :: n_factorisations = 0      !! matrix factorisations among them (Newton: the
+                                             !! others reuse one by a low-rank update)
         real(dp) :: residual(2) = 0.0_dp     !! relative residuals of equations 4.2a, 4.2b
         real(dp) :: law_residual = 0.0_dp    !! 4.2b of the complete problem as a traction error
         real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)
@@ -98,6 +100,7 @@ module contact_system
     !> Set-dependent entries of the Jacobian (global unknown numbers).
     type, public :: set_terms_t
         integer :: n = 0                     !! entries in use
+        integer, allocatable :: first(:)     !! contact point p has entries first(p):first(p+1)-1
         integer, allocatable :: row(:), col(:)
         real(dp), allocatable :: val(:)
         logical :: symmetric = .true.        !! no d tau0/d sigma_z block
@@ -328,9 +331,11 @@ contains
         nz = pts%nl(2)
         allocate (st%row(pts%n*(2*nx*nx + nz*nz + nx*nz)))
         allocate (st%col(size(st%row)), st%val(size(st%row)))
+        allocate (st%first(pts%n + 1))
         st%n = 0
         st%symmetric = .true.
         points: do p = 1, pts%n
+            st%first(p) = st%n + 1
             if (law%eps /= sys%law%eps) &
                 call add_point_entries(pts, p, 1, 1, -sys%c*(law%eps - sys%law%eps), st)
             if (in_tension(sigma(2, p))) call add_point_entries(pts, p, 2, 2, -law%penalty, st)
@@ -342,6 +347,7 @@ contains
             st%symmetric = .false.
             call add_point_entries(pts, p, 1, 2, coupling, st)
         end do points
+        st%first(pts%n + 1) = st%n + 1
     end subroutine set_terms
 
     !> Triplets factor * wt g_i h_j at contact point p, g of traction field kr (1: x, 2: z)

@@ -30,7 +30,7 @@ module newton_method
     use model, only: model_t
     use discretization, only: discretization_t
     use linear_solve, only: solve_equilibrated
-    use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_factorise, schur_solve
+    use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve
     use contact_system, only: solution_t, system_t, law_t, iteration_record_t, new_law, &
                               contact_points_t, &
                               point_tractions, complete_residual, complete_jacobian, &
@@ -80,41 +80,45 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_start(:)
         type(schur_t) :: sc
+        type(schur_factor_t) :: fac
         logical :: converged
         sol%method = 'NEWTON'
         call new_schur(d, sys, sc)
-        call adhesive_start(d, sys, sc, sol, err)
+        call adhesive_start(d, sys, sc, fac, sol, err)
         if (allocated(err)) return
         z_start = sol%z
-        call newton_stage(d, sys, sc, sys%law, 1, min(plain_limit, m%max_inner), .false., &
-                          sol, converged, err)
+        call newton_stage(d, sys, sc, fac, sys%law, 1, min(plain_limit, m%max_inner), &
+                          .false., sol, converged, err)
         if (allocated(err) .or. converged) return
         call log_note(sol, 'plain Newton stalled: continuation')
         sol%z = z_start
-        call continuation(m, d, sys, sc, sol, err)
+        call continuation(m, d, sys, sc, fac, sol, err)
     end subroutine solve_newton
 
     !> Bonded bilateral contact: A0 z = [q; 0], one symmetric solve.
-    subroutine adhesive_start(d, sys, sc, sol, err)
+    subroutine adhesive_start(d, sys, sc, fac, sol, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac   !! the factorised Schur complement
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :), rhs(:)
         type(set_terms_t) :: none
-        type(schur_factor_t) :: fac
+        logical :: factorised
         integer :: i
         allocate (rhs(d%n))
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q
         rhs(d%fixed) = 0.0_dp
         if (sc%ready) then
-            allocate (none%row(0), none%col(0), none%val(0))
-            call schur_factorise(sc, none, fac, err)
+            allocate (none%first(sol%pts%n + 1), none%row(0), none%col(0), none%val(0))
+            none%first = 1
+            call schur_prepare(sc, none, fac, factorised, err)
             if (.not. allocated(err)) call schur_solve(sys, sc, none, fac, rhs, sol%z, err)
             if (allocated(err)) return
             sol%n_solves = sol%n_solves + 1
+            sol%n_factorisations = sol%n_factorisations + 1
             return
         end if
         a = sys%a0
@@ -127,15 +131,17 @@ contains
         call solve_equilibrated(a, rhs, sol%z, .true., err)
         if (allocated(err)) return
         sol%n_solves = sol%n_solves + 1
+        sol%n_factorisations = sol%n_factorisations + 1
     end subroutine adhesive_start
 
     !> Stages s = top_level .. 0 (eps_bar, eta_bar times 10^s) from sol%z; a stage that fails
     !! is retried from the last converged one with half the decrement.
-    subroutine continuation(m, d, sys, sc, sol, err)
+    subroutine continuation(m, d, sys, sc, fac, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_good(:)
@@ -150,7 +156,7 @@ contains
         stage = 1
         stages: do
             stage = stage + 1
-            call newton_stage(d, sys, sc, stage_law(m, sys, level), stage, m%max_inner, &
+            call newton_stage(d, sys, sc, fac, stage_law(m, sys, level), stage, m%max_inner, &
                               .true., sol, converged, err)
             if (allocated(err)) return
             if (converged) then
@@ -187,10 +193,12 @@ contains
     !! the merit below the best point's, the iteration returns to that point and takes the
     !! exact line-search step along the direction computed there (so the merit decreases at
     !! least every watchdog + 1 steps, and a cycle of set patterns cannot repeat).
-    subroutine newton_stage(d, sys, sc, law, stage, max_iter, patient, sol, converged, err)
+    subroutine newton_stage(d, sys, sc, fac, law, stage, max_iter, patient, sol, converged, &
+                            err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac
         type(law_t), intent(in) :: law
         integer, intent(in) :: stage, max_iter
         logical, intent(in) :: patient     !! else give up when the watchdog first runs out
@@ -210,7 +218,7 @@ contains
                     <= refine_tol*maxval(abs(sys%q))
         iterations: do iter = 1, max_iter
             if (converged) exit iterations
-            call newton_direction(d, sys, sc, law, sol, s%res, dz, err)
+            call newton_direction(d, sys, sc, fac, law, sol, s%res, dz, err)
             if (allocated(err)) return
             if (s%relaxed == 0) s%dz_best = dz
             z_old = sol%z
@@ -261,10 +269,11 @@ contains
 
     !> The generalised Newton direction J dz = -F at sol%z (one linear solve): by the Schur
     !! complement onto the tractions (schur_solver) when it is ready, else dense.
-    subroutine newton_direction(d, sys, sc, law, sol, res, dz, err)
+    subroutine newton_direction(d, sys, sc, fac, law, sol, res, dz, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac  !! kept across steps: low-rank updates
         type(law_t), intent(in) :: law
         type(solution_t), intent(inout) :: sol
         real(dp), intent(in) :: res(:)
@@ -272,12 +281,12 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :)
         type(set_terms_t) :: st
-        type(schur_factor_t) :: fac
-        logical :: symmetric
+        logical :: symmetric, factorised
         allocate (dz(d%n))
+        factorised = .true.
         if (sc%ready) then
             call set_terms(sys, law, sol%pts, point_tractions(sol%pts, sol%z), st)
-            call schur_factorise(sc, st, fac, err)
+            call schur_prepare(sc, st, fac, factorised, err)
             if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err)
         else
             call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
@@ -285,6 +294,7 @@ contains
             call solve_equilibrated(a, -res, dz, symmetric, err)
         end if
         if (allocated(err)) return
+        if (factorised) sol%n_factorisations = sol%n_factorisations + 1
         sol%n_solves = sol%n_solves + 1
         sol%n_inner = sol%n_inner + 1
     end subroutine newton_direction

@@ -45,17 +45,28 @@ module schur_solver
         real(dp), allocatable :: c_val(:)    !! value (J is symmetric there: J(kept, inner) = C^T)
     end type schur_t
 
-    !> The factorised kept block of one Newton step.
+    !> The kept block of one Newton step: S0 + base set terms factorised, and the low-rank
+    !! change to the present set terms (Woodbury): S = S_base + E D E^T, E the columns of the
+    !! identity at the kept unknowns of the contact points whose terms changed.
     type, public :: schur_factor_t
-        real(dp), allocatable :: lu(:, :)    !! LDL^T or LU factors of the scaled kept block
+        real(dp), allocatable :: lu(:, :)    !! LDL^T or LU factors of the scaled S_base
         real(dp), allocatable :: scale(:)    !! 1/sqrt|diagonal| (1 where 0)
         integer, allocatable :: ipiv(:)
-        logical :: symmetric = .true.
+        logical :: symmetric = .true.        !! S_base symmetric: LDL^T, else LU
+        type(set_terms_t) :: base            !! the set terms in S_base
+        integer :: nu = 0                    !! rank of the update (0: S = S_base)
+        integer, allocatable :: upos(:)      !! kept positions touched by the change
+        real(dp), allocatable :: dmat(:, :)  !! D (nu x nu)
+        real(dp), allocatable :: w(:, :)     !! S_base^-1 E (nk x nu)
+        real(dp), allocatable :: cap(:, :)   !! LU of the capacitance I + D E^T W
+        integer, allocatable :: cap_ipiv(:)
     end type schur_factor_t
 
     integer, parameter :: block_columns = 64  !! columns of C per banded solve in new_schur
 
-    public :: new_schur, schur_factorise, schur_solve
+    integer, parameter :: update_fraction = 20  !! low-rank update while its rank <= nk / this
+
+    public :: new_schur, schur_factorise, schur_prepare, schur_solve
 
 contains
 
@@ -220,6 +231,8 @@ contains
         character(len=160) :: text
         fac%lu = sc%s0
         fac%symmetric = st%symmetric
+        fac%base = st
+        fac%nu = 0
         entries: do i = 1, st%n
             r = sc%pos(st%row(i))
             c = sc%pos(st%col(i))
@@ -255,6 +268,162 @@ contains
             call new_error(err, EXIT_INTERNAL, trim(text))
         end if
     end subroutine schur_factorise
+
+    !> The kept block for the set terms st: a low-rank (Woodbury) update of the factorised
+    !! S_base when few contact points changed their terms since it was factorised (the sets
+    !! change little between Newton steps), else a new factorisation (factorised = .true.).
+    subroutine schur_prepare(sc, st, fac, factorised, err)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        type(schur_factor_t), intent(inout) :: fac
+        logical, intent(out) :: factorised
+        type(error_t), allocatable, intent(out) :: err
+        logical, allocatable :: changed(:)
+        factorised = .true.
+        if (allocated(fac%lu) .and. allocated(fac%base%first)) then
+            if (size(fac%base%first) == size(st%first)) then
+                changed = changed_points(fac%base, st)
+                call low_rank_update(sc, st, changed, fac, factorised)
+                if (.not. factorised) return
+            end if
+        end if
+        call schur_factorise(sc, st, fac, err)
+    end subroutine schur_prepare
+
+    !> Contact points whose set-term entries differ between a and b.
+    pure function changed_points(a, b) result(changed)
+        type(set_terms_t), intent(in) :: a, b
+        logical :: changed(size(a%first) - 1)
+        integer :: p, na, nb
+        points: do p = 1, size(changed)
+            na = a%first(p + 1) - a%first(p)
+            nb = b%first(p + 1) - b%first(p)
+            changed(p) = na /= nb
+            if (changed(p) .or. na == 0) cycle points
+            associate (ia => a%first(p), ib => b%first(p))
+                changed(p) = any(a%row(ia:ia + na - 1) /= b%row(ib:ib + nb - 1)) .or. &
+                             any(a%col(ia:ia + na - 1) /= b%col(ib:ib + nb - 1)) .or. &
+                             any(a%val(ia:ia + na - 1) /= b%val(ib:ib + nb - 1))
+            end associate
+        end do points
+    end function changed_points
+
+    !> D, W = S_base^-1 E and the factorised capacitance I + D W(U, :) for the changed
+    !! points; refactorise = .true. when the rank exceeds nk / update_fraction or the
+    !! capacitance is singular.
+    subroutine low_rank_update(sc, st, changed, fac, refactorise)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: changed(:)
+        type(schur_factor_t), intent(inout) :: fac
+        logical, intent(out) :: refactorise
+        type(error_t), allocatable :: err
+        integer, allocatable :: local(:)
+        integer :: j, info
+        refactorise = .true.
+        if (allocated(fac%dmat)) deallocate (fac%dmat)
+        if (allocated(fac%w)) deallocate (fac%w)
+        if (allocated(fac%cap)) deallocate (fac%cap)
+        if (allocated(fac%cap_ipiv)) deallocate (fac%cap_ipiv)
+        allocate (local(sc%nk))
+        local = 0
+        fac%nu = 0
+        fac%upos = [integer ::]
+        call touched(fac%base, changed, sc%pos, local, fac%upos)
+        call touched(st, changed, sc%pos, local, fac%upos)
+        if (size(fac%upos) > sc%nk/update_fraction) return
+        fac%nu = size(fac%upos)
+        refactorise = .false.
+        if (fac%nu == 0) return
+        allocate (fac%dmat(fac%nu, fac%nu))
+        fac%dmat = 0.0_dp
+        call add_changed(st, changed, sc%pos, local, 1.0_dp, fac%dmat)
+        call add_changed(fac%base, changed, sc%pos, local, -1.0_dp, fac%dmat)
+        allocate (fac%w(sc%nk, fac%nu))
+        fac%w = 0.0_dp
+        do j = 1, fac%nu
+            fac%w(fac%upos(j), j) = 1.0_dp
+        end do
+        call kept_solve(fac, fac%w, err)
+        fac%cap = matmul(fac%dmat, fac%w(fac%upos, :))
+        do j = 1, fac%nu
+            fac%cap(j, j) = fac%cap(j, j) + 1.0_dp
+        end do
+        allocate (fac%cap_ipiv(fac%nu))
+        call dgetrf(fac%nu, fac%nu, fac%cap, fac%nu, fac%cap_ipiv, info)
+        if (info /= 0 .or. allocated(err)) then
+            fac%nu = 0
+            refactorise = .true.
+        end if
+    end subroutine low_rank_update
+
+    !> Kept positions of the entries of the changed points, appended to upos once each
+    !! (local: position -> index in upos).
+    pure subroutine touched(st, changed, pos, local, upos)
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: changed(:)
+        integer, intent(in) :: pos(:)
+        integer, intent(inout) :: local(:)
+        integer, allocatable, intent(inout) :: upos(:)
+        integer :: p, i, k, q(2)
+        points: do p = 1, size(changed)
+            if (.not. changed(p)) cycle points
+            entries: do i = st%first(p), st%first(p + 1) - 1
+                q = [pos(st%row(i)), pos(st%col(i))]
+                do k = 1, 2
+                    if (q(k) == 0) cycle
+                    if (local(q(k)) /= 0) cycle
+                    upos = [upos, q(k)]
+                    local(q(k)) = size(upos)
+                end do
+            end do entries
+        end do points
+    end subroutine touched
+
+    !> dmat += factor * (entries of the changed points) in the local numbering.
+    pure subroutine add_changed(st, changed, pos, local, factor, dmat)
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: changed(:)
+        integer, intent(in) :: pos(:), local(:)
+        real(dp), intent(in) :: factor
+        real(dp), intent(inout) :: dmat(:, :)
+        integer :: p, i, r, c
+        points: do p = 1, size(changed)
+            if (.not. changed(p)) cycle points
+            entries: do i = st%first(p), st%first(p + 1) - 1
+                r = pos(st%row(i))
+                c = pos(st%col(i))
+                if (r == 0 .or. c == 0) cycle entries
+                dmat(local(r), local(c)) = dmat(local(r), local(c)) + factor*st%val(i)
+            end do entries
+        end do points
+    end subroutine add_changed
+
+    !> g = S_base^-1 g (columns) with the scaled factors.
+    subroutine kept_solve(fac, g, err)
+        type(schur_factor_t), intent(in) :: fac
+        real(dp), intent(inout) :: g(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: j, n, info
+        character(len=80) :: text
+        n = size(g, 1)
+        do j = 1, size(g, 2)
+            g(:, j) = g(:, j)*fac%scale
+        end do
+        if (fac%symmetric) then
+            call dsytrs('L', n, size(g, 2), fac%lu, n, fac%ipiv, g, n, info)
+        else
+            call dgetrs('N', n, size(g, 2), fac%lu, n, fac%ipiv, g, n, info)
+        end if
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dsytrs/dgetrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
+        do j = 1, size(g, 2)
+            g(:, j) = g(:, j)*fac%scale
+        end do
+    end subroutine kept_solve
 
     !> Solve J x = b (J = A0 + set terms, fixed unknowns with identity rows) with the
     !! factorised Schur complement; two steps of iterative refinement with J itself.
@@ -293,7 +462,7 @@ contains
         real(dp), intent(in) :: b(:)
         real(dp), intent(out) :: x(:)
         type(error_t), allocatable, intent(out) :: err
-        real(dp), allocatable :: y(:, :), g(:, :)
+        real(dp), allocatable :: y(:, :), g(:, :), z(:, :)
         integer :: k, info
         character(len=80) :: text
         y = reshape(b(sc%inner), [sc%ni, 1])
@@ -302,18 +471,18 @@ contains
         do k = 1, size(sc%c_val)
             g(sc%c_col(k), 1) = g(sc%c_col(k), 1) - sc%c_val(k)*y(sc%c_row(k), 1)
         end do
-        g(:, 1) = g(:, 1)*fac%scale
-        if (fac%symmetric) then
-            call dsytrs('L', sc%nk, 1, fac%lu, sc%nk, fac%ipiv, g, sc%nk, info)
-        else
-            call dgetrs('N', sc%nk, 1, fac%lu, sc%nk, fac%ipiv, g, sc%nk, info)
+        call kept_solve(fac, g, err)
+        if (allocated(err)) return
+        if (fac%nu > 0) then
+            z = reshape(matmul(fac%dmat, g(fac%upos, 1)), [fac%nu, 1])
+            call dgetrs('N', fac%nu, 1, fac%cap, fac%nu, fac%cap_ipiv, z, fac%nu, info)
+            if (info /= 0) then
+                write (text, '(a,i0)') 'dgetrs: illegal argument ', -info
+                call new_error(err, EXIT_INTERNAL, trim(text))
+                return
+            end if
+            g(:, 1) = g(:, 1) - matmul(fac%w, z(:, 1))
         end if
-        if (info /= 0) then
-            write (text, '(a,i0)') 'dsytrs/dgetrs: illegal argument ', -info
-            call new_error(err, EXIT_INTERNAL, trim(text))
-            return
-        end if
-        g(:, 1) = g(:, 1)*fac%scale
         y(:, 1) = b(sc%inner)
         do k = 1, size(sc%c_val)
             y(sc%c_row(k), 1) = y(sc%c_row(k), 1) - sc%c_val(k)*g(sc%c_col(k), 1)
