@@ -91,11 +91,15 @@ module contact_system
                                                    !! translations of the structure (K t = 0)
         integer :: psi_range(2) = 0          !! beam: psi unknowns (rigid rotation psi = 1 ...)
         real(dp), allocatable :: rotation_w(:)  !! ... with w = x: its w coefficients
+        integer :: nv = 0                    !! displacement unknowns
+        integer, allocatable :: sp_ptr(:)    !! a0 outside its traction-traction block (K, M,
+        integer, allocatable :: sp_row(:)    !! M^T: sparse) by columns (sparse_blocks):
+        real(dp), allocatable :: sp_val(:)   !! entries sp_ptr(j):sp_ptr(j+1)-1
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
-    public :: jacobian_diagonal, linear_part, set_terms
+    public :: jacobian_diagonal, linear_part, set_terms, a0_times
 
     !> Set-dependent entries of the Jacobian (global unknown numbers).
     type, public :: set_terms_t
@@ -155,7 +159,69 @@ contains
             sys%row_scale(i) = 1.0_dp
             if (sys%a0(i, i) /= 0.0_dp) sys%row_scale(i) = 1.0_dp/sqrt(abs(sys%a0(i, i)))
         end do
+        call sparse_blocks(nv, sys)
     end subroutine build_system
+
+    !> The nonzeros of a0 outside its dense traction-traction block, by columns (a0 is read
+    !! down its columns, as stored): sparse column j <= n holds the displacement rows of
+    !! column j (K, M^T), column n + j (j <= nv) the traction rows of column j (M).
+    subroutine sparse_blocks(nv, sys)
+        integer, intent(in) :: nv
+        type(system_t), intent(inout) :: sys
+        integer :: j, n, pass, nnz
+        n = size(sys%a0, 1)
+        sys%nv = nv
+        allocate (sys%sp_ptr(n + nv + 1))
+        passes: do pass = 1, 2      ! count, then fill
+            nnz = 0
+            do j = 1, n
+                call gather(j, 1, nv)
+            end do
+            do j = 1, nv
+                call gather(j, nv + 1, n)
+                sys%sp_ptr(n + j + 1) = nnz + 1
+            end do
+            if (pass == 1) allocate (sys%sp_row(nnz), sys%sp_val(nnz))
+        end do passes
+    contains
+        !> Nonzeros of a0(i1:i2, j); the pointer of the sparse column.
+        subroutine gather(j, i1, i2)
+            integer, intent(in) :: j, i1, i2
+            integer :: i
+            if (i1 == 1) sys%sp_ptr(j) = nnz + 1
+            if (i1 > 1) sys%sp_ptr(n + j) = nnz + 1
+            rows: do i = i1, i2
+                if (sys%a0(i, j) == 0.0_dp) cycle rows
+                nnz = nnz + 1
+                if (pass == 1) cycle rows
+                sys%sp_row(nnz) = i
+                sys%sp_val(nnz) = sys%a0(i, j)
+            end do rows
+        end subroutine gather
+    end subroutine sparse_blocks
+
+    !> a0 times x_top in the displacement rows and times x_bottom in the traction rows (the
+    !! sparse blocks, then the dense traction-traction block).
+    pure function a0_times(sys, x_top, x_bottom) result(y)
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: x_top(:), x_bottom(:)
+        real(dp) :: y(size(x_top))
+        integer :: j, n, nv
+        n = size(y)
+        nv = sys%nv
+        y = 0.0_dp
+        y(nv + 1:) = matmul(sys%a0(nv + 1:, nv + 1:), x_bottom(nv + 1:))
+        top: do j = 1, n
+            associate (k1 => sys%sp_ptr(j), k2 => sys%sp_ptr(j + 1) - 1)
+                y(sys%sp_row(k1:k2)) = y(sys%sp_row(k1:k2)) + sys%sp_val(k1:k2)*x_top(j)
+            end associate
+        end do top
+        bottom: do j = 1, nv
+            associate (k1 => sys%sp_ptr(n + j), k2 => sys%sp_ptr(n + j + 1) - 1)
+                y(sys%sp_row(k1:k2)) = y(sys%sp_row(k1:k2)) + sys%sp_val(k1:k2)*x_bottom(j)
+            end associate
+        end do bottom
+    end function a0_times
 
     !> The law with regularisation eps_bar = eps, penalty parameter eta_bar = eta.
     pure function new_law(m, c, eps, eta) result(law)
@@ -378,9 +444,7 @@ contains
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: z(:)
         real(dp) :: lin(d%n)
-        lin(1:d%nv) = matmul(sys%a0(1:d%nv, 1:d%nv), flexible_part(sys, z(1:d%nv))) &
-                      + matmul(sys%a0(1:d%nv, d%nv + 1:), z(d%nv + 1:))
-        lin(d%nv + 1:) = matmul(sys%a0(d%nv + 1:, :), z)
+        lin = a0_times(sys, [flexible_part(sys, z(1:d%nv)), z(d%nv + 1:)], z)
     end function linear_part
 
     !> v less its rigid-body part, which K annihilates.

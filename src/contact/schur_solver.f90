@@ -22,7 +22,7 @@ module schur_solver
     use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
     use model, only: FIELD_U, FIELD_PSI
     use discretization, only: discretization_t
-    use contact_system, only: system_t, set_terms_t
+    use contact_system, only: system_t, set_terms_t, a0_times
     use lapack_interfaces, only: dpbtrf, dpbtrs, dsytrf, dsytrs, dgetrf, dgetrs
     implicit none
     private
@@ -500,9 +500,10 @@ contains
         type(schur_t), intent(in) :: sc
         type(set_terms_t), intent(in) :: st
         real(dp), intent(in) :: x(:)
-        real(dp), allocatable :: jx(:)
+        real(dp), allocatable :: jx(:), xf(:)
         integer :: i
-        jx = matmul(sys%a0, merge(0.0_dp, x, sc%fixed))
+        xf = merge(0.0_dp, x, sc%fixed)
+        jx = a0_times(sys, xf, xf)
         entries: do i = 1, st%n
             if (sc%fixed(st%row(i)) .or. sc%fixed(st%col(i))) cycle entries
             jx(st%row(i)) = jx(st%row(i)) + st%val(i)*x(st%col(i))
