@@ -30,7 +30,8 @@ module newton_method
     use model, only: model_t
     use discretization, only: discretization_t
     use linear_solve, only: solve_equilibrated
-    use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve
+    use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve, &
+                            schur_factorise
     use contact_system, only: solution_t, system_t, law_t, iteration_record_t, new_law, &
                               contact_points_t, &
                               point_tractions, complete_residual, complete_jacobian, &
@@ -281,13 +282,19 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :)
         type(set_terms_t) :: st
-        logical :: symmetric, factorised
+        logical :: symmetric, factorised, accurate
         allocate (dz(d%n))
         factorised = .true.
         if (sc%ready) then
             call set_terms(sys, law, sol%pts, point_tractions(sol%pts, sol%z), st)
             call schur_prepare(sc, st, fac, factorised, err)
-            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err)
+            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err, accurate)
+            if (.not. (allocated(err) .or. accurate)) then
+                ! the low-rank update lost accuracy: factorise this step's matrix
+                call schur_factorise(sc, st, fac, err)
+                factorised = .true.
+                if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err)
+            end if
         else
             call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
                                    symmetric)

@@ -64,7 +64,10 @@ module schur_solver
 
     integer, parameter :: block_columns = 64  !! columns of C per banded solve in new_schur
 
-    integer, parameter :: update_fraction = 20  !! low-rank update while its rank <= nk / this
+    !> Low-rank update while its rank u <= nk / this: the update costs u solves with the base
+    !! factors (2 nk^2 u flops; BLAS 3 for LU, BLAS 2 in LAPACK's LDL^T solve), a new
+    !! factorisation 2/3 nk^3 (LU) or 1/3 nk^3 (LDL^T).
+    integer, parameter :: update_fraction(2) = [20, 5]   !! base LDL^T, LU
 
     public :: new_schur, schur_factorise, schur_prepare, schur_solve
 
@@ -331,7 +334,7 @@ contains
         fac%upos = [integer ::]
         call touched(fac%base, changed, sc%pos, local, fac%upos)
         call touched(st, changed, sc%pos, local, fac%upos)
-        if (size(fac%upos) > sc%nk/update_fraction) return
+        if (size(fac%upos) > sc%nk/update_fraction(merge(1, 2, fac%symmetric))) return
         fac%nu = size(fac%upos)
         refactorise = .false.
         if (fac%nu == 0) return
@@ -427,7 +430,9 @@ contains
 
     !> Solve J x = b (J = A0 + set terms, fixed unknowns with identity rows) with the
     !! factorised Schur complement; two steps of iterative refinement with J itself.
-    subroutine schur_solve(sys, sc, st, fac, b, x, err)
+    !! accurate: false when a low-rank update is in use and the last refinement step still
+    !! changed x by more than refine_limit (the caller then factorises afresh).
+    subroutine schur_solve(sys, sc, st, fac, b, x, err, accurate)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
         type(set_terms_t), intent(in) :: st
@@ -435,6 +440,8 @@ contains
         real(dp), intent(in) :: b(:)
         real(dp), intent(out) :: x(:)
         type(error_t), allocatable, intent(out) :: err
+        logical, intent(out), optional :: accurate
+        real(dp), parameter :: refine_limit = 1.0e-10_dp
         real(dp), allocatable :: dx(:)
         integer :: step
         if (.not. all(b == b)) then
@@ -449,6 +456,8 @@ contains
             if (allocated(err)) return
             x = x + dx
         end do refinement
+        if (present(accurate)) accurate = fac%nu == 0 .or. &
+                                          maxval(abs(dx)) <= refine_limit*maxval(abs(x))
         if (.not. all(abs(x) <= huge(1.0_dp))) then
             call new_error(err, EXIT_ANALYSIS, 'the contact system is numerically singular '// &
                            '(non-finite solution)')
