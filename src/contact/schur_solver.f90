@@ -429,9 +429,9 @@ contains
     end subroutine kept_solve
 
     !> Solve J x = b (J = A0 + set terms, fixed unknowns with identity rows) with the
-    !! factorised Schur complement; two steps of iterative refinement with J itself.
-    !! accurate: false when a low-rank update is in use and the last refinement step still
-    !! changed x by more than refine_limit (the caller then factorises afresh).
+    !! factorised Schur complement; two steps of iterative refinement with J itself (with a
+    !! low-rank update in use: until a step changes x by at most refine_limit of max |x|, up
+    !! to max_update_steps; accurate is false if none did, and the caller factorises afresh).
     subroutine schur_solve(sys, sc, st, fac, b, x, err, accurate)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
@@ -442,7 +442,9 @@ contains
         type(error_t), allocatable, intent(out) :: err
         logical, intent(out), optional :: accurate
         real(dp), parameter :: refine_limit = 1.0e-10_dp
+        integer, parameter :: max_update_steps = 6
         real(dp), allocatable :: dx(:)
+        logical :: converged
         integer :: step
         if (.not. all(b == b)) then
             call new_error(err, EXIT_INTERNAL, 'schur_solve: NaN in the right-hand side')
@@ -451,13 +453,15 @@ contains
         call apply_inverse(sc, fac, b, x, err)
         if (allocated(err)) return
         allocate (dx(size(x)))
-        refinement: do step = 1, 2
+        converged = .false.
+        refinement: do step = 1, merge(2, max_update_steps, fac%nu == 0)
             call apply_inverse(sc, fac, b - jacobian_times(sys, sc, st, x), dx, err)
             if (allocated(err)) return
             x = x + dx
+            converged = maxval(abs(dx)) <= refine_limit*maxval(abs(x))
+            if (step >= 2 .and. converged) exit refinement
         end do refinement
-        if (present(accurate)) accurate = fac%nu == 0 .or. &
-                                          maxval(abs(dx)) <= refine_limit*maxval(abs(x))
+        if (present(accurate)) accurate = fac%nu == 0 .or. converged
         if (.not. all(abs(x) <= huge(1.0_dp))) then
             call new_error(err, EXIT_ANALYSIS, 'the contact system is numerically singular '// &
                            '(non-finite solution)')
