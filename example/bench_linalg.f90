@@ -1,7 +1,8 @@
 !> bench_linalg: time per phase of the default (Newton) solve of one deck at several N_e
 !! (issue 7 item 2). Not a test: it measures.
 !!
-!!     OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 fpm run --profile release --example bench_linalg -- \
+!!     OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
+!!         fpm run --profile release --example bench_linalg -- \
 !!         input/plate_nondim.dat 20 100 320 1000
 !!
 !! Phases (processor time, least of repeated runs for small cases): assembly of T; of K and M;
@@ -42,7 +43,8 @@ program bench_linalg
     if (allocated(err)) error stop 'cannot build the case'
     write (*, '(a)') '# deck: '//trim(path)
     write (*, '(a)') '|   N_e |     n |  nr | T s | K,M s | build s | solve_contact s | '// &
-        'iterations s | solves | factorisations | dense final factorisation s | iterations / dense | '// &
+        'iterations s | solves | factorisations | dense final factorisation s | '// &
+        'iterations / dense | '// &
         'Schur setup s (K_ii band, S0) | Schur final factorisation s | iterations / Schur |'
     write (*, '(a)') '|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|'
     do i = 2, command_argument_count()

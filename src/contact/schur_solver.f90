@@ -212,6 +212,10 @@ contains
             j2 = min(sc%nk, j1 + block_columns - 1)
             w(:, 1:j2 - j1 + 1) = sys%a0(sc%inner, sc%kept(j1:j2))
             call dpbtrs('L', sc%ni, sc%kd, j2 - j1 + 1, sc%kband, sc%kd + 1, w, sc%ni, info)
+            if (info /= 0) then      ! an illegal argument: keep the dense path
+                sc%ready = .false.
+                return
+            end if
             columns: do j = j1, j2
                 nonzeros: do k = 1, size(sc%c_val)
                     sc%s0(sc%c_col(k), j) = sc%s0(sc%c_col(k), j) &
@@ -480,6 +484,11 @@ contains
         character(len=80) :: text
         y = reshape(b(sc%inner), [sc%ni, 1])
         call dpbtrs('L', sc%ni, sc%kd, 1, sc%kband, sc%kd + 1, y, sc%ni, info)
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
         g = reshape(b(sc%kept), [sc%nk, 1])
         do k = 1, size(sc%c_val)
             g(sc%c_col(k), 1) = g(sc%c_col(k), 1) - sc%c_val(k)*y(sc%c_row(k), 1)
@@ -501,6 +510,11 @@ contains
             y(sc%c_row(k), 1) = y(sc%c_row(k), 1) - sc%c_val(k)*g(sc%c_col(k), 1)
         end do
         call dpbtrs('L', sc%ni, sc%kd, 1, sc%kband, sc%kd + 1, y, sc%ni, info)
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
         x = b
         x(sc%inner) = y(:, 1)
         x(sc%kept) = g(:, 1)
