@@ -60,6 +60,9 @@ module schur_solver
         real(dp), allocatable :: w(:, :)     !! S_base^-1 E (nk x nu)
         real(dp), allocatable :: cap(:, :)   !! LU of the capacitance I + D E^T W
         integer, allocatable :: cap_ipiv(:)
+        real(dp), allocatable :: w_cache(:, :)  !! columns S_base^-1 e_p computed so far
+        integer, allocatable :: cache_col(:)    !! kept position p -> its column (0: none)
+        integer :: n_cached = 0
     end type schur_factor_t
 
     integer, parameter :: block_columns = 64  !! columns of C per banded solve in new_schur
@@ -346,12 +349,7 @@ contains
         fac%dmat = 0.0_dp
         call add_changed(st, changed, sc%pos, local, 1.0_dp, fac%dmat)
         call add_changed(fac%base, changed, sc%pos, local, -1.0_dp, fac%dmat)
-        allocate (fac%w(sc%nk, fac%nu))
-        fac%w = 0.0_dp
-        do j = 1, fac%nu
-            fac%w(fac%upos(j), j) = 1.0_dp
-        end do
-        call kept_solve(fac, fac%w, err)
+        call cached_columns(fac, err)
         fac%cap = matmul(fac%dmat, fac%w(fac%upos, :))
         do j = 1, fac%nu
             fac%cap(j, j) = fac%cap(j, j) + 1.0_dp
@@ -363,6 +361,42 @@ contains
             refactorise = .true.
         end if
     end subroutine low_rank_update
+
+    !> W = S_base^-1 E from the columns computed for earlier updates of the same base, the
+    !! missing ones by one multi-column solve (the sets of later Newton steps overlap).
+    subroutine cached_columns(fac, err)
+        type(schur_factor_t), intent(inout) :: fac
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: fresh(:, :)
+        integer, allocatable :: missing(:)
+        integer :: nk, j, capacity
+        nk = size(fac%lu, 1)
+        capacity = min(nk, 3*nk/update_fraction(2))
+        if (.not. allocated(fac%cache_col)) then
+            allocate (fac%cache_col(nk), fac%w_cache(nk, max(capacity, fac%nu)))
+            fac%cache_col = 0
+            fac%n_cached = 0
+        end if
+        missing = pack(fac%upos, fac%cache_col(fac%upos) == 0)
+        if (fac%n_cached + size(missing) > size(fac%w_cache, 2)) then
+            fac%cache_col = 0
+            fac%n_cached = 0
+            missing = fac%upos
+        end if
+        allocate (fresh(nk, size(missing)))
+        fresh = 0.0_dp
+        do j = 1, size(missing)
+            fresh(missing(j), j) = 1.0_dp
+        end do
+        if (size(missing) > 0) call kept_solve(fac, fresh, err)
+        if (allocated(err)) return
+        do j = 1, size(missing)
+            fac%n_cached = fac%n_cached + 1
+            fac%w_cache(:, fac%n_cached) = fresh(:, j)
+            fac%cache_col(missing(j)) = fac%n_cached
+        end do
+        fac%w = fac%w_cache(:, fac%cache_col(fac%upos))
+    end subroutine cached_columns
 
     !> Kept positions of the entries of the changed points, appended to upos once each
     !! (local: position -> index in upos).
