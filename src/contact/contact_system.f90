@@ -59,7 +59,9 @@ module contact_system
         type(iteration_record_t), allocatable :: history(:)
         character(len=8) :: method = ''      !! NEWTON or TWOLOOP
         integer :: n_outer = 0, n_inner = 0
-        integer :: n_solves = 0              !! linear solves (factorisations) of the case
+        integer :: n_solves = 0              !! linear solves of the case
+        integer :: n_factorisations = 0      !! matrix factorisations among them (Newton: the
+                                             !! others reuse one by a low-rank update)
         real(dp) :: residual(2) = 0.0_dp     !! relative residuals of equations 4.2a, 4.2b
         real(dp) :: law_residual = 0.0_dp    !! 4.2b of the complete problem as a traction error
         real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)
@@ -89,11 +91,24 @@ module contact_system
                                                    !! translations of the structure (K t = 0)
         integer :: psi_range(2) = 0          !! beam: psi unknowns (rigid rotation psi = 1 ...)
         real(dp), allocatable :: rotation_w(:)  !! ... with w = x: its w coefficients
+        integer :: nv = 0                    !! displacement unknowns
+        integer, allocatable :: sp_ptr(:)    !! a0 outside its traction-traction block (K, M,
+        integer, allocatable :: sp_row(:)    !! M^T: sparse) by columns (sparse_blocks):
+        real(dp), allocatable :: sp_val(:)   !! entries sp_ptr(j):sp_ptr(j+1)-1
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
-    public :: jacobian_diagonal, linear_part
+    public :: jacobian_diagonal, linear_part, set_terms, a0_times
+
+    !> Set-dependent entries of the Jacobian (global unknown numbers).
+    type, public :: set_terms_t
+        integer :: n = 0                     !! entries in use
+        integer, allocatable :: first(:)     !! contact point p has entries first(p):first(p+1)-1
+        integer, allocatable :: row(:), col(:)
+        real(dp), allocatable :: val(:)
+        logical :: symmetric = .true.        !! no d tau0/d sigma_z block
+    end type set_terms_t
 
 contains
 
@@ -144,7 +159,69 @@ contains
             sys%row_scale(i) = 1.0_dp
             if (sys%a0(i, i) /= 0.0_dp) sys%row_scale(i) = 1.0_dp/sqrt(abs(sys%a0(i, i)))
         end do
+        call sparse_blocks(nv, sys)
     end subroutine build_system
+
+    !> The nonzeros of a0 outside its dense traction-traction block, by columns (a0 is read
+    !! down its columns, as stored): sparse column j <= n holds the displacement rows of
+    !! column j (K, M^T), column n + j (j <= nv) the traction rows of column j (M).
+    subroutine sparse_blocks(nv, sys)
+        integer, intent(in) :: nv
+        type(system_t), intent(inout) :: sys
+        integer :: j, n, pass, nnz
+        n = size(sys%a0, 1)
+        sys%nv = nv
+        allocate (sys%sp_ptr(n + nv + 1))
+        passes: do pass = 1, 2      ! count, then fill
+            nnz = 0
+            do j = 1, n
+                call gather(j, 1, nv)
+            end do
+            do j = 1, nv
+                call gather(j, nv + 1, n)
+                sys%sp_ptr(n + j + 1) = nnz + 1
+            end do
+            if (pass == 1) allocate (sys%sp_row(nnz), sys%sp_val(nnz))
+        end do passes
+    contains
+        !> Nonzeros of a0(i1:i2, j); the pointer of the sparse column.
+        subroutine gather(j, i1, i2)
+            integer, intent(in) :: j, i1, i2
+            integer :: i
+            if (i1 == 1) sys%sp_ptr(j) = nnz + 1
+            if (i1 > 1) sys%sp_ptr(n + j) = nnz + 1
+            rows: do i = i1, i2
+                if (sys%a0(i, j) == 0.0_dp) cycle rows
+                nnz = nnz + 1
+                if (pass == 1) cycle rows
+                sys%sp_row(nnz) = i
+                sys%sp_val(nnz) = sys%a0(i, j)
+            end do rows
+        end subroutine gather
+    end subroutine sparse_blocks
+
+    !> a0 times x_top in the displacement rows and times x_bottom in the traction rows (the
+    !! sparse blocks, then the dense traction-traction block).
+    pure function a0_times(sys, x_top, x_bottom) result(y)
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: x_top(:), x_bottom(:)
+        real(dp) :: y(size(x_top))
+        integer :: j, n, nv
+        n = size(y)
+        nv = sys%nv
+        y = 0.0_dp
+        y(nv + 1:) = matmul(sys%a0(nv + 1:, nv + 1:), x_bottom(nv + 1:))
+        top: do j = 1, n
+            associate (k1 => sys%sp_ptr(j), k2 => sys%sp_ptr(j + 1) - 1)
+                y(sys%sp_row(k1:k2)) = y(sys%sp_row(k1:k2)) + sys%sp_val(k1:k2)*x_top(j)
+            end associate
+        end do top
+        bottom: do j = 1, nv
+            associate (k1 => sys%sp_ptr(n + j), k2 => sys%sp_ptr(n + j + 1) - 1)
+                y(sys%sp_row(k1:k2)) = y(sys%sp_row(k1:k2)) + sys%sp_val(k1:k2)*x_bottom(j)
+            end associate
+        end do bottom
+    end function a0_times
 
     !> The law with regularisation eps_bar = eps, penalty parameter eta_bar = eta.
     pure function new_law(m, c, eps, eta) result(law)
@@ -279,7 +356,8 @@ contains
     end subroutine complete_residual
 
     !> The generalised Jacobian of F at the tractions sigma (sets decided there by
-    !! interface_law). symmetric is false when the d tau0/d sigma_z block is present.
+    !! interface_law): A0 plus the set-dependent entries of set_terms, fixed unknowns with
+    !! identity rows and columns. symmetric is false when the d tau0/d sigma_z block is present.
     pure subroutine complete_jacobian(d, sys, law, pts, sigma, a, symmetric)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
@@ -288,33 +366,73 @@ contains
         real(dp), intent(in) :: sigma(:, :)
         real(dp), allocatable, intent(out) :: a(:, :)
         logical, intent(out) :: symmetric
-        real(dp) :: tau0, coupling
-        integer :: p, i
+        type(set_terms_t) :: st
+        integer :: i
         a = sys%a0
-        symmetric = .true.
-        points: do p = 1, pts%n
-            if (law%eps /= sys%law%eps) &
-                call add_point_mass(pts, p, 1, -sys%c*(law%eps - sys%law%eps), a)
-            if (in_tension(sigma(2, p))) call add_point_mass(pts, p, 2, -law%penalty, a)
-            tau0 = friction_threshold(law%f, sigma(2, p))
-            if (.not. is_slipping(sigma(1, p), tau0)) cycle points
-            call add_point_mass(pts, p, 1, -law%slip, a)
-            coupling = law%slip*sign(1.0_dp, sigma(1, p))*threshold_slope(law%f, sigma(2, p))
-            if (coupling == 0.0_dp) cycle points
-            symmetric = .false.
-            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
-                do i = 1, pts%nl(2)
-                    a(ix, iz(i)) = a(ix, iz(i)) + coupling*pts%wt(p) &
-                                   *pts%val(1:pts%nl(1), 1, p)*pts%val(i, 2, p)
-                end do
-            end associate
-        end do points
+        call set_terms(sys, law, pts, sigma, st)
+        symmetric = st%symmetric
+        entries: do i = 1, st%n
+            a(st%row(i), st%col(i)) = a(st%row(i), st%col(i)) + st%val(i)
+        end do entries
         do i = 1, size(d%fixed)
             a(d%fixed(i), :) = 0.0_dp
             a(:, d%fixed(i)) = 0.0_dp
             a(d%fixed(i), d%fixed(i)) = 1.0_dp
         end do
     end subroutine complete_jacobian
+
+    !> The set-dependent entries of the Jacobian at the tractions sigma, as (row, col, value)
+    !! triplets on the traction unknowns (duplicates add): the eps_bar of a continuation stage
+    !! where it differs from the deck's, the penalty on the tension set, the slip terms and
+    !! d tau0/d sigma_z on the slip set. All live on the interface's Gauss points.
+    pure subroutine set_terms(sys, law, pts, sigma, st)
+        type(system_t), intent(in) :: sys
+        type(law_t), intent(in) :: law
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        type(set_terms_t), intent(out) :: st
+        real(dp) :: tau0, coupling
+        integer :: p, nx, nz
+        nx = pts%nl(1)
+        nz = pts%nl(2)
+        allocate (st%row(pts%n*(2*nx*nx + nz*nz + nx*nz)))
+        allocate (st%col(size(st%row)), st%val(size(st%row)))
+        allocate (st%first(pts%n + 1))
+        st%n = 0
+        st%symmetric = .true.
+        points: do p = 1, pts%n
+            st%first(p) = st%n + 1
+            if (law%eps /= sys%law%eps) &
+                call add_point_entries(pts, p, 1, 1, -sys%c*(law%eps - sys%law%eps), st)
+            if (in_tension(sigma(2, p))) call add_point_entries(pts, p, 2, 2, -law%penalty, st)
+            tau0 = friction_threshold(law%f, sigma(2, p))
+            if (.not. is_slipping(sigma(1, p), tau0)) cycle points
+            call add_point_entries(pts, p, 1, 1, -law%slip, st)
+            coupling = law%slip*sign(1.0_dp, sigma(1, p))*threshold_slope(law%f, sigma(2, p))
+            if (coupling == 0.0_dp) cycle points
+            st%symmetric = .false.
+            call add_point_entries(pts, p, 1, 2, coupling, st)
+        end do points
+        st%first(pts%n + 1) = st%n + 1
+    end subroutine set_terms
+
+    !> Triplets factor * wt g_i h_j at contact point p, g of traction field kr (1: x, 2: z)
+    !! in the rows, h of field kc in the columns.
+    pure subroutine add_point_entries(pts, p, kr, kc, factor, st)
+        type(contact_points_t), intent(in) :: pts
+        integer, intent(in) :: p, kr, kc
+        real(dp), intent(in) :: factor
+        type(set_terms_t), intent(inout) :: st
+        integer :: i, j
+        columns: do j = 1, pts%nl(kc)
+            rows: do i = 1, pts%nl(kr)
+                st%n = st%n + 1
+                st%row(st%n) = pts%idx(i, kr, p)
+                st%col(st%n) = pts%idx(j, kc, p)
+                st%val(st%n) = factor*pts%wt(p)*pts%val(i, kr, p)*pts%val(j, kc, p)
+            end do rows
+        end do columns
+    end subroutine add_point_entries
 
     !> A0 z, with K applied to v less its rigid-body part (beam: the rotation w = x, psi = 1 by
     !! the mean psi; then the translations of w, and of u_s for the beam, by their first
@@ -326,9 +444,7 @@ contains
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: z(:)
         real(dp) :: lin(d%n)
-        lin(1:d%nv) = matmul(sys%a0(1:d%nv, 1:d%nv), flexible_part(sys, z(1:d%nv))) &
-                      + matmul(sys%a0(1:d%nv, d%nv + 1:), z(d%nv + 1:))
-        lin(d%nv + 1:) = matmul(sys%a0(d%nv + 1:, :), z)
+        lin = a0_times(sys, [flexible_part(sys, z(1:d%nv)), z(d%nv + 1:)], z)
     end function linear_part
 
     !> v less its rigid-body part, which K annihilates.

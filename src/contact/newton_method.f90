@@ -30,10 +30,13 @@ module newton_method
     use model, only: model_t
     use discretization, only: discretization_t
     use linear_solve, only: solve_equilibrated
+    use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve, &
+                            schur_factorise
     use contact_system, only: solution_t, system_t, law_t, iteration_record_t, new_law, &
                               contact_points_t, &
                               point_tractions, complete_residual, complete_jacobian, &
-                              jacobian_diagonal, relative_change, linear_part
+                              jacobian_diagonal, relative_change, linear_part, &
+                              set_terms_t, set_terms
     use interface_law, only: friction_threshold, in_tension, is_slipping
     implicit none
     private
@@ -77,31 +80,49 @@ contains
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_start(:)
+        type(schur_t) :: sc
+        type(schur_factor_t) :: fac
         logical :: converged
         sol%method = 'NEWTON'
-        call adhesive_start(d, sys, sol, err)
+        call new_schur(d, sys, sc)
+        call adhesive_start(d, sys, sc, fac, sol, err)
         if (allocated(err)) return
         z_start = sol%z
-        call newton_stage(d, sys, sys%law, 1, min(plain_limit, m%max_inner), .false., sol, &
-                          converged, err)
+        call newton_stage(d, sys, sc, fac, sys%law, 1, min(plain_limit, m%max_inner), &
+                          .false., sol, converged, err)
         if (allocated(err) .or. converged) return
         call log_note(sol, 'plain Newton stalled: continuation')
         sol%z = z_start
-        call continuation(m, d, sys, sol, err)
+        call continuation(m, d, sys, sc, fac, sol, err)
     end subroutine solve_newton
 
     !> Bonded bilateral contact: A0 z = [q; 0], one symmetric solve.
-    subroutine adhesive_start(d, sys, sol, err)
+    subroutine adhesive_start(d, sys, sc, fac, sol, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac   !! the factorised Schur complement
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :), rhs(:)
+        type(set_terms_t) :: none
+        logical :: factorised
         integer :: i
-        a = sys%a0
         allocate (rhs(d%n))
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q
+        rhs(d%fixed) = 0.0_dp
+        if (sc%ready) then
+            allocate (none%first(sol%pts%n + 1), none%row(0), none%col(0), none%val(0))
+            none%first = 1
+            call schur_prepare(sc, none, fac, factorised, err)
+            if (.not. allocated(err)) call schur_solve(sys, sc, none, fac, rhs, sol%z, err)
+            if (allocated(err)) return
+            sol%n_solves = sol%n_solves + 1
+            sol%n_factorisations = sol%n_factorisations + 1
+            return
+        end if
+        a = sys%a0
         do i = 1, size(d%fixed)
             a(d%fixed(i), :) = 0.0_dp
             a(:, d%fixed(i)) = 0.0_dp
@@ -111,14 +132,17 @@ contains
         call solve_equilibrated(a, rhs, sol%z, .true., err)
         if (allocated(err)) return
         sol%n_solves = sol%n_solves + 1
+        sol%n_factorisations = sol%n_factorisations + 1
     end subroutine adhesive_start
 
     !> Stages s = top_level .. 0 (eps_bar, eta_bar times 10^s) from sol%z; a stage that fails
     !! is retried from the last converged one with half the decrement.
-    subroutine continuation(m, d, sys, sol, err)
+    subroutine continuation(m, d, sys, sc, fac, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_good(:)
@@ -133,8 +157,8 @@ contains
         stage = 1
         stages: do
             stage = stage + 1
-            call newton_stage(d, sys, stage_law(m, sys, level), stage, m%max_inner, .true., &
-                              sol, converged, err)
+            call newton_stage(d, sys, sc, fac, stage_law(m, sys, level), stage, m%max_inner, &
+                              .true., sol, converged, err)
             if (allocated(err)) return
             if (converged) then
                 if (level <= 0.0_dp) return
@@ -170,9 +194,12 @@ contains
     !! the merit below the best point's, the iteration returns to that point and takes the
     !! exact line-search step along the direction computed there (so the merit decreases at
     !! least every watchdog + 1 steps, and a cycle of set patterns cannot repeat).
-    subroutine newton_stage(d, sys, law, stage, max_iter, patient, sol, converged, err)
+    subroutine newton_stage(d, sys, sc, fac, law, stage, max_iter, patient, sol, converged, &
+                            err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac
         type(law_t), intent(in) :: law
         integer, intent(in) :: stage, max_iter
         logical, intent(in) :: patient     !! else give up when the watchdog first runs out
@@ -192,7 +219,7 @@ contains
                     <= refine_tol*maxval(abs(sys%q))
         iterations: do iter = 1, max_iter
             if (converged) exit iterations
-            call newton_direction(d, sys, law, sol, s%res, dz, err)
+            call newton_direction(d, sys, sc, fac, law, sol, s%res, dz, err)
             if (allocated(err)) return
             if (s%relaxed == 0) s%dz_best = dz
             z_old = sol%z
@@ -241,22 +268,40 @@ contains
         s%seen(:, 1) = set_pattern(law, point_tractions(sol%pts, sol%z))
     end subroutine start_state
 
-    !> The generalised Newton direction J dz = -F at sol%z (one linear solve).
-    subroutine newton_direction(d, sys, law, sol, res, dz, err)
+    !> The generalised Newton direction J dz = -F at sol%z (one linear solve): by the Schur
+    !! complement onto the tractions (schur_solver) when it is ready, else dense.
+    subroutine newton_direction(d, sys, sc, fac, law, sol, res, dz, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(inout) :: fac  !! kept across steps: low-rank updates
         type(law_t), intent(in) :: law
         type(solution_t), intent(inout) :: sol
         real(dp), intent(in) :: res(:)
         real(dp), allocatable, intent(out) :: dz(:)
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :)
-        logical :: symmetric
+        type(set_terms_t) :: st
+        logical :: symmetric, factorised, accurate
         allocate (dz(d%n))
-        call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
-                               symmetric)
-        call solve_equilibrated(a, -res, dz, symmetric, err)
+        factorised = .true.
+        if (sc%ready) then
+            call set_terms(sys, law, sol%pts, point_tractions(sol%pts, sol%z), st)
+            call schur_prepare(sc, st, fac, factorised, err)
+            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err, accurate)
+            if (.not. (allocated(err) .or. accurate)) then
+                ! the low-rank update lost accuracy: factorise this step's matrix
+                call schur_factorise(sc, st, fac, err)
+                factorised = .true.
+                if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err)
+            end if
+        else
+            call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
+                                   symmetric)
+            call solve_equilibrated(a, -res, dz, symmetric, err)
+        end if
         if (allocated(err)) return
+        if (factorised) sol%n_factorisations = sol%n_factorisations + 1
         sol%n_solves = sol%n_solves + 1
         sol%n_inner = sol%n_inner + 1
     end subroutine newton_direction

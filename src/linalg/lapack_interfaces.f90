@@ -3,7 +3,7 @@ module lapack_interfaces
     use kinds, only: dp
     implicit none
     private
-    public :: dsytrf, dsytrs, dpotrf, dlansy, dgesv, dgetrs
+    public :: dsytrf, dsytrs, dpotrf, dlansy, dgesv, dgetrs, dgetrf, dpbtrf, dpbtrs
 
     interface
         subroutine dsytrf(uplo, n, a, lda, ipiv, work, lwork, info)
@@ -52,6 +52,31 @@ module lapack_interfaces
             real(dp), intent(inout) :: b(ldb, *)
             integer, intent(out) :: info
         end subroutine dgetrs
+
+        subroutine dgetrf(m, n, a, lda, ipiv, info)
+            import :: dp
+            integer, intent(in) :: m, n, lda
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: ipiv(*)
+            integer, intent(out) :: info
+        end subroutine dgetrf
+
+        subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, kd, ldab
+            real(dp), intent(inout) :: ab(ldab, *)
+            integer, intent(out) :: info
+        end subroutine dpbtrf
+
+        subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, kd, nrhs, ldab, ldb
+            real(dp), intent(in) :: ab(ldab, *)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine dpbtrs
 
         function dlansy(norm, uplo, n, a, lda, work)
             import :: dp

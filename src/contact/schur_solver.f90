@@ -1,0 +1,574 @@
+!> Newton steps by a Schur complement onto the traction unknowns (issue 7 item 2).
+!!
+!! The Jacobian of the complete problem is J = [K M^T; M B(sets)]: K (the structure) is
+!! banded and constant, M constant, and only B = -(T + c eps0 S0) + (set terms at the
+!! interface's Gauss points) changes between Newton steps. K is singular (the rigid-body modes
+!! of the structure: w = const; for the beam also u = const and the rotation psi = 1, w = x),
+!! so a few "pinned" displacement unknowns that fix those modes (plate: the first w; beam: the
+!! first u, first and last w) are kept with the tractions, and the other displacement
+!! unknowns ("inner", ordered node by node so that their K block is banded) are eliminated
+!! once per case:
+!!   S0 = J(kept, kept) - J(kept, inner) K_ii^-1 J(inner, kept),
+!! with K_ii = L L^T by banded Cholesky (dpbtrf). K annihilates the rigid-body modes, which
+!! the pinned unknowns span, so the pinned-pinned block of S0 is zero (set exactly: computed,
+!! it would be round-off of eps |K|, large for a stiff structure). The pinned rows of S0 carry
+!! the load-compatibility constraint (the structure's rigid-body equilibrium).
+!! Each Newton step then adds the set terms to S0 and factorises the kept block only (LDL^T
+!! when symmetric, else LU, after the symmetric diagonal scaling), about (nr/n)^3 of the
+!! flops of factorising J; v follows by two banded solves. Two steps of iterative refinement
+!! with the complete J, as the dense solves do.
+module schur_solver
+    use kinds, only: dp
+    use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
+    use model, only: FIELD_U, FIELD_PSI
+    use discretization, only: discretization_t
+    use contact_system, only: system_t, set_terms_t, a0_times
+    use lapack_interfaces, only: dpbtrf, dpbtrs, dsytrf, dsytrs, dgetrf, dgetrs
+    implicit none
+    private
+
+    !> The set-independent part of the reduction, built once per case.
+    type, public :: schur_t
+        logical :: ready = .false.           !! else: solve with the complete dense J
+        integer :: ni = 0                    !! eliminated (inner) displacement unknowns
+        integer :: nk = 0                    !! kept unknowns: pinned, then free tractions
+        integer :: n_pinned = 0
+        integer :: kd = 0                    !! half bandwidth of K_ii in the inner order
+        integer, allocatable :: inner(:)     !! global numbers of the inner unknowns
+        integer, allocatable :: kept(:)      !! global numbers of the kept unknowns
+        integer, allocatable :: pos(:)       !! global -> position in kept (0: not kept)
+        logical, allocatable :: fixed(:)     !! global: a constrained unknown (z_i = 0 rows)
+        real(dp), allocatable :: kband(:, :) !! Cholesky factor of K_ii, LAPACK band storage
+        real(dp), allocatable :: s0(:, :)    !! constant Schur complement (nk x nk)
+        integer, allocatable :: c_row(:)     !! nonzeros of C = J(inner, kept): inner position,
+        integer, allocatable :: c_col(:)     !! kept position,
+        real(dp), allocatable :: c_val(:)    !! value (J is symmetric there: J(kept, inner) = C^T)
+    end type schur_t
+
+    !> The kept block of one Newton step: S0 + base set terms factorised, and the low-rank
+    !! change to the present set terms (Woodbury): S = S_base + E D E^T, E the columns of the
+    !! identity at the kept unknowns of the contact points whose terms changed.
+    type, public :: schur_factor_t
+        real(dp), allocatable :: lu(:, :)    !! LDL^T or LU factors of the scaled S_base
+        real(dp), allocatable :: scale(:)    !! 1/sqrt|diagonal| (1 where 0)
+        integer, allocatable :: ipiv(:)
+        logical :: symmetric = .true.        !! S_base symmetric: LDL^T, else LU
+        type(set_terms_t) :: base            !! the set terms in S_base
+        integer :: nu = 0                    !! rank of the update (0: S = S_base)
+        integer, allocatable :: upos(:)      !! kept positions touched by the change
+        real(dp), allocatable :: dmat(:, :)  !! D (nu x nu)
+        real(dp), allocatable :: w(:, :)     !! S_base^-1 E (nk x nu)
+        real(dp), allocatable :: cap(:, :)   !! LU of the capacitance I + D E^T W
+        integer, allocatable :: cap_ipiv(:)
+        real(dp), allocatable :: w_cache(:, :)  !! columns S_base^-1 e_p computed so far
+        integer, allocatable :: cache_col(:)    !! kept position p -> its column (0: none)
+        integer :: n_cached = 0
+    end type schur_factor_t
+
+    integer, parameter :: block_columns = 64  !! columns of C per banded solve in new_schur
+
+    !> Low-rank update while its rank u <= nk / this: the update costs u solves with the base
+    !! factors (2 nk^2 u flops; BLAS 3 for LU, BLAS 2 in LAPACK's LDL^T solve), a new
+    !! factorisation 2/3 nk^3 (LU) or 1/3 nk^3 (LDL^T).
+    integer, parameter :: update_fraction(2) = [20, 5]   !! base LDL^T, LU
+
+    public :: new_schur, schur_factorise, schur_prepare, schur_solve
+
+contains
+
+    !> Order, factorise K_ii and form S0. sc%ready stays false (dense fallback) when K_ii is
+    !! not positive definite (no rigid-body description of the structure fits).
+    subroutine new_schur(d, sys, sc)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(out) :: sc
+        integer, allocatable :: pinned(:)
+        integer :: i
+        allocate (sc%fixed(d%n))
+        sc%fixed = .false.
+        sc%fixed(d%fixed) = .true.
+        pinned = pinned_unknowns(sys)
+        if (any(sc%fixed(pinned))) return
+        sc%n_pinned = size(pinned)
+        sc%inner = inner_order(d, sc%fixed, pinned)
+        sc%ni = size(sc%inner)
+        sc%kept = [pinned, pack([(i, i=d%nv + 1, d%n)], .not. sc%fixed(d%nv + 1:d%n))]
+        sc%nk = size(sc%kept)
+        allocate (sc%pos(d%n))
+        sc%pos = 0
+        sc%pos(sc%kept) = [(i, i=1, sc%nk)]
+        if (sc%ni == 0) return
+        call factorise_inner(sys, sc)
+        if (.not. sc%ready) return
+        call coupling_nonzeros(sys, sc)
+        call form_s0(sys, sc)
+    end subroutine new_schur
+
+    !> Displacement unknowns that fix the rigid-body modes: the first of each translation
+    !! range (w; beam: u_s), and for the beam the last w (with the first, the rotation).
+    pure function pinned_unknowns(sys) result(pinned)
+        type(system_t), intent(in) :: sys
+        integer, allocatable :: pinned(:)
+        pinned = sys%translation(1, :)
+        if (allocated(sys%rotation_w)) pinned = [pinned, sys%translation(2, 1)]
+    end function pinned_unknowns
+
+    !> The free, unpinned displacement unknowns node by node: the fields u_s, w, psi merged
+    !! by relative position in their own numbering (each field's coefficients are ordered
+    !! along the mesh), which makes K_ii banded.
+    pure function inner_order(d, fixed, pinned) result(order)
+        type(discretization_t), intent(in) :: d
+        logical, intent(in) :: fixed(:)
+        integer, intent(in) :: pinned(:)
+        integer, allocatable :: order(:)
+        integer :: next(FIELD_U:FIELD_PSI), f, pick, k
+        real(dp) :: key, best
+        allocate (order(d%nv))
+        next = 1
+        k = 0
+        merge_fields: do
+            pick = 0
+            best = huge(1.0_dp)
+            do f = FIELD_U, FIELD_PSI
+                if (next(f) > d%basis(f)%n_dof) cycle
+                key = real(next(f) - 1, dp)/real(max(d%basis(f)%n_dof - 1, 1), dp)
+                if (key < best) then
+                    best = key
+                    pick = f
+                end if
+            end do
+            if (pick == 0) exit merge_fields
+            k = k + 1
+            order(k) = d%offset(pick) + next(pick)
+            next(pick) = next(pick) + 1
+        end do merge_fields
+        order = pack(order(1:k), .not. (fixed(order(1:k)) .or. in_list(order(1:k), pinned)))
+    end function inner_order
+
+    !> Element-wise: x(i) is one of list.
+    pure function in_list(x, list) result(found)
+        integer, intent(in) :: x(:), list(:)
+        logical :: found(size(x))
+        integer :: i
+        do i = 1, size(x)
+            found(i) = any(list == x(i))
+        end do
+    end function in_list
+
+    !> K_ii in band storage (half bandwidth from its nonzeros) and its Cholesky factor.
+    subroutine factorise_inner(sys, sc)
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(inout) :: sc
+        integer :: i, j, info
+        sc%kd = 0
+        columns: do j = 1, sc%ni
+            do i = sc%ni, j + sc%kd + 1, -1
+                if (sys%a0(sc%inner(i), sc%inner(j)) /= 0.0_dp) then
+                    sc%kd = i - j
+                    cycle columns
+                end if
+            end do
+        end do columns
+        allocate (sc%kband(sc%kd + 1, sc%ni))
+        sc%kband = 0.0_dp
+        do j = 1, sc%ni
+            do i = j, min(sc%ni, j + sc%kd)
+                sc%kband(1 + i - j, j) = sys%a0(sc%inner(i), sc%inner(j))
+            end do
+        end do
+        call dpbtrf('L', sc%ni, sc%kd, sc%kband, sc%kd + 1, info)
+        sc%ready = info == 0
+    end subroutine factorise_inner
+
+    !> The nonzeros of C = J(inner, kept) (M^T and the K coupling to the pinned unknowns).
+    subroutine coupling_nonzeros(sys, sc)
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(inout) :: sc
+        integer :: i, l, nnz
+        nnz = 0
+        do l = 1, sc%nk
+            nnz = nnz + count(sys%a0(sc%inner, sc%kept(l)) /= 0.0_dp)
+        end do
+        allocate (sc%c_row(nnz), sc%c_col(nnz), sc%c_val(nnz))
+        nnz = 0
+        kept_columns: do l = 1, sc%nk
+            inner_rows: do i = 1, sc%ni
+                if (sys%a0(sc%inner(i), sc%kept(l)) == 0.0_dp) cycle inner_rows
+                nnz = nnz + 1
+                sc%c_row(nnz) = i
+                sc%c_col(nnz) = l
+                sc%c_val(nnz) = sys%a0(sc%inner(i), sc%kept(l))
+            end do inner_rows
+        end do kept_columns
+    end subroutine coupling_nonzeros
+
+    !> S0 = J(kept, kept) - C^T K_ii^-1 C, block_columns columns at a time; the pinned-pinned
+    !! block exactly 0.
+    subroutine form_s0(sys, sc)
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(inout) :: sc
+        real(dp), allocatable :: w(:, :)
+        integer :: j1, j2, j, k, info
+        sc%s0 = sys%a0(sc%kept, sc%kept)
+        allocate (w(sc%ni, block_columns))
+        blocks: do j1 = 1, sc%nk, block_columns
+            j2 = min(sc%nk, j1 + block_columns - 1)
+            w(:, 1:j2 - j1 + 1) = sys%a0(sc%inner, sc%kept(j1:j2))
+            call dpbtrs('L', sc%ni, sc%kd, j2 - j1 + 1, sc%kband, sc%kd + 1, w, sc%ni, info)
+            if (info /= 0) then      ! an illegal argument: keep the dense path
+                sc%ready = .false.
+                return
+            end if
+            columns: do j = j1, j2
+                nonzeros: do k = 1, size(sc%c_val)
+                    sc%s0(sc%c_col(k), j) = sc%s0(sc%c_col(k), j) &
+                                            - sc%c_val(k)*w(sc%c_row(k), j - j1 + 1)
+                end do nonzeros
+            end do columns
+        end do blocks
+        sc%s0(1:sc%n_pinned, 1:sc%n_pinned) = 0.0_dp
+    end subroutine form_s0
+
+    !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU).
+    subroutine schur_factorise(sc, st, fac, err)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        type(schur_factor_t), intent(out) :: fac
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: query(1)
+        real(dp), allocatable :: work(:)
+        integer :: i, r, c, info
+        character(len=160) :: text
+        fac%lu = sc%s0
+        fac%symmetric = st%symmetric
+        fac%base = st
+        fac%nu = 0
+        entries: do i = 1, st%n
+            r = sc%pos(st%row(i))
+            c = sc%pos(st%col(i))
+            if (r == 0 .or. c == 0) cycle entries
+            fac%lu(r, c) = fac%lu(r, c) + st%val(i)
+        end do entries
+        if (.not. all(fac%lu == fac%lu)) then
+            call new_error(err, EXIT_INTERNAL, 'schur_factorise: NaN in the system matrix')
+            return
+        end if
+        allocate (fac%scale(sc%nk), fac%ipiv(sc%nk))
+        do i = 1, sc%nk
+            fac%scale(i) = 1.0_dp
+            if (fac%lu(i, i) /= 0.0_dp) fac%scale(i) = 1.0_dp/sqrt(abs(fac%lu(i, i)))
+        end do
+        do i = 1, sc%nk
+            fac%lu(:, i) = fac%lu(:, i)*fac%scale*fac%scale(i)
+        end do
+        if (fac%symmetric) then
+            call dsytrf('L', sc%nk, fac%lu, sc%nk, fac%ipiv, query, -1, info)
+            allocate (work(max(1, int(query(1)))))
+            call dsytrf('L', sc%nk, fac%lu, sc%nk, fac%ipiv, work, size(work), info)
+        else
+            call dgetrf(sc%nk, sc%nk, fac%lu, sc%nk, fac%ipiv, info)
+        end if
+        if (info > 0) then
+            write (text, '(a,i0,a)') 'the contact system is singular (pivot ', info, &
+                ' of its Schur complement onto the tractions is 0): the structure is not '// &
+                'held (rigid-body motion)'
+            call new_error(err, EXIT_ANALYSIS, trim(text))
+        else if (info < 0) then
+            write (text, '(a,i0)') 'dsytrf/dgetrf: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+        end if
+    end subroutine schur_factorise
+
+    !> The kept block for the set terms st: a low-rank (Woodbury) update of the factorised
+    !! S_base when few contact points changed their terms since it was factorised (the sets
+    !! change little between Newton steps), else a new factorisation (factorised = .true.).
+    subroutine schur_prepare(sc, st, fac, factorised, err)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        type(schur_factor_t), intent(inout) :: fac
+        logical, intent(out) :: factorised
+        type(error_t), allocatable, intent(out) :: err
+        logical, allocatable :: changed(:)
+        factorised = .true.
+        if (allocated(fac%lu) .and. allocated(fac%base%first)) then
+            if (size(fac%base%first) == size(st%first)) then
+                changed = changed_points(fac%base, st)
+                call low_rank_update(sc, st, changed, fac, factorised)
+                if (.not. factorised) return
+            end if
+        end if
+        call schur_factorise(sc, st, fac, err)
+    end subroutine schur_prepare
+
+    !> Contact points whose set-term entries differ between a and b.
+    pure function changed_points(a, b) result(changed)
+        type(set_terms_t), intent(in) :: a, b
+        logical :: changed(size(a%first) - 1)
+        integer :: p, na, nb
+        points: do p = 1, size(changed)
+            na = a%first(p + 1) - a%first(p)
+            nb = b%first(p + 1) - b%first(p)
+            changed(p) = na /= nb
+            if (changed(p) .or. na == 0) cycle points
+            associate (ia => a%first(p), ib => b%first(p))
+                changed(p) = any(a%row(ia:ia + na - 1) /= b%row(ib:ib + nb - 1)) .or. &
+                             any(a%col(ia:ia + na - 1) /= b%col(ib:ib + nb - 1)) .or. &
+                             any(a%val(ia:ia + na - 1) /= b%val(ib:ib + nb - 1))
+            end associate
+        end do points
+    end function changed_points
+
+    !> D, W = S_base^-1 E and the factorised capacitance I + D W(U, :) for the changed
+    !! points; refactorise = .true. when the rank exceeds nk / update_fraction or the
+    !! capacitance is singular.
+    subroutine low_rank_update(sc, st, changed, fac, refactorise)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: changed(:)
+        type(schur_factor_t), intent(inout) :: fac
+        logical, intent(out) :: refactorise
+        type(error_t), allocatable :: err
+        integer, allocatable :: local(:)
+        integer :: j, info
+        refactorise = .true.
+        if (allocated(fac%dmat)) deallocate (fac%dmat)
+        if (allocated(fac%w)) deallocate (fac%w)
+        if (allocated(fac%cap)) deallocate (fac%cap)
+        if (allocated(fac%cap_ipiv)) deallocate (fac%cap_ipiv)
+        allocate (local(sc%nk))
+        local = 0
+        fac%nu = 0
+        fac%upos = [integer ::]
+        call touched(fac%base, changed, sc%pos, local, fac%upos)
+        call touched(st, changed, sc%pos, local, fac%upos)
+        if (size(fac%upos) > sc%nk/update_fraction(merge(1, 2, fac%symmetric))) return
+        fac%nu = size(fac%upos)
+        refactorise = .false.
+        if (fac%nu == 0) return
+        allocate (fac%dmat(fac%nu, fac%nu))
+        fac%dmat = 0.0_dp
+        call add_changed(st, changed, sc%pos, local, 1.0_dp, fac%dmat)
+        call add_changed(fac%base, changed, sc%pos, local, -1.0_dp, fac%dmat)
+        call cached_columns(fac, err)
+        fac%cap = matmul(fac%dmat, fac%w(fac%upos, :))
+        do j = 1, fac%nu
+            fac%cap(j, j) = fac%cap(j, j) + 1.0_dp
+        end do
+        allocate (fac%cap_ipiv(fac%nu))
+        call dgetrf(fac%nu, fac%nu, fac%cap, fac%nu, fac%cap_ipiv, info)
+        if (info /= 0 .or. allocated(err)) then
+            fac%nu = 0
+            refactorise = .true.
+        end if
+    end subroutine low_rank_update
+
+    !> W = S_base^-1 E from the columns computed for earlier updates of the same base, the
+    !! missing ones by one multi-column solve (the sets of later Newton steps overlap).
+    subroutine cached_columns(fac, err)
+        type(schur_factor_t), intent(inout) :: fac
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: fresh(:, :)
+        integer, allocatable :: missing(:)
+        integer :: nk, j, capacity
+        nk = size(fac%lu, 1)
+        capacity = min(nk, 3*nk/update_fraction(2))
+        if (.not. allocated(fac%cache_col)) then
+            allocate (fac%cache_col(nk), fac%w_cache(nk, max(capacity, fac%nu)))
+            fac%cache_col = 0
+            fac%n_cached = 0
+        end if
+        missing = pack(fac%upos, fac%cache_col(fac%upos) == 0)
+        if (fac%n_cached + size(missing) > size(fac%w_cache, 2)) then
+            fac%cache_col = 0
+            fac%n_cached = 0
+            missing = fac%upos
+        end if
+        allocate (fresh(nk, size(missing)))
+        fresh = 0.0_dp
+        do j = 1, size(missing)
+            fresh(missing(j), j) = 1.0_dp
+        end do
+        if (size(missing) > 0) call kept_solve(fac, fresh, err)
+        if (allocated(err)) return
+        do j = 1, size(missing)
+            fac%n_cached = fac%n_cached + 1
+            fac%w_cache(:, fac%n_cached) = fresh(:, j)
+            fac%cache_col(missing(j)) = fac%n_cached
+        end do
+        fac%w = fac%w_cache(:, fac%cache_col(fac%upos))
+    end subroutine cached_columns
+
+    !> Kept positions of the entries of the changed points, appended to upos once each
+    !! (local: position -> index in upos).
+    pure subroutine touched(st, changed, pos, local, upos)
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: changed(:)
+        integer, intent(in) :: pos(:)
+        integer, intent(inout) :: local(:)
+        integer, allocatable, intent(inout) :: upos(:)
+        integer :: p, i, k, q(2)
+        points: do p = 1, size(changed)
+            if (.not. changed(p)) cycle points
+            entries: do i = st%first(p), st%first(p + 1) - 1
+                q = [pos(st%row(i)), pos(st%col(i))]
+                do k = 1, 2
+                    if (q(k) == 0) cycle
+                    if (local(q(k)) /= 0) cycle
+                    upos = [upos, q(k)]
+                    local(q(k)) = size(upos)
+                end do
+            end do entries
+        end do points
+    end subroutine touched
+
+    !> dmat += factor * (entries of the changed points) in the local numbering.
+    pure subroutine add_changed(st, changed, pos, local, factor, dmat)
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: changed(:)
+        integer, intent(in) :: pos(:), local(:)
+        real(dp), intent(in) :: factor
+        real(dp), intent(inout) :: dmat(:, :)
+        integer :: p, i, r, c
+        points: do p = 1, size(changed)
+            if (.not. changed(p)) cycle points
+            entries: do i = st%first(p), st%first(p + 1) - 1
+                r = pos(st%row(i))
+                c = pos(st%col(i))
+                if (r == 0 .or. c == 0) cycle entries
+                dmat(local(r), local(c)) = dmat(local(r), local(c)) + factor*st%val(i)
+            end do entries
+        end do points
+    end subroutine add_changed
+
+    !> g = S_base^-1 g (columns) with the scaled factors.
+    subroutine kept_solve(fac, g, err)
+        type(schur_factor_t), intent(in) :: fac
+        real(dp), intent(inout) :: g(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: j, n, info
+        character(len=80) :: text
+        n = size(g, 1)
+        do j = 1, size(g, 2)
+            g(:, j) = g(:, j)*fac%scale
+        end do
+        if (fac%symmetric) then
+            call dsytrs('L', n, size(g, 2), fac%lu, n, fac%ipiv, g, n, info)
+        else
+            call dgetrs('N', n, size(g, 2), fac%lu, n, fac%ipiv, g, n, info)
+        end if
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dsytrs/dgetrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
+        do j = 1, size(g, 2)
+            g(:, j) = g(:, j)*fac%scale
+        end do
+    end subroutine kept_solve
+
+    !> Solve J x = b (J = A0 + set terms, fixed unknowns with identity rows) with the
+    !! factorised Schur complement; two steps of iterative refinement with J itself (with a
+    !! low-rank update in use: until a step changes x by at most refine_limit of max |x|, up
+    !! to max_update_steps; accurate is false if none did, and the caller factorises afresh).
+    subroutine schur_solve(sys, sc, st, fac, b, x, err, accurate)
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        type(schur_factor_t), intent(in) :: fac
+        real(dp), intent(in) :: b(:)
+        real(dp), intent(out) :: x(:)
+        type(error_t), allocatable, intent(out) :: err
+        logical, intent(out), optional :: accurate
+        real(dp), parameter :: refine_limit = 1.0e-10_dp
+        integer, parameter :: max_update_steps = 6
+        real(dp), allocatable :: dx(:)
+        logical :: converged
+        integer :: step
+        if (.not. all(b == b)) then
+            call new_error(err, EXIT_INTERNAL, 'schur_solve: NaN in the right-hand side')
+            return
+        end if
+        call apply_inverse(sc, fac, b, x, err)
+        if (allocated(err)) return
+        allocate (dx(size(x)))
+        converged = .false.
+        refinement: do step = 1, merge(2, max_update_steps, fac%nu == 0)
+            call apply_inverse(sc, fac, b - jacobian_times(sys, sc, st, x), dx, err)
+            if (allocated(err)) return
+            x = x + dx
+            converged = maxval(abs(dx)) <= refine_limit*maxval(abs(x))
+            if (step >= 2 .and. converged) exit refinement
+        end do refinement
+        if (present(accurate)) accurate = fac%nu == 0 .or. converged
+        if (.not. all(abs(x) <= huge(1.0_dp))) then
+            call new_error(err, EXIT_ANALYSIS, 'the contact system is numerically singular '// &
+                           '(non-finite solution)')
+        end if
+    end subroutine schur_solve
+
+    !> x = J^-1 b by block elimination: inner, kept (factorised), inner again.
+    subroutine apply_inverse(sc, fac, b, x, err)
+        type(schur_t), intent(in) :: sc
+        type(schur_factor_t), intent(in) :: fac
+        real(dp), intent(in) :: b(:)
+        real(dp), intent(out) :: x(:)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: y(:, :), g(:, :), z(:, :)
+        integer :: k, info
+        character(len=80) :: text
+        y = reshape(b(sc%inner), [sc%ni, 1])
+        call dpbtrs('L', sc%ni, sc%kd, 1, sc%kband, sc%kd + 1, y, sc%ni, info)
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
+        g = reshape(b(sc%kept), [sc%nk, 1])
+        do k = 1, size(sc%c_val)
+            g(sc%c_col(k), 1) = g(sc%c_col(k), 1) - sc%c_val(k)*y(sc%c_row(k), 1)
+        end do
+        call kept_solve(fac, g, err)
+        if (allocated(err)) return
+        if (fac%nu > 0) then
+            z = reshape(matmul(fac%dmat, g(fac%upos, 1)), [fac%nu, 1])
+            call dgetrs('N', fac%nu, 1, fac%cap, fac%nu, fac%cap_ipiv, z, fac%nu, info)
+            if (info /= 0) then
+                write (text, '(a,i0)') 'dgetrs: illegal argument ', -info
+                call new_error(err, EXIT_INTERNAL, trim(text))
+                return
+            end if
+            g(:, 1) = g(:, 1) - matmul(fac%w, z(:, 1))
+        end if
+        y(:, 1) = b(sc%inner)
+        do k = 1, size(sc%c_val)
+            y(sc%c_row(k), 1) = y(sc%c_row(k), 1) - sc%c_val(k)*g(sc%c_col(k), 1)
+        end do
+        call dpbtrs('L', sc%ni, sc%kd, 1, sc%kband, sc%kd + 1, y, sc%ni, info)
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+            return
+        end if
+        x = b
+        x(sc%inner) = y(:, 1)
+        x(sc%kept) = g(:, 1)
+    end subroutine apply_inverse
+
+    !> J x: A0 x with the fixed unknowns' rows and columns replaced by the identity, plus
+    !! the set terms.
+    function jacobian_times(sys, sc, st, x) result(jx)
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        real(dp), intent(in) :: x(:)
+        real(dp), allocatable :: jx(:), xf(:)
+        integer :: i
+        xf = merge(0.0_dp, x, sc%fixed)
+        jx = a0_times(sys, xf, xf)
+        entries: do i = 1, st%n
+            if (sc%fixed(st%row(i)) .or. sc%fixed(st%col(i))) cycle entries
+            jx(st%row(i)) = jx(st%row(i)) + st%val(i)*x(st%col(i))
+        end do entries
+        where (sc%fixed) jx = x
+    end function jacobian_times
+end module schur_solver
