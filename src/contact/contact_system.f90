@@ -99,7 +99,7 @@ module contact_system
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
-    public :: jacobian_diagonal, linear_part, set_terms, a0_times
+    public :: jacobian_diagonal, linear_part, set_terms, a0_times, sparse_blocks
 
     !> Set-dependent entries of the Jacobian (global unknown numbers).
     type, public :: set_terms_t

@@ -26,7 +26,7 @@ module model_reduction
                      FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     use mesh, only: mesh_t
     use discretization, only: discretization_t
-    use contact_system, only: system_t, contact_points_t
+    use contact_system, only: system_t, contact_points_t, sparse_blocks
     implicit none
     private
 
@@ -205,8 +205,9 @@ contains
         dr%fixed = pack(dr%fixed, dr%fixed > 0)
     end function reduced_discretization
 
-    !> P^T A0 P, P^T q and the rigid-body bookkeeping of the reduced problem.
-    pure function reduced_system(sys, d, dr, red) result(sr)
+    !> P^T A0 P, P^T q, its sparse blocks (for the structured products of contact_system) and
+    !! the rigid-body bookkeeping of the reduced problem.
+    function reduced_system(sys, d, dr, red) result(sr)
         type(system_t), intent(in) :: sys
         type(discretization_t), intent(in) :: d, dr
         type(reduction_t), intent(in) :: red
@@ -243,6 +244,7 @@ contains
             sr%psi_range = sys%psi_range
             if (allocated(sys%rotation_w)) sr%rotation_w = sys%rotation_w
         end if
+        call sparse_blocks(dr%nv, sr)
     end function reduced_system
 
     !> The contact points with their traction basis mapped through P (entries of one point

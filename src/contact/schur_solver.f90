@@ -86,6 +86,9 @@ contains
         integer :: i
         allocate (sc%fixed(d%n))
         sc%fixed = .false.
+        ! the node ordering needs the displacement bases to number the displacement unknowns
+        ! one to one; a reduced model (model_reduction: half a beam) numbers fewer: dense path
+        if (sum(d%basis(FIELD_U:FIELD_PSI)%n_dof) /= d%nv) return
         sc%fixed(d%fixed) = .true.
         pinned = pinned_unknowns(sys)
         if (any(sc%fixed(pinned))) return
