@@ -69,7 +69,7 @@ contains
         type(case_result_t), allocatable :: results(:)
         logical, allocatable :: selected(:)
         type(error_t), allocatable :: err
-        integer :: i, n, done, threads, blas_before
+        integer :: i, n, done, threads, blas_before, big_case_unit
         character(len=:), allocatable :: label
 
         n = case_count(deck)
@@ -103,7 +103,12 @@ contains
             status = err%code
             return
         end if
-        if (opt%progress .and. n == 1) call announce_size(err_unit, deck%stem, cases(1))
+        ! a single case that takes a while: its size first, then each Newton step
+        big_case_unit = -1
+        if (opt%progress .and. n == 1) then
+            call announce_size(err_unit, deck%stem, cases(1))
+            if (time_needed(case_unknowns(cases(1))) >= 2.0_dp) big_case_unit = err_unit
+        end if
         ! a sweep's cases always use single-threaded BLAS, however many run at once: the
         ! summation order, and so every digit, is then the same in serial, parallel and
         ! sharded runs
@@ -115,7 +120,7 @@ contains
         cases_loop: do i = 1, n
             if (.not. selected(i)) cycle cases_loop
             call solve_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
-                            opt%figures, opt%estimates, results(i))
+                            opt%figures, opt%estimates, big_case_unit, results(i))
             !$omp critical (fricon_progress)
             done = done + 1
             if (opt%progress) call report_progress(err_unit, done, count(selected), &
@@ -165,9 +170,9 @@ contains
         type(model_t), intent(in) :: m
         integer :: n
         n = case_unknowns(m)
-        if (time_needed(n) < 5.0_dp) return
+        if (time_needed(n) < 2.0_dp) return
         write (unit, '(a,i0,a,f0.1,a)') 'fricon: '//name//': ', n, ' unknowns, about '// &
-            seconds(time_needed(n))//' per solve round and ', memory_needed(n)/1.0e9_dp, ' GB'
+            seconds(time_needed(n))//' and ', memory_needed(n)/1.0e9_dp, ' GB (rough estimates)'
         flush (unit)
     end subroutine announce_size
 
@@ -277,12 +282,14 @@ contains
     !! the library's formatted-output and character temporaries out of any race. A failed case
     !! writes its report (ANALYSIS FAILED) and its JSON only, and removes the data files and
     !! figure of an earlier run of the same case.
-    subroutine solve_case(deck, m, label, out_dir, name, figures, estimates, result)
+    subroutine solve_case(deck, m, label, out_dir, name, figures, estimates, progress_unit, &
+                          result)
         type(deck_t), intent(in) :: deck
         type(model_t), intent(inout) :: m
         character(len=*), intent(in) :: label, out_dir, name
         logical, intent(in) :: figures            !! run gnuplot on the written .gp
         logical, intent(in) :: estimates          !! estimate the error (two coarser solves)
+        integer, intent(in) :: progress_unit      !! >= 0: report each Newton step there
         type(case_result_t), intent(out) :: result
         type(discretization_t) :: d
         type(solution_t) :: sol
@@ -296,7 +303,13 @@ contains
         result%rho = relative_stiffness(m)
         result%warnings = input_warnings(m)
         call new_discretization(m, d, err)
-        if (.not. allocated(err)) call solve_contact(m, d, sol, err)
+        if (.not. allocated(err)) then
+            if (progress_unit >= 0) then
+                call solve_contact(m, d, sol, err, progress_unit)
+            else
+                call solve_contact(m, d, sol, err)
+            end if
+        end if
         result%n_outer = sol%n_outer
         result%n_inner = sol%n_inner
         if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)

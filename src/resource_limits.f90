@@ -5,9 +5,11 @@
 !! Memory: the solver keeps a few dense copies of the system of n = displacement + traction
 !! unknowns (the matrix, its factors, the Jacobian); measured peaks on a plate (P1, Newton):
 !! 37 MB at n = 1005, 111 MB at n = 2005, 400 MB at n = 4005, i.e. about 3.1 n^2 doubles;
-!! the estimate takes 4 n^2 doubles + 20 MB. Time: dominated by dense factorisations, about
-!! 12 s at n = 4000 on the 2-core development machine, scaling as n^3 (a rough guide, printed
-!! with the progress, never used to refuse). The limit is 80 % of the memory the system reports
+!! the estimate takes 4 n^2 doubles + 20 MB (the two-loop method still factorises the dense
+!! system; Newton with the Schur complement needs about 1.5: 292 MB at n = 5005). Time: the
+!! Newton solve of the frictional plate takes 2.1 s at n = 5005 on the 2-core development
+!! machine (output/bench/linalg_before_after.md), i.e. about 1.1 s at n = 4000, scaling as
+!! n^3 (a rough guide, printed with the progress, never used to refuse). The limit is 80 % of the memory the system reports
 !! available (MemAvailable of /proc/meminfo; 8 GB when it cannot be read), shared by the cases a
 !! sweep solves at once.
 module resource_limits
@@ -21,7 +23,7 @@ module resource_limits
 
     real(dp), parameter :: bytes_per_n2 = 32.0_dp          !! 4 doubles per n^2
     real(dp), parameter :: base_bytes = 20.0e6_dp
-    real(dp), parameter :: seconds_at_4000 = 12.0_dp
+    real(dp), parameter :: seconds_at_4000 = 1.1_dp
     real(dp), parameter :: usable_fraction = 0.8_dp
     real(dp), parameter :: fallback_available = 8.0e9_dp
 

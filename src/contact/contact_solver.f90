@@ -30,14 +30,16 @@ module contact_solver
 contains
 
     !> Solve one case. Fails with EXIT_ANALYSIS when there is no equilibrium or no convergence.
-    subroutine solve_contact(m, d, sol, err)
+    subroutine solve_contact(m, d, sol, err, progress_unit)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(out) :: sol
         type(error_t), allocatable, intent(out) :: err
+        integer, intent(in), optional :: progress_unit   !! a unit for one line per Newton step
         type(system_t) :: sys
 
         allocate (sol%history(0))
+        if (present(progress_unit)) sol%progress_unit = progress_unit
         call check_load_admissible(m, err)
         if (allocated(err)) return
         sol%pts = contact_points(m, d)

@@ -60,6 +60,8 @@ module contact_system
         character(len=8) :: method = ''      !! NEWTON or TWOLOOP
         integer :: n_outer = 0, n_inner = 0
         integer :: n_solves = 0              !! linear solves of the case
+        integer :: progress_unit = -1        !! >= 0: each Newton step also reported there
+                                             !! (the caller's progress for a big case)
         integer :: n_factorisations = 0      !! matrix factorisations among them (Newton: the
                                              !! others reuse one by a low-rank update)
         real(dp) :: residual(2) = 0.0_dp     !! relative residuals of equations 4.2a, 4.2b

@@ -530,6 +530,12 @@ contains
             write (rec%note, '(a,es8.1)') 'Newton, eps_bar ', law%eps
         end if
         sol%history = [sol%history, rec]
+        if (sol%progress_unit >= 0) then
+            write (sol%progress_unit, '(a,i0,a,i0,a,es9.2,a,i0,a)') 'fricon:   Newton stage ', &
+                stage, ', step ', iter, ': residual ', residual, ', ', rec%n_changed, &
+                ' points changed state'
+            flush (sol%progress_unit)
+        end if
     end subroutine log_step
 
     subroutine log_note(sol, note)
