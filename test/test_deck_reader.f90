@@ -78,6 +78,7 @@ contains
                  new_unittest('hash_comment_hint', test_hash_hint), &
                  new_unittest('pressure_load_kind', test_pressure_load), &
                  new_unittest('plausibility_warnings', test_plausibility), &
+                 new_unittest('fuzz_regression_decks', test_fuzz_regressions), &
                  new_unittest('free_format_hint', test_free_format), &
                  new_unittest('fuzz_odd_lines', test_fuzz_lines), &
                  new_unittest('fuzz_random_bytes', test_fuzz_random)]
@@ -941,6 +942,27 @@ contains
         warn = settlement_warnings(deck%base, 0.6_dp)
         call check(err, size(warn) == 1, 'a settlement of 0.6 m on a 0.5 m beam: no warning')
     end subroutine test_plausibility
+
+    !> The decks the fuzzing campaign kept (test/data/fuzz, fuzz/CAMPAIGN.md) are valid decks
+    !! that once tripped the harness's invariants: each reads, and every case of it builds a
+    !! model (nondim_nu_f_half.dat: nu_f = 0.5, incompressible soil, is valid, SPEC §8).
+    subroutine test_fuzz_regressions(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        type(error_t), allocatable :: perr
+        character(len=:), allocatable :: label
+        integer :: i
+        call read_deck('test/data/fuzz/nondim_nu_f_half.dat', deck, perr)
+        call check(err, .not. allocated(perr), 'fuzz regression deck refused')
+        if (allocated(err)) return
+        do i = 1, case_count(deck)
+            call case_model(deck, i, m, label, perr)
+            call check(err, .not. allocated(perr), 'fuzz regression deck: a case refused')
+            if (allocated(err)) return
+        end do
+        call check(err, deck%base%nu_f == 0.5_dp, 'nu_f = 0.5 not read')
+    end subroutine test_fuzz_regressions
 
     !> '#' or '!' in column 1: an unknown card with a hint on the comment marks.
     subroutine test_hash_hint(err)
