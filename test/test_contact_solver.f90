@@ -12,6 +12,7 @@ module test_contact_solver
     use model, only: METHOD_NEWTON, METHOD_TWOLOOP
     use station_columns, only: Q_GAP
     use station_test_support, only: nd, nd_all
+    use contact_test_support, only: nondim_plate, nondim_beam, run
     implicit none
     private
     public :: collect_contact_solver
@@ -36,54 +37,6 @@ contains
                  new_unittest('iteration_cap_allocates_nothing', test_iteration_cap), &
                  new_unittest('memory_beyond_machine_refused', test_memory_limit)]
     end subroutine collect_contact_solver
-
-    !> NONDIM plate (a = 1, F = 1): central point load, nu = 0.3.
-    function nondim_plate(rho, zeta, nu_f, f, ne) result(m)
-        real(dp), intent(in) :: rho, zeta, nu_f, f
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%kind = MODEL_PLATE
-        m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%nu = 0.3_dp
-        m%nu_f = nu_f
-        m%f = f
-        m%ne = ne
-        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
-        call complete_model(m)
-    end function nondim_plate
-
-    !> NONDIM beam (l = 1, F = 1): central point load V = 1 with horizontal H.
-    function nondim_beam(rho, zeta, beta, f, h_load, ne) result(m)
-        real(dp), intent(in) :: rho, zeta, beta, f, h_load
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%kind = MODEL_BEAM
-        m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%beta_in = beta
-        m%nu = 0.3_dp
-        m%nu_f = 0.1_dp
-        m%f = f
-        m%ne = ne
-        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=h_load, x1=0.0_dp)]
-        call complete_model(m)
-    end function nondim_beam
-
-    subroutine run(m, sol, tab, err)
-        type(model_t), intent(in) :: m
-        type(solution_t), intent(out) :: sol
-        type(station_table_t), intent(out) :: tab
-        type(error_t), allocatable, intent(out) :: err
-        type(discretization_t) :: d
-        call new_discretization(m, d, err)
-        if (allocated(err)) return
-        call solve_contact(m, d, sol, err)
-        if (allocated(err)) return
-        call tabulate(m, d, sol, tab, err)
-    end subroutine run
 
     !> Rigid frictionless punch (Boussinesq 1885; Johnson 1985 §3.8): w = F(1-nu_f^2)/(2 E_f a),
     !! i.e. W(0) = rho/4, and Sigma_z = 1/(2 sqrt(1 - t^2)).

@@ -34,6 +34,7 @@ module test_newton
                               point_tractions, set_terms
     use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve
     use linear_solve, only: solve_equilibrated
+    use contact_test_support, only: nondim_plate, nondim_beam, run
     implicit none
     private
     public :: collect_newton
@@ -52,54 +53,6 @@ contains
                  new_unittest('fig07_ref_case5_one_state', test_fig07_case5), &
                  new_unittest('schur_solve_matches_dense', test_schur_matches_dense)]
     end subroutine collect_newton
-
-    !> NONDIM plate (a = 1, F = 1), central point load; nu = 0.3, nu_f = 0.1 (paper).
-    function nondim_plate(rho, zeta, f, ne) result(m)
-        real(dp), intent(in) :: rho, zeta, f
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%kind = MODEL_PLATE
-        m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%nu = 0.3_dp
-        m%nu_f = 0.1_dp
-        m%f = f
-        m%ne = ne
-        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
-        call complete_model(m)
-    end function nondim_plate
-
-    !> NONDIM beam (l = 1, F = 1): central point load V = 1 with horizontal component h_load.
-    function nondim_beam(rho, zeta, beta, f, h_load, ne) result(m)
-        real(dp), intent(in) :: rho, zeta, beta, f, h_load
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%kind = MODEL_BEAM
-        m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%beta_in = beta
-        m%nu = 0.3_dp
-        m%nu_f = 0.1_dp
-        m%f = f
-        m%ne = ne
-        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=h_load, x1=0.0_dp)]
-        call complete_model(m)
-    end function nondim_beam
-
-    subroutine run(m, sol, tab, err)
-        type(model_t), intent(in) :: m
-        type(solution_t), intent(out) :: sol
-        type(station_table_t), intent(out) :: tab
-        type(error_t), allocatable, intent(out) :: err
-        type(discretization_t) :: d
-        call new_discretization(m, d, err)
-        if (allocated(err)) return
-        call solve_contact(m, d, sol, err)
-        if (allocated(err)) return
-        call tabulate(m, d, sol, tab, err)
-    end subroutine run
 
     !> Solve m and assert the four checks of the module header; what names the case.
     subroutine require_solved(m, what, err, sol_out)
@@ -185,7 +138,7 @@ contains
         character(len=40) :: what
         integer :: k
         meshes_loop: do k = 1, size(meshes)
-            m = nondim_plate(1.0e-3_dp, 0.1_dp, 0.6_dp, meshes(k))
+            m = nondim_plate(1.0e-3_dp, 0.1_dp, 0.1_dp, 0.6_dp, meshes(k))
             m%interp = INTERP_P2
             write (what, '(a,i0)') 'P2 plate N_e = ', meshes(k)
             call require_solved(m, trim(what), err)
@@ -215,7 +168,7 @@ contains
                         if (kind == MODEL_BEAM) then
                             m = nondim_beam(rhos(i), zetas(j), 0.05_dp, fs(k), 0.25_dp*fs(k), ne)
                         else
-                            m = nondim_plate(rhos(i), zetas(j), fs(k), ne)
+                            m = nondim_plate(rhos(i), zetas(j), 0.1_dp, fs(k), ne)
                         end if
                         write (what, '(a,3(a,es8.1),a,i0)') merge('beam ', 'plate', &
                             kind == MODEL_BEAM), ' rho', rhos(i), ' zeta', zetas(j), ' f', &
@@ -238,7 +191,7 @@ contains
         type(solution_t) :: sol
         type(station_table_t) :: tab
         type(error_t), allocatable :: run_err
-        m = nondim_plate(1.0e4_dp, 1.0e-3_dp, 0.6_dp, 30)
+        m = nondim_plate(1.0e4_dp, 1.0e-3_dp, 0.1_dp, 0.6_dp, 30)
         call run(m, sol, tab, run_err)
         if (allocated(run_err)) then
             call check(err, run_err%code == EXIT_ANALYSIS, 'stiff thin plate: expected status 2')
@@ -258,7 +211,7 @@ contains
         type(discretization_t) :: d
         real(dp) :: diff(2)
         integer :: k
-        cases(1) = nondim_plate(1.0e-3_dp, 0.1_dp, 0.6_dp, 20)
+        cases(1) = nondim_plate(1.0e-3_dp, 0.1_dp, 0.1_dp, 0.6_dp, 20)
         cases(2) = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.3_dp, 40)
         cases(3) = nondim_beam(1.0e-5_dp, 0.2_dp, 0.05_dp, 0.6_dp, 0.1_dp, 30)
         cases_loop: do k = 1, size(cases)
@@ -320,7 +273,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: cases(2)
         integer :: k
-        cases = [nondim_plate(0.01_dp, 0.1_dp, 0.5_dp, 20), &
+        cases = [nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 20), &
                  nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.1_dp, 20)]
         do k = 1, size(cases)
             call compare_schur_dense(cases(k), err)

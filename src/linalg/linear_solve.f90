@@ -25,14 +25,8 @@ contains
         character(len=160) :: text
 
         n = size(a, 1)
-        if (size(a, 2) /= n .or. size(b) /= n .or. size(x) /= n .or. n < 1) then
-            call new_error(err, EXIT_INTERNAL, 'solve_symmetric: inconsistent array sizes')
-            return
-        end if
-        if (.not. all(a == a) .or. .not. all(b == b)) then
-            call new_error(err, EXIT_INTERNAL, 'solve_symmetric: NaN in the system matrix or load')
-            return
-        end if
+        call check_system('solve_symmetric', a, b, x, err)
+        if (allocated(err)) return
         allocate (ipiv(n), rhs(n, 1))
         a_copy = a
         call dsytrf('L', n, a, n, ipiv, query, -1, info)
@@ -67,6 +61,21 @@ contains
         end if
     end subroutine solve_symmetric
 
+    !> Square, consistent sizes and no NaN: the preconditions of both solvers (LAPACK's XERBLA,
+    !! which stops the program, is never reached).
+    subroutine check_system(who, a, b, x, err)
+        character(len=*), intent(in) :: who
+        real(dp), intent(in) :: a(:, :), b(:), x(:)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: n
+        n = size(a, 1)
+        if (size(a, 2) /= n .or. size(b) /= n .or. size(x) /= n .or. n < 1) then
+            call new_error(err, EXIT_INTERNAL, who//': inconsistent array sizes')
+        else if (.not. all(a == a) .or. .not. all(b == b)) then
+            call new_error(err, EXIT_INTERNAL, who//': NaN in the system matrix or load')
+        end if
+    end subroutine check_system
+
     !> Solve A x = b for a general square A (LU, dgesv); A is overwritten by its factors. Two
     !! steps of iterative refinement, as in solve_symmetric.
     subroutine solve_general(a, b, x, err)
@@ -80,14 +89,8 @@ contains
         character(len=160) :: text
 
         n = size(a, 1)
-        if (size(a, 2) /= n .or. size(b) /= n .or. size(x) /= n .or. n < 1) then
-            call new_error(err, EXIT_INTERNAL, 'solve_general: inconsistent array sizes')
-            return
-        end if
-        if (.not. all(a == a) .or. .not. all(b == b)) then
-            call new_error(err, EXIT_INTERNAL, 'solve_general: NaN in the system matrix or load')
-            return
-        end if
+        call check_system('solve_general', a, b, x, err)
+        if (allocated(err)) return
         allocate (ipiv(n), rhs(n, 1))
         a_copy = a
         rhs(:, 1) = b
