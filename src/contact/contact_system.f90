@@ -69,8 +69,6 @@ module contact_system
         real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)
         real(dp) :: applied(3) = 0.0_dp      !! the same of the loads
         real(dp) :: admissibility = 0.0_dp   !! max(|sigma_x| - f sigma_z) over contact points
-        real(dp) :: complementarity = 0.0_dp !! max |Sigma_z gap| at lift-off stations (report)
-        real(dp) :: compatibility = 0.0_dp   !! max |gap|/max|w| at contact stations (report)
         real(dp) :: min_sigma_z = 0.0_dp     !! most tensile sigma_z (penalty, O(eta_bar))
     end type solution_t
 

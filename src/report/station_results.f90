@@ -245,10 +245,12 @@ contains
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(inout) :: tab
         real(dp) :: t0(2), t1(2), hoop(2), ld(4), x, two_pi_r
+        real(dp) :: cum(6, 0:d%msh%ne)
         integer :: i
+        cum = cumulative_integrals(m, d, sol)
         stations: do i = 1, tab%n
             x = tab%val(Q_X, i)
-            call traction_integrals(m, d, sol, x, t0, t1, hoop)
+            call traction_integrals(m, d, sol, cum, x, t0, t1, hoop)
             ld = load_integrals(m, x, tab%side(i), position_tolerance(d))
             if (m%kind == MODEL_BEAM) then
                 tab%val(Q_Q, i) = t0(2) - ld(1)
@@ -269,41 +271,70 @@ contains
         end do stations
     end subroutine statics_resultants
 
-    !> I0 and I1 of (sigma_x, sigma_z) from x0 to x, and (plate) int_0^x of N_t and M_t, all
-    !! exact for the polynomial tractions (4-point Gauss per element, the partial one included).
-    pure subroutine traction_integrals(m, d, sol, x, t0, t1, hoop)
+    !> I0 and I1 of (sigma_x, sigma_z) from x0 to x, and (plate) int_0^x of N_t and M_t: the
+    !! node totals of cumulative_integrals plus the part of the element that holds x, with
+    !! I1(x) = x J0(x) - J1(x), J1 = int w g s ds.
+    pure subroutine traction_integrals(m, d, sol, cum, x, t0, t1, hoop)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
+        real(dp), intent(in) :: cum(:, 0:)      !! cumulative_integrals
         real(dp), intent(in) :: x
         real(dp), intent(out) :: t0(2), t1(2), hoop(2)
-        real(dp) :: xg(4), wg(4), lo, hi, s, wt, xi, sig(2), res(5)
+        real(dp) :: total(6), xi
+        integer :: e
+        call locate_element(d%msh, x, e, xi)
+        total = cum(:, e - 1) + element_integrals(m, d, sol, e, d%msh%x(e - 1), &
+                                                  max(d%msh%x(e - 1), min(x, d%msh%x(e))))
+        t0 = total(1:2)
+        t1 = x*total(1:2) - total(3:4)
+        hoop = total(5:6)
+    end subroutine traction_integrals
+
+    !> At every node k, int_x0^x_k of w (sigma_x, sigma_z, s sigma_x, s sigma_z) and (plate)
+    !! of N_t and M_t: (6, 0:ne), element by element, once per table.
+    pure function cumulative_integrals(m, d, sol) result(cum)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
+        real(dp) :: cum(6, 0:d%msh%ne)
+        integer :: e
+        cum(:, 0) = 0.0_dp
+        elements: do e = 1, d%msh%ne
+            cum(:, e) = cum(:, e - 1) + element_integrals(m, d, sol, e, d%msh%x(e - 1), d%msh%x(e))
+        end do elements
+    end function cumulative_integrals
+
+    !> The six integrals of cumulative_integrals over [lo, hi] inside element e, exact for the
+    !! polynomial tractions (4-point Gauss; w = 1 for the beam, 2 pi s for the plate).
+    pure function element_integrals(m, d, sol, e, lo, hi) result(part)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
+        integer, intent(in) :: e
+        real(dp), intent(in) :: lo, hi
+        real(dp) :: part(6)
+        real(dp) :: xg(4), wg(4), s, wt, xi, sig(2), res(5)
         type(section_t) :: sec
-        integer :: e, g
+        integer :: g
+        part = 0.0_dp
+        if (hi <= lo) return
         sec = section_of(m)
         call gauss_legendre(4, xg, wg)
-        t0 = 0.0_dp
-        t1 = 0.0_dp
-        hoop = 0.0_dp
-        elements: do e = 1, d%msh%ne
-            lo = d%msh%x(e - 1)
-            hi = min(x, d%msh%x(e))
-            if (hi <= lo) exit elements
-            do g = 1, 4
-                s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
-                wt = 0.5_dp*wg(g)*(hi - lo)
-                xi = 2.0_dp*(s - lo)/(d%msh%x(e) - lo) - 1.0_dp
-                sig = traction_at(d, sol%z(d%nv + 1:), e, xi)
-                if (m%kind /= MODEL_BEAM) then
-                    res = resultants(sec, displacement_at(d, sol%z(1:d%nv), e, xi))
-                    hoop = hoop + wt*res([2, 4])
-                    wt = wt*2.0_dp*pi*s
-                end if
-                t0 = t0 + wt*sig
-                t1 = t1 + wt*sig*(x - s)
-            end do
-        end do elements
-    end subroutine traction_integrals
+        do g = 1, 4
+            s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
+            wt = 0.5_dp*wg(g)*(hi - lo)
+            xi = 2.0_dp*(s - d%msh%x(e - 1))/(d%msh%x(e) - d%msh%x(e - 1)) - 1.0_dp
+            sig = traction_at(d, sol%z(d%nv + 1:), e, xi)
+            if (m%kind /= MODEL_BEAM) then
+                res = resultants(sec, displacement_at(d, sol%z(1:d%nv), e, xi))
+                part(5:6) = part(5:6) + wt*res([2, 4])
+                wt = wt*2.0_dp*pi*s
+            end if
+            part(1:2) = part(1:2) + wt*sig
+            part(3:4) = part(3:4) + wt*sig*s
+        end do
+    end function element_integrals
 
     !> Integrals of the loads over [x0, x]: (I0[qz], I1[qz], I0[qx], sum of moments C). A
     !! concentrated load at x counts on the right side (side = +1) only.
