@@ -19,6 +19,7 @@ plot '< grep NEWTON /tmp/bench_rows.txt | sort -n -k3' u 0:3 w lp pt 7 ps 0.6 lw
      30 w l dt 2 lc rgb '#7f7f7f' t 'target: none over 30'
 set title 'time per case against N_e'
 set xlabel 'N_e'; set ylabel 'discretise + solve [s]'; set logscale xy
+set key bottom right; set offsets 0, 0, graph 0.08, 0
 plot '< grep NEWTON /tmp/bench_rows.txt' u 1:4 w p pt 7 ps 0.8 t 'NEWTON', \
      '< grep TWOLOOP /tmp/bench_rows.txt' u 1:4 w p pt 5 ps 0.8 t 'TWOLOOP'
 unset multiplot
