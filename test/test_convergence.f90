@@ -50,11 +50,11 @@
 !! Floors that limit the meshes:
 !!  * rigid punches, rho = 1e4: the plate's own deflection under the point load and the punch
 !!    pressure adds O(1) to W(0) (0.031 in fricon, independent of rho to leading order), i.e.
-!!    ~1.2e-5 relative, below 10 % of every asserted error. A larger rho does not help: the
-!!    plate's rigid-body mode is held only by the soil, and the linear system loses about
-!!    rho (a/h_e) zeta^-2 eps to round-off (1e-3 relative at rho = 1e5 with h_e = 3e-5; the
-!!    equilibrium residual is already ~1e-6 F at rho = 1e4, N_e = 64). Hence N_e <= 64
-!!    (UNIFORM), <= 32 (EDGES), <= 8 (radical) for the asserted orders.
+!!    ~1.2e-5 relative, below 10 % of every asserted error. (These limits were set when the
+!!    solvers worked in absolute displacements, which lost about rho (a/h_e) zeta^-2 eps to
+!!    round-off; they now work in rigid coordinates, src/contact/rigid_body.f90, and the
+!!    limits are kept as they were.) N_e <= 64 (UNIFORM), <= 32 (EDGES), <= 8 (radical) for
+!!    the asserted orders.
 !!  * bonded punch: the bonded solution's pressure changes sign within ~1e-4 a of the rim (the
 !!    oscillation of cos(epsilon ln d)); a mesh that resolves this (EDGES from N_e = 64) asks the
 !!    unilateral solver for tension there (no convergence, status 2), so EDGES stops at 32.

@@ -6,13 +6,16 @@
 !! The job is split by module: contact_system (the discrete problem 4.2: points, matrices,
 !! residual and Jacobian of the complete problem), interface_law (stick / slip / lift-off at a
 !! point), newton_method and two_loop_method (the iterations), solution_checks (refusals and
-!! the checks of every answer). This module only dispatches.
+!! the checks of every answer). This module only dispatches; every method solves in the
+!! rigid coordinates of rigid_body (stiff structures), the answer is returned absolute.
 module contact_solver
     use errors, only: error_t
     use model, only: model_t, METHOD_TWOLOOP
     use discretization, only: discretization_t
     use contact_system, only: contact_points_t, iteration_record_t, solution_t, system_t, &
-                              build_system, contact_points, point_tractions
+                              build_system, contact_points, point_tractions, &
+                              use_rigid_coordinates
+    use rigid_body, only: to_absolute
     use newton_method, only: solve_newton
     use two_loop_method, only: solve_two_loop
     use solution_checks, only: check_load_admissible, final_checks
@@ -50,14 +53,16 @@ contains
         if (is_active(plan_reduction(m, d))) then
             call solve_reduced(m, d, sys, sol, err)
             return
-        else if (m%method == METHOD_TWOLOOP) then
+        end if
+        call use_rigid_coordinates(sys)
+        if (m%method == METHOD_TWOLOOP) then
             call solve_two_loop(m, d, sys, sol, err)
         else
             call solve_newton(m, d, sys, sol, err)
             if (.not. allocated(err)) call classify_complete(m, sol)
         end if
-        if (allocated(err)) return
-        call final_checks(m, d, sys, sol, err)
+        if (.not. allocated(err)) call final_checks(m, d, sys, sol, err)
+        sol%z = to_absolute(sys%rigid, sol%z)
     end subroutine solve_contact
 
     !> Newton on the reduced problem of model_reduction, checked against the reduced complete
@@ -77,6 +82,7 @@ contains
         red = plan_reduction(m, d)
         dr = reduced_discretization(d, red)
         sr = reduced_system(sys, d, dr, red)
+        call use_rigid_coordinates(sr)
         pts = sol%pts
         sol%pts = reduced_points(pts, red)
         deallocate (sol%z)
@@ -86,7 +92,7 @@ contains
             call classify_complete(m, sol)
             call final_checks(m, dr, sr, sol, err)
         end if
-        sol%z = expand(red, sol%z)
+        sol%z = expand(red, to_absolute(sr%rigid, sol%z))
         sol%pts = pts
     end subroutine solve_reduced
 

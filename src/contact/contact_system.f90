@@ -23,6 +23,7 @@ module contact_system
     use halfspace_operator, only: assemble_flexibility
     use interface_law, only: friction_threshold, slip_excess, tensile_part, threshold_slope, &
                              is_slipping, in_tension
+    use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
     implicit none
     private
 
@@ -87,10 +88,9 @@ module contact_system
         real(dp), allocatable :: row_scale(:)  !! 1/sqrt|diag a0|: fixed scaling of the residual
         real(dp) :: c = 0.0_dp, kappa = 0.0_dp, penalty = 0.0_dp
         type(law_t) :: law                   !! the deck's law
-        integer, allocatable :: translation(:, :)  !! (2, k): unknown ranges of the rigid
-                                                   !! translations of the structure (K t = 0)
-        integer :: psi_range(2) = 0          !! beam: psi unknowns (rigid rotation psi = 1 ...)
-        real(dp), allocatable :: rotation_w(:)  !! ... with w = x: its w coefficients
+        type(rigid_t) :: rigid               !! the structure's rigid-body modes (K R = 0)
+        logical :: rigid_coordinates = .false.  !! a0, q (and the solvers' z) in rigid
+                                                !! coordinates (rigid_body), else absolute
         integer :: nv = 0                    !! displacement unknowns
         integer, allocatable :: sp_ptr(:)    !! a0 outside its traction-traction block (K, M,
         integer, allocatable :: sp_row(:)    !! M^T: sparse) by columns (sparse_blocks):
@@ -100,6 +100,7 @@ module contact_system
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
     public :: jacobian_diagonal, linear_part, set_terms, a0_times, sparse_blocks
+    public :: use_rigid_coordinates
 
     !> Set-dependent entries of the Jacobian (global unknown numbers).
     type, public :: set_terms_t
@@ -139,15 +140,7 @@ contains
         if (allocated(err)) return
         sys%c = friction_compliance(m)
         sys%law = new_law(m, sys%c, m%eps_bar, m%eta_bar)
-        sys%translation = reshape([d%offset(FIELD_W) + 1, d%offset(FIELD_W) &
-                                   + d%basis(FIELD_W)%n_dof], [2, 1])
-        if (m%kind == MODEL_BEAM) then
-            sys%translation = reshape([sys%translation(:, 1), &
-                d%offset(FIELD_U) + 1, d%offset(FIELD_U) + d%basis(FIELD_U)%n_dof], [2, 2])
-            sys%psi_range = [d%offset(FIELD_PSI) + 1, d%offset(FIELD_PSI) &
-                             + d%basis(FIELD_PSI)%n_dof]
-            sys%rotation_w = linear_coefficients(d%basis(FIELD_W))
-        end if
+        sys%rigid = rigid_modes(m, d)
         sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
         sys%penalty = sys%law%penalty
         ! - c eps S0 on the sigma_x block: the stick branch of the law, everywhere
@@ -161,6 +154,35 @@ contains
         end do
         call sparse_blocks(nv, sys)
     end subroutine build_system
+
+    !> The rigid-body modes of the structure: the translation of w (plate), and for the beam
+    !! also the translation of u_s and the rotation psi = 1, w = x.
+    pure function rigid_modes(m, d) result(rb)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(rigid_t) :: rb
+        integer :: w_range(2), u_range(2), psi_range(2)
+        w_range = [d%offset(FIELD_W) + 1, d%offset(FIELD_W) + d%basis(FIELD_W)%n_dof]
+        if (m%kind /= MODEL_BEAM) then
+            rb = new_rigid(d%nv, reshape(w_range, [2, 1]), [0, 0])
+            return
+        end if
+        u_range = [d%offset(FIELD_U) + 1, d%offset(FIELD_U) + d%basis(FIELD_U)%n_dof]
+        psi_range = [d%offset(FIELD_PSI) + 1, d%offset(FIELD_PSI) + d%basis(FIELD_PSI)%n_dof]
+        rb = new_rigid(d%nv, reshape([w_range, u_range], [2, 2]), psi_range, &
+                       linear_coefficients(d%basis(FIELD_W)))
+    end function rigid_modes
+
+    !> Change a0 and q to rigid coordinates (rigid_body; once, before a method solves): the
+    !! methods then solve for z in rigid coordinates, which to_absolute maps back.
+    subroutine use_rigid_coordinates(sys)
+        type(system_t), intent(inout) :: sys
+        if (sys%rigid_coordinates) return
+        call to_rigid_coordinates(sys%rigid, sys%nv, sys%a0, sys%q)
+        deallocate (sys%sp_ptr, sys%sp_row, sys%sp_val)
+        call sparse_blocks(sys%nv, sys)
+        sys%rigid_coordinates = .true.
+    end subroutine use_rigid_coordinates
 
     !> The nonzeros of a0 outside its dense traction-traction block, by columns (a0 is read
     !! down its columns, as stored): sparse column j <= n holds the displacement rows of
@@ -434,41 +456,14 @@ contains
         end do columns
     end subroutine add_point_entries
 
-    !> A0 z, with K applied to v less its rigid-body part (beam: the rotation w = x, psi = 1 by
-    !! the mean psi; then the translations of w, and of u_s for the beam, by their first
-    !! coefficient): K annihilates them exactly, but in floating point K times a large
-    !! rigid settlement leaves round-off of eps |K| |v|, which for a structure much stiffer than
-    !! the soil swamps the forces the soil exerts (the stiff-structure case of issue 7).
+    !> A0 z (in rigid coordinates K acts on the flexural part only: see rigid_body).
     pure function linear_part(d, sys, z) result(lin)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: z(:)
         real(dp) :: lin(d%n)
-        lin = a0_times(sys, [flexible_part(sys, z(1:d%nv)), z(d%nv + 1:)], z)
+        lin = a0_times(sys, z, z)
     end function linear_part
-
-    !> v less its rigid-body part, which K annihilates.
-    pure function flexible_part(sys, v_in) result(v)
-        type(system_t), intent(in) :: sys
-        real(dp), intent(in) :: v_in(:)
-        real(dp) :: v(size(v_in))
-        real(dp) :: theta
-        integer :: k
-        v = v_in
-        if (allocated(sys%rotation_w)) then
-            associate (i1 => sys%psi_range(1), i2 => sys%psi_range(2), &
-                       j1 => sys%translation(1, 1), j2 => sys%translation(2, 1))
-                theta = sum(v(i1:i2))/real(i2 - i1 + 1, dp)
-                v(i1:i2) = v(i1:i2) - theta
-                v(j1:j2) = v(j1:j2) - theta*sys%rotation_w
-            end associate
-        end if
-        do k = 1, size(sys%translation, 2)
-            associate (i1 => sys%translation(1, k), i2 => sys%translation(2, k))
-                v(i1:i2) = v(i1:i2) - v(i1)
-            end associate
-        end do
-    end function flexible_part
 
     !> Coefficients of the function x in a basis (it reproduces linear functions): nodal values
     !! for P1 and P2, Greville abscissae (t(i+1) + t(i+2))/2 for the quadratic B-splines.
@@ -518,6 +513,16 @@ contains
                 dg(iz) = dg(iz) + fz*pts%wt(p)*pts%val(1:pts%nl(2), 2, p)**2
             end associate
         end do points
+        if (sys%rigid_coordinates) then
+            ! the compatibility rows of the rigid modes have diagonal 0: theirs is taken from
+            ! the Schur complement onto the mode amplitudes, (MR)^T D^-1 (MR), so that their
+            ! Jacobi correction is a displacement like the others'
+            do i = 1, sys%rigid%np
+                associate (mr => sys%a0(d%nv + 1:, sys%rigid%pinned(i)), dr => dg(d%nv + 1:))
+                    dg(sys%rigid%pinned(i)) = sum(mr**2/abs(dr), mask=dr /= 0.0_dp)
+                end associate
+            end do
+        end if
         dg(d%fixed) = 1.0_dp
     end function jacobian_diagonal
 

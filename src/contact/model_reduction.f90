@@ -27,6 +27,7 @@ module model_reduction
     use mesh, only: mesh_t
     use discretization, only: discretization_t
     use contact_system, only: system_t, contact_points_t, sparse_blocks
+    use rigid_body, only: new_rigid
     implicit none
     private
 
@@ -237,12 +238,11 @@ contains
         sr%law = sys%law
         if (red%half) then
             ! only the translation of w is symmetric (u_s odd, the rotation antisymmetric)
-            sr%translation = reshape([dr%offset(FIELD_W) + 1, dr%offset(FIELD_PSI)], [2, 1])
+            sr%rigid = new_rigid(dr%nv, reshape([dr%offset(FIELD_W) + 1, dr%offset(FIELD_PSI)], &
+                                                [2, 1]), [0, 0])
         else
             ! only tractions dropped: the displacement numbering is the full one
-            sr%translation = sys%translation
-            sr%psi_range = sys%psi_range
-            if (allocated(sys%rotation_w)) sr%rotation_w = sys%rotation_w
+            sr%rigid = sys%rigid
         end if
         call sparse_blocks(dr%nv, sr)
     end function reduced_system

@@ -2,17 +2,15 @@
 !!
 !! The Jacobian of the complete problem is J = [K M^T; M B(sets)]: K (the structure) is
 !! banded and constant, M constant, and only B = -(T + c eps0 S0) + (set terms at the
-!! interface's Gauss points) changes between Newton steps. K is singular (the rigid-body modes
-!! of the structure: w = const; for the beam also u = const and the rotation psi = 1, w = x),
-!! so a few "pinned" displacement unknowns that fix those modes (plate: the first w; beam: the
-!! first u, first and last w) are kept with the tractions, and the other displacement
-!! unknowns ("inner", ordered node by node so that their K block is banded) are eliminated
-!! once per case:
+!! interface's Gauss points) changes between Newton steps. The system is in rigid coordinates
+!! (rigid_body): the "pinned" displacement unknowns (plate: the first w; beam: the first u,
+!! first and last w) are the amplitudes of the rigid-body modes, their rows and columns of K
+!! are exactly 0 and their rows carry the load compatibility (M R)^T r = R^T q. They are
+!! kept with the tractions, and the other displacement unknowns ("inner", ordered node by
+!! node so that their K block is banded) are eliminated once per case:
 !!   S0 = J(kept, kept) - J(kept, inner) K_ii^-1 J(inner, kept),
-!! with K_ii = L L^T by banded Cholesky (dpbtrf). K annihilates the rigid-body modes, which
-!! the pinned unknowns span, so the pinned-pinned block of S0 is zero (set exactly: computed,
-!! it would be round-off of eps |K|, large for a stiff structure). The pinned rows of S0 carry
-!! the load-compatibility constraint (the structure's rigid-body equilibrium).
+!! with K_ii = L L^T by banded Cholesky (dpbtrf); J(inner, pinned) = 0, so the pinned rows of
+!! S0 are (M R)^T, not a difference of large numbers, and the pinned-pinned block is 0.
 !! Each Newton step then adds the set terms to S0 and factorises the kept block only (LDL^T
 !! when symmetric, else LU, after the symmetric diagonal scaling), about (nr/n)^3 of the
 !! flops of factorising J; v follows by two banded solves. Two steps of iterative refinement
@@ -90,7 +88,7 @@ contains
         ! one to one; a reduced model (model_reduction: half a beam) numbers fewer: dense path
         if (sum(d%basis(FIELD_U:FIELD_PSI)%n_dof) /= d%nv) return
         sc%fixed(d%fixed) = .true.
-        pinned = pinned_unknowns(sys)
+        pinned = sys%rigid%pinned
         if (any(sc%fixed(pinned))) return
         sc%n_pinned = size(pinned)
         sc%inner = inner_order(d, sc%fixed, pinned)
@@ -106,15 +104,6 @@ contains
         call coupling_nonzeros(sys, sc)
         call form_s0(sys, sc)
     end subroutine new_schur
-
-    !> Displacement unknowns that fix the rigid-body modes: the first of each translation
-    !! range (w; beam: u_s), and for the beam the last w (with the first, the rotation).
-    pure function pinned_unknowns(sys) result(pinned)
-        type(system_t), intent(in) :: sys
-        integer, allocatable :: pinned(:)
-        pinned = sys%translation(1, :)
-        if (allocated(sys%rotation_w)) pinned = [pinned, sys%translation(2, 1)]
-    end function pinned_unknowns
 
     !> The free, unpinned displacement unknowns node by node: the fields u_s, w, psi merged
     !! by relative position in their own numbering (each field's coefficients are ordered

@@ -217,7 +217,9 @@ contains
         call system_for_sets(d, sys, sol, a, rhs)
         res = matmul(a, sol%z) - rhs
         do i = 1, d%n
-            res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(sys%a0(i, i)/a(i, i)))**0.5_dp
+            ! (a rigid-body compatibility row has diagonal 0 in both: weight 1)
+            if (a(i, i) /= 0.0_dp) &
+                res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(sys%a0(i, i)/a(i, i)))**0.5_dp
         end do
         merit = norm2(res)
     end function merit

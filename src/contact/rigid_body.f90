@@ -1,0 +1,107 @@
+!> Rigid-body coordinates of the structure (issue 7 item 4: stiff structures).
+!!
+!! K annihilates the structure's rigid-body modes (translations; for the beam also the
+!! rotation psi = 1, w = x). For a structure much stiffer than the soil the displacement is a
+!! large rigid motion plus a flexural part smaller by the stiffness ratio; stored as absolute
+!! coefficients, the flexural part keeps only eps |v| of absolute precision, and K times it
+!! leaves round-off of eps |K| |v|, which can exceed the forces the soil exerts (rho = 1e6,
+!! zeta = 0.001: 4e-2 of the load). The solvers therefore work in rigid coordinates:
+!!   v = R a + v',   a = the "pinned" unknowns (one per mode), v'(pinned) = 0,
+!! where the columns of R are the rigid modes, each 1 at its own pinned unknown and 0 at the
+!! others. The unknown vector keeps its layout: its pinned entries hold a, the other
+!! displacement entries v'. With P the map z -> z_absolute, the equations become
+!! P^T F(P z) = 0: K R = 0 and R^T K = 0 are set exactly (not computed), so the rows of the
+!! pinned unknowns are the load compatibility R^T (M^T r - q) = 0 (the structure's rigid-body
+!! equilibrium: statics) and the traction rows see M v = M v' + (M R) a. The matrix stays
+!! symmetric; the flexural part is solved for directly, to the precision of its own size.
+module rigid_body
+    use kinds, only: dp
+    implicit none
+    private
+
+    !> The rigid-body modes of one discretised structure.
+    type, public :: rigid_t
+        integer :: np = 0                    !! number of modes (0: none, absolute coordinates)
+        integer, allocatable :: pinned(:)    !! the displacement unknown fixing each mode
+        real(dp), allocatable :: modes(:, :) !! R (nv x np): mode k is 1 at pinned(k), 0 at
+                                             !! the other pinned unknowns
+    end type rigid_t
+
+    public :: new_rigid, to_rigid_coordinates, to_absolute
+
+contains
+
+    !> The modes from the unknown ranges of the translations (translation(:, k) = first, last
+    !! unknown of the field) and, for the beam, the rotation (psi = 1 on psi_range with
+    !! w = x: rotation_w, the coefficients of x in the w basis, on the first translation's
+    !! range). Pinned: the first unknown of each translation; with the rotation also the last
+    !! w, the two w modes then being the end values of a rigid w = alpha + beta x.
+    pure function new_rigid(nv, translation, psi_range, rotation_w) result(rb)
+        integer, intent(in) :: nv
+        integer, intent(in) :: translation(:, :)
+        integer, intent(in) :: psi_range(2)
+        real(dp), intent(in), optional :: rotation_w(:)
+        type(rigid_t) :: rb
+        integer :: k
+        real(dp) :: span
+        rb%np = size(translation, 2)
+        if (present(rotation_w)) rb%np = rb%np + 1
+        allocate (rb%pinned(rb%np), rb%modes(nv, rb%np))
+        rb%modes = 0.0_dp
+        do k = 1, size(translation, 2)
+            rb%pinned(k) = translation(1, k)
+            rb%modes(translation(1, k):translation(2, k), k) = 1.0_dp
+        end do
+        if (.not. present(rotation_w)) return
+        associate (w1 => translation(1, 1), w2 => translation(2, 1), x => rotation_w)
+            span = x(size(x)) - x(1)
+            rb%pinned(rb%np) = w2
+            ! w = (x_last - x)/span, psi = -1/span: 1 at the first w, 0 at the last
+            rb%modes(w1:w2, 1) = (x(size(x)) - x)/span
+            rb%modes(psi_range(1):psi_range(2), 1) = -1.0_dp/span
+            ! w = (x - x_first)/span, psi = 1/span: 0 at the first w, 1 at the last
+            rb%modes(w1:w2, rb%np) = (x - x(1))/span
+            rb%modes(psi_range(1):psi_range(2), rb%np) = 1.0_dp/span
+            rb%modes(w1, rb%np) = 0.0_dp
+            rb%modes(w2, rb%np) = 1.0_dp
+            rb%modes(w2, 1) = 0.0_dp
+            rb%modes(w1, 1) = 1.0_dp
+        end associate
+    end function new_rigid
+
+    !> a <- P^T a P and q <- P^T q for the base matrix a = [K M^T; M B] (nv displacement
+    !! unknowns first) and the structural loads q; K R = 0 and R^T K = 0 exactly.
+    pure subroutine to_rigid_coordinates(rb, nv, a, q)
+        type(rigid_t), intent(in) :: rb
+        integer, intent(in) :: nv
+        real(dp), intent(inout) :: a(:, :)
+        real(dp), intent(inout) :: q(:)
+        real(dp), allocatable :: mr(:, :), rq(:)
+        integer :: k
+        if (rb%np == 0) return
+        mr = matmul(a(nv + 1:, 1:nv), rb%modes)     ! M R: the modes seen by the tractions
+        rq = matmul(q, rb%modes)
+        do k = 1, rb%np
+            a(1:nv, rb%pinned(k)) = 0.0_dp
+            a(rb%pinned(k), 1:nv) = 0.0_dp
+            a(nv + 1:, rb%pinned(k)) = mr(:, k)
+            a(rb%pinned(k), nv + 1:) = mr(:, k)
+            q(rb%pinned(k)) = rq(k)
+        end do
+    end subroutine to_rigid_coordinates
+
+    !> The absolute unknowns of z in rigid coordinates (the tractions are unchanged).
+    pure function to_absolute(rb, z) result(z_abs)
+        type(rigid_t), intent(in) :: rb
+        real(dp), intent(in) :: z(:)
+        real(dp) :: z_abs(size(z))
+        real(dp), allocatable :: amplitude(:)
+        integer :: nv
+        z_abs = z
+        if (rb%np == 0) return
+        nv = size(rb%modes, 1)
+        amplitude = z(rb%pinned)
+        z_abs(rb%pinned) = 0.0_dp
+        z_abs(1:nv) = z_abs(1:nv) + matmul(rb%modes, amplitude)
+    end function to_absolute
+end module rigid_body
