@@ -16,10 +16,13 @@
 !!   pattern met in the last 16 iterates (a cycle) is replaced by the exact line search along
 !!   it; a full step that keeps the set pattern is always taken (it solves F = 0);
 !! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once, or a
-!!   damped step no longer moves), from the adhesive start: eps_bar and eta_bar both scaled by
-!!   10^s, s = 3, 2, 1, 0, each stage started from the previous solution (a failed stage is
-!!   retried from the last converged one with half the decrement; if the first fails, or the
-!!   decrement falls below 1/8 decade, the case ends with status 2).
+!!   damped step no longer moves), from the adhesive start: eps_bar scaled by 10^s from
+!!   max(10^3 eps_bar, 1e-3) (at most 0.5) down to the deck's, eta_bar by 10^min(s, 3), each
+!!   stage started from the previous solution, one decade per stage (doubled, up to 4, after
+!!   a stage of at most 3 steps while s > 3: eps_bar = 1e-12 spans 9 decades). A failed stage
+!!   is retried from the last converged one with half the decrement; a failed first stage
+!!   from one decade more regularisation; the case ends with status 2 when the decrement falls
+!!   below 1/8 decade or the first stage fails at eps_bar = 0.5.
 !! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
 !! then linear between the iterates and the step solves F = 0) or the merit is at round-off,
 !! and the residual of 4.2a is below 1e-12 of the load or no longer halves (further exact
@@ -53,6 +56,8 @@ module newton_method
     integer, parameter :: memory = 16               !! set patterns kept for cycle detection
     real(dp), parameter :: top_level = 3.0_dp       !! continuation starts at 10^3 eps, eta
     real(dp), parameter :: min_decrement = 0.125_dp !! smallest continuation step (decades)
+    real(dp), parameter :: max_decrement = 4.0_dp   !! largest continuation step (decades)
+    integer, parameter :: quick_stage = 3           !! a stage this short doubles the step
 
     !> Merit bookkeeping of one Newton stage.
     type :: newton_state_t
@@ -135,8 +140,10 @@ contains
         sol%n_factorisations = sol%n_factorisations + 1
     end subroutine adhesive_start
 
-    !> Stages s = top_level .. 0 (eps_bar, eta_bar times 10^s) from sol%z; a stage that fails
-    !! is retried from the last converged one with half the decrement.
+    !> Stages from eps_bar = max(10^3 eps_bar, 1e-3) down to the deck's (stage_law) from
+    !! sol%z, the decrement doubled after a quick stage; a stage that fails is retried from
+    !! the last converged one with half the decrement, a first stage that fails from a
+    !! regularisation one decade larger (up to eps_bar = 0.5).
     subroutine continuation(m, d, sys, sc, fac, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -147,16 +154,17 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_good(:)
         real(dp) :: level, good_level, step
-        integer :: stage
+        integer :: stage, solves_before
         logical :: converged
         character(len=200) :: text
-        level = top_level
+        level = max(top_level, log10(1.0e-3_dp/m%eps_bar))
         good_level = huge(1.0_dp)
         step = 1.0_dp
         z_good = sol%z
         stage = 1
         stages: do
             stage = stage + 1
+            solves_before = sol%n_solves
             call newton_stage(d, sys, sc, fac, stage_law(m, sys, level), stage, m%max_inner, &
                               .true., sol, converged, err)
             if (allocated(err)) return
@@ -164,10 +172,16 @@ contains
                 if (level <= 0.0_dp) return
                 good_level = level
                 z_good = sol%z
+                if (sol%n_solves - solves_before <= quick_stage .and. level > top_level) &
+                    step = min(2.0_dp*step, max_decrement)
                 level = max(level - step, 0.0_dp)
+            else if (good_level == huge(1.0_dp)) then
+                if (m%eps_bar*10.0_dp**level >= 0.5_dp) exit stages
+                level = level + 1.0_dp
+                sol%z = z_good
             else
                 step = 0.5_dp*step
-                if (good_level == huge(1.0_dp) .or. step < min_decrement) exit stages
+                if (step < min_decrement) exit stages
                 sol%z = z_good
                 level = max(good_level - step, 0.0_dp)
             end if
@@ -178,14 +192,15 @@ contains
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine continuation
 
-    !> The deck's law with eps_bar and eta_bar scaled by 10^level (eps_bar at most 0.5).
+    !> The deck's law with eps_bar scaled by 10^level (at most 0.5) and eta_bar by
+    !! 10^min(level, top_level).
     pure function stage_law(m, sys, level) result(law)
         type(model_t), intent(in) :: m
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: level
         type(law_t) :: law
         law = new_law(m, sys%c, min(m%eps_bar*10.0_dp**level, 0.5_dp), &
-                      m%eta_bar*10.0_dp**level)
+                      m%eta_bar*10.0_dp**min(level, top_level))
     end function stage_law
 
     !> Newton iterations for one law from sol%z; converged tells whether it stopped on a
