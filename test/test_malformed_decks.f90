@@ -39,7 +39,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 73
+    integer, parameter :: n_decks = 74
 
 contains
 
@@ -94,6 +94,9 @@ contains
         call add('columns', 'field_straddles.dat', ':7:21-30:', &
                  "STRUCTURE nu (Poisson's ratio of the structure): expected one number, got "// &
                  "'E6    0.2'")
+        ! line 5 'UNITS     kilonewtonsm': f1 (columns 11-20) 'kilonewton' runs into f2 'sm'
+        call add('columns', 'label_straddles.dat', ':5:11-20:', &
+                 'UNITS force label runs past column 20 into the next field')
         ! line 6 '  GEOMETRY ...': the name starts in column 3; columns 3-10 marked
         call add('columns', 'name_indented.dat', ':6:3-10:', &
                  "card name 'GEOMETRY' starts in column 3")

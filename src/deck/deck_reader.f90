@@ -1250,10 +1250,20 @@ contains
         integer, intent(in) :: j
         character(len=*), intent(in) :: what
         character(len=*), intent(inout) :: label
-        character(len=field_width) :: word
+        character(len=field_width) :: word, this, next
         integer :: s
-        call read_word_field(field_text(cd%text, j), word, s)
-        if (s == FIELD_BAD) then
+        this = field_text(cd%text, j)
+        call read_word_field(this, word, s)
+        next = ''
+        if (j < max_fields) next = field_text(cd%text, j + 1)
+        if (this(field_width:field_width) /= ' ' .and. next(1:1) /= ' ') then
+            ! a longer word would be cut at the field's end and its tail read as the next
+            ! field (UNITS kilonewtonsm: 'kilonewton' and 'sm')
+            call field_error(st, cd, j, what//' runs past column '// &
+                             int_text(field_first_column(j) + field_width - 1)// &
+                             ' into the next field ('''//trim(field_value(cd, j))// &
+                             trim(next)//'''...): a label has at most 10 characters')
+        else if (s == FIELD_BAD) then
             call field_error(st, cd, j, what//' must be one word, got '''// &
                              field_value(cd, j)//'''')
         else if (s == FIELD_OK) then
