@@ -64,6 +64,7 @@ module adaptive_solve
         real(dp), allocatable :: rel(:)         !! relative estimate per entry (-1: none)
         real(dp) :: estimate = -1.0_dp          !! largest relative estimate (huge: undefined)
         real(dp), allocatable :: boundary(:)    !! located contact and stick/slip boundaries
+        logical, allocatable :: liftoff(:)      !! per boundary: a contact (lift-off) one
         real(dp), allocatable :: eta(:)         !! (ne) element indicators
         real(dp), allocatable :: targets(:)     !! positions of key results not yet at tol
         logical, allocatable :: rough(:)        !! (ne) next to a feature
@@ -71,7 +72,11 @@ module adaptive_solve
 
     integer, parameter :: max_cycles = 25
     integer, parameter :: min_coarse = 4        !! elements of the coarsest estimate mesh
-    real(dp), parameter :: theta = 0.5_dp       !! marked: eta_e >= theta max eta
+    real(dp), parameter :: theta = 0.3_dp       !! marked: eta_e >= theta max eta
+    !> smallest element, relative to l or a: grading towards a singular end stops there (the
+    !! round-off of the solve grows like 1/h_e, doc/CHOICES.md "Accuracy guard"; the rim
+    !! element's share of the error of W(0) is already O(h_min))
+    real(dp), parameter :: h_min = 1.0e-4_dp
     real(dp), parameter :: theta_feature = 0.05_dp  !! features: eta_e >= this max eta
 
     public :: solve_adaptive, relative_errors, adaptation_lines
@@ -93,6 +98,7 @@ contains
         type(mesh_t) :: next
         character(len=200) :: text
         integer :: k
+        logical :: short
         call start_record(m, info)
         d_try = d
         cycles: do k = 1, max_cycles
@@ -112,10 +118,10 @@ contains
             call assess(m, d, sol, a)
             call record_cycle(info, d%msh%ne, a)
             if (info%reached) exit cycles
-            call next_mesh(m, d, a, next)
-            if (next%ne == d%msh%ne .and. all(next%x == d%msh%x)) then
-                if (d%msh%ne >= m%adapt_max_ne) then
-                    info%note = 'max_elements reached'
+            call next_mesh(m, d, a, next, short)
+            if (same_mesh(next, d%msh)) then
+                if (short) then
+                    info%note = 'max_elements reached (the next refinement would exceed it)'
                 else
                     info%note = 'no further refinement possible'
                 end if
@@ -125,6 +131,12 @@ contains
         end do cycles
         if (k > max_cycles) info%note = 'the largest number of cycles was reached'
     end subroutine solve_adaptive
+
+    pure logical function same_mesh(a, b)
+        type(mesh_t), intent(in) :: a, b
+        same_mesh = a%ne == b%ne
+        if (same_mesh) same_mesh = all(a%x == b%x)
+    end function same_mesh
 
     subroutine start_record(m, info)
         type(model_t), intent(in) :: m
@@ -178,7 +190,7 @@ contains
         if (allocated(err)) error stop 'adaptive_solve: a solved case could not be tabulated'
         s = summarise(m, sol, tab)
         a%e = summary_entries(m, s, contact_extent(tab, m%length))
-        a%boundary = located_boundaries(sol)
+        call locate_boundaries(sol, a%boundary, a%liftoff)
         call coarse_estimates(m, d, a, e2, e4, tab2, ok)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere
         if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
@@ -214,7 +226,7 @@ contains
         if (ok) call case_entries(m, d4, e4, tab4, ok)
         if (.not. ok) return
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
-        floor = extent_floor(m, d, a%e, a%boundary)
+        floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
         call attach_estimates(a%e, e2, e4, ratio, floor)
     end subroutine coarse_estimates
 
@@ -232,10 +244,9 @@ contains
     end function pins
 
     !> The contact extent is a node: its error is at least the distance (as t) between that
-    !! node and the nearest located boundary (0 when no boundary is located: full contact).
-    pure real(dp) function extent_floor(m, d, e, boundary) result(floor)
+    !! node and the nearest located lift-off boundary (0 when there is none: full contact).
+    pure real(dp) function extent_floor(m, e, boundary) result(floor)
         type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
         type(entry_t), intent(in) :: e(:)
         real(dp), intent(in) :: boundary(:)
         real(dp) :: t
@@ -247,7 +258,6 @@ contains
             t = e(i)%value*m%length
             floor = minval(abs(boundary - t))/m%length
         end do
-        if (d%msh%ne < 1) floor = 0.0_dp
     end function extent_floor
 
     !> Each estimated result's estimate relative to its scale (-1 where there is none):
@@ -294,25 +304,28 @@ contains
 
     !> Contact and stick/slip boundaries between neighbouring Gauss points whose states
     !! differ (see the module header for the position within the gap between them).
-    pure function located_boundaries(sol) result(x)
+    pure subroutine locate_boundaries(sol, x, liftoff)
         type(solution_t), intent(in) :: sol
-        real(dp), allocatable :: x(:)
+        real(dp), allocatable, intent(out) :: x(:)
+        logical, allocatable, intent(out) :: liftoff(:)   !! a contact (not stick/slip) boundary
         real(dp), allocatable :: q(:)
         logical, allocatable :: contact(:), stick(:)
         integer :: p
-        allocate (x(0))
+        allocate (x(0), liftoff(0))
         contact = sol%state /= STATE_LIFTOFF
         stick = sol%state == STATE_STICK
         q = max(sol%sigma(2, :), 0.0_dp)
         points: do p = 1, sol%pts%n - 1
             if (contact(p) .neqv. contact(p + 1)) then
                 x = [x, zero_between(sol%pts%x, q, contact, p)]
+                liftoff = [liftoff, .true.]
             else if (contact(p) .and. (stick(p) .neqv. stick(p + 1))) then
                 x = [x, zero_between(sol%pts%x, max(sol%tau0 - abs(sol%sigma(1, :)), 0.0_dp), &
                                      stick, p)]
+                liftoff = [liftoff, .false.]
             end if
         end do points
-    end function located_boundaries
+    end subroutine locate_boundaries
 
     !> Zero of q (positive where inside) between points p and p+1, extrapolated from the two
     !! points nearest to the boundary on the inside with q^2 linear in x (a square-root edge),
@@ -413,7 +426,7 @@ contains
             case ('pressure_near_right_end', 'pressure_near_rim')
                 x = [x, d%msh%x(d%msh%ne) - s%edge_distance]
             case ('contact_extent_t')
-                x = [x, a%boundary]
+                x = [x, pack(a%boundary, a%liftoff)]
             end select
         end do
     end function target_positions
@@ -442,20 +455,25 @@ contains
 
     !> The next mesh: nodes snapped onto the located boundaries, then the marked elements
     !! bisected (within the max_elements budget; the unchanged mesh when none is left).
-    subroutine next_mesh(m, d, a, next)
+    subroutine next_mesh(m, d, a, next, short)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(assessment_t), intent(in) :: a
         type(mesh_t), intent(out) :: next
+        logical, intent(out) :: short        !! max_elements left no room for the marks
         logical, allocatable :: marked(:), pinned(:)
         integer :: k, node, budget
         next = d%msh
         budget = m%adapt_max_ne - d%msh%ne
+        short = .true.
         if (budget <= 0) return
         marked = element_marks(d, a)
+        short = .not. any(marked)
         call fit_budget(d%msh, a%eta, budget, marked)
+        short = .not. (short .or. any(marked))
         if (.not. any(marked)) return
-        pinned = pinned_nodes(next, load_positions(m))
+        allocate (pinned(0:next%ne))     ! node numbers from 0, as the mesh's
+        pinned(:) = pinned_nodes(next, load_positions(m))
         do k = 1, size(a%boundary)
             call snap_node(next, a%boundary(k), pinned, node)
             if (node >= 0) pinned(node) = .true.
@@ -463,20 +481,25 @@ contains
         next = bisected(next, marked)
     end subroutine next_mesh
 
-    !> Marks: large indicators, the targets of results above tol, the features.
+    !> Marks: large indicators, the targets of results above tol, the features; never an
+    !! element shorter than 2 h_min (the indicators compared among the others).
     pure function element_marks(d, a) result(marked)
         type(discretization_t), intent(in) :: d
         type(assessment_t), intent(in) :: a
         logical :: marked(d%msh%ne)
+        logical :: allowed(d%msh%ne)
         real(dp) :: eta_max
         integer :: k, e
-        eta_max = maxval(a%eta)
+        allowed = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1)) >= &
+                  2.0_dp*h_min*(d%msh%x(d%msh%ne) - d%msh%x(0))
+        eta_max = maxval(a%eta, mask=allowed)
         marked = a%eta >= theta*eta_max
         marked = marked .or. (a%rough .and. a%eta >= theta_feature*eta_max)
         do k = 1, size(a%targets)
             e = min(d%msh%ne, max(1, count(d%msh%x(1:d%msh%ne - 1) < a%targets(k)) + 1))
             marked(max(1, e - 1):min(d%msh%ne, e + 1)) = .true.
         end do
+        marked = marked .and. allowed
     end function element_marks
 
     !> Keep the marks (after the size-ratio balance) within the budget of new elements: the
@@ -523,8 +546,8 @@ contains
     !> The report's lines on the adaptation.
     pure function adaptation_lines(info) result(lines)
         type(adaptation_t), intent(in) :: info
-        character(len=120), allocatable :: lines(:)
-        character(len=120) :: buf
+        character(len=400), allocatable :: lines(:)
+        character(len=400) :: buf
         integer :: k
         allocate (lines(0))
         if (.not. info%adapted) return
@@ -539,9 +562,9 @@ contains
         end if
         lines = [lines, buf]
         if (info%reached) then
-            lines = [character(len=120) :: lines, 'tolerance reached']
+            lines = [character(len=400) :: lines, 'tolerance reached']
         else
-            lines = [character(len=120) :: lines, 'TOLERANCE NOT REACHED: '//info%note]
+            lines = [character(len=400) :: lines, 'TOLERANCE NOT REACHED: '//info%note]
         end if
         do k = 1, size(info%history_ne)
             write (buf, '(a,i3,a,i6,a,es9.2)') 'cycle ', k, ': N_e = ', info%history_ne(k), &

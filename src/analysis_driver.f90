@@ -357,13 +357,15 @@ contains
                 end do
             end do
             if (a%reached) return
+            ! the reason (a failed refined solve quotes its message) goes in the report's
+            ! adaptation lines; the warning stays within one warning line
             if (a%estimate >= 0.0_dp) then
                 write (text, '(a,es9.2,a,es9.2,a,i0,a)') 'ADAPT tolerance ', a%tol, &
                     ' not reached: largest estimated relative error ', a%estimate, &
-                    ' ('//a%worst//') at N_e = ', a%ne, ' ('//a%note//')'
+                    ' ('//a%worst//') at N_e = ', a%ne, '; see the report, section 2'
             else
                 write (text, '(a,es9.2,a,i0,a)') 'ADAPT tolerance ', a%tol, &
-                    ' not reached: no error estimate at N_e = ', a%ne, ' ('//a%note//')'
+                    ' not reached: no error estimate at N_e = ', a%ne, '; see the report, section 2'
             end if
             r%warnings = [character(len=warning_length) :: r%warnings, text]
         end associate

@@ -646,7 +646,7 @@ contains
         type(summary_t), intent(in) :: s
         type(error_t), allocatable, intent(out) :: err
         type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
-        character(len=120), allocatable :: adapt_text(:)
+        character(len=400), allocatable :: adapt_text(:)
         integer :: u, i
         allocate (adapt_text(0))
         if (present(adaptation)) adapt_text = adaptation_lines(adaptation)
