@@ -19,8 +19,11 @@ program work_precision
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
                      complete_model
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
-    use discretization, only: discretization_t, new_discretization
+    use discretization, only: discretization_t, new_discretization, discretise_mesh
+    use mesh, only: mesh_t
+    use mesh_refinement, only: bisected
     use contact_solver, only: solution_t, solve_contact
+    use adaptive_solve, only: adaptation_t, solve_adaptive
     use station_results, only: station_table_t, tabulate, contact_extent
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, column_t, nondim_columns, column_index
     implicit none
@@ -28,10 +31,15 @@ program work_precision
     integer, parameter :: n_q = 5               !! W(0), Sigma_z(0), max Sigma_z, max |M|, extent
     character(len=*), parameter :: q_names(n_q) = [character(len=12) :: 'W(0)', 'Sigma_z(0)', &
                                                    'max_Sigma_z', 'max|M|', 'extent']
-    integer, parameter :: n_disc = 6
+    integer, parameter :: n_disc = 7
     character(len=*), parameter :: disc_names(n_disc) = [character(len=14) :: 'P1-UNIFORM', &
-        'P1-EDGES', 'P1-LOADS', 'P2-UNIFORM', 'S2-UNIFORM', 'S2w-P1tr-LOADS']
+        'P1-EDGES', 'P1-LOADS', 'P2-UNIFORM', 'S2-UNIFORM', 'S2w-P1tr-LOADS', 'P1-ADAPT']
     integer, parameter :: ne_list(5) = [10, 20, 40, 80, 160]
+    !> the adaptive family: ADAPT tolerances, from a 16-element uniform mesh
+    real(dp), parameter :: tol_list(5) = [1.0e-2_dp, 3.0e-3_dp, 1.0e-3_dp, 3.0e-4_dp, 1.0e-4_dp]
+    integer, parameter :: adapt_start = 16, adapt_max = 2000
+    !> uniform P1 continued to where it reaches 1e-4 (the issue's comparison)
+    integer, parameter :: ne_long(3) = [320, 640, 1280]
     character(len=256) :: out_dir
     integer :: k
 
@@ -84,30 +92,51 @@ contains
         case (6)
             m%grading = 'LOADS'
             m%interp(2:3) = INTERP_S2
+        case (7)
+            m%ne = adapt_start
+            m%adapt_tol = tol_list(ne)      ! ne: the index into tol_list
+            m%adapt_max_ne = adapt_max
         end select
         call complete_model(m)
     end function discretised
 
     !> Solve; q: the quantities (nondimensional), seconds: in-process wall time of the
     !! discretisation and the solve; unknowns; ok false if not solved.
-    subroutine measure(m, q, seconds, unknowns, ok)
+    subroutine measure(m, q, seconds, unknowns, ok, ne_final, given, final_mesh)
         type(model_t), intent(in) :: m
         real(dp), intent(out) :: q(n_q), seconds
         integer, intent(out) :: unknowns
         logical, intent(out) :: ok
+        integer, intent(out), optional :: ne_final      !! elements of the (final) mesh
+        type(mesh_t), intent(in), optional :: given     !! solve on this mesh instead
+        type(mesh_t), intent(out), optional :: final_mesh
         type(discretization_t) :: d
         type(solution_t) :: sol
         type(station_table_t) :: tab
         type(error_t), allocatable :: err
         type(column_t), allocatable :: cols(:)
+        type(adaptation_t) :: info
         integer(int64) :: t0, t1, rate
         integer :: i0
         call system_clock(t0, rate)
-        call new_discretization(m, d, err)
-        if (.not. allocated(err)) call solve_contact(m, d, sol, err)
+        if (present(given)) then
+            call discretise_mesh(m, given, d)
+        else
+            call new_discretization(m, d, err)
+        end if
+        if (.not. allocated(err)) then
+            if (m%adapt_tol > 0.0_dp) then
+                ! the whole adaptation: every cycle's solve and its two estimate solves
+                call solve_adaptive(m, d, sol, info, err)
+            else
+                call solve_contact(m, d, sol, err)
+            end if
+        end if
         call system_clock(t1)
         seconds = real(t1 - t0, dp)/real(rate, dp)
         unknowns = d%n
+        if (present(ne_final)) ne_final = d%msh%ne
+        if (present(final_mesh)) final_mesh = d%msh
         ok = .not. allocated(err)
         q = 0.0_dp
         if (.not. ok) return
@@ -124,17 +153,48 @@ contains
         q(5) = contact_extent(tab, m%length)
     end subroutine measure
 
-    !> Reference: Richardson from P1 LOADS at 160, 320, 640; uncertainty: |ref - q(640)|.
-    subroutine reference(plate, q_ref, uncertainty)
+    !> Reference, two ways, each quantity taken from the one with the smaller uncertainty:
+    !! (a) Richardson from P1 LOADS at 160, 320, 640; (b) the mesh adapted to 1e-4, then
+    !! bisected uniformly once and twice (nested; its contact, slip and load nodes stay nodes),
+    !! Richardson with the observed order. Uncertainty: |reference - finest value|.
+    subroutine reference(plate, q_ref, uncertainty, source)
         logical, intent(in) :: plate
         real(dp), intent(out) :: q_ref(n_q), uncertainty(n_q)
-        real(dp) :: q(n_q, 3), seconds, p, d1, d2
-        integer :: j, unknowns, i
+        character(len=1), intent(out) :: source(n_q)     !! 'a' or 'b'
+        real(dp) :: q(n_q, 3), seconds, ref_b(n_q), unc_b(n_q)
+        type(mesh_t) :: msh
+        integer :: j, unknowns
         logical :: ok
         do j = 1, 3
             call measure(discretised(plate, 3, 160*2**(j - 1)), q(:, j), seconds, unknowns, ok)
             if (.not. ok) error stop 'work_precision: a reference solve failed'
         end do
+        call extrapolate(q, q_ref, uncertainty)
+        source = 'a'
+        call measure(discretised(plate, 7, size(tol_list)), q(:, 1), seconds, unknowns, ok, &
+                     final_mesh=msh)
+        if (.not. ok) return
+        do j = 2, 3
+            msh = bisected(msh, spread(.true., 1, msh%ne))
+            call measure(discretised(plate, 1, msh%ne), q(:, j), seconds, unknowns, ok, &
+                         given=msh)
+            if (.not. ok) return
+        end do
+        call extrapolate(q, ref_b, unc_b)
+        where (unc_b < uncertainty)
+            q_ref = ref_b
+            uncertainty = unc_b
+            source = 'b'
+        end where
+    end subroutine reference
+
+    !> Richardson from three nested meshes (ratio 2) with the observed order in [0.5, 4]
+    !! (1 if not monotone); the extent, which moves by nodes, is not extrapolated.
+    subroutine extrapolate(q, q_ref, uncertainty)
+        real(dp), intent(in) :: q(n_q, 3)
+        real(dp), intent(out) :: q_ref(n_q), uncertainty(n_q)
+        real(dp) :: p, d1, d2
+        integer :: i
         do i = 1, n_q
             d1 = q(i, 3) - q(i, 2)
             d2 = q(i, 2) - q(i, 1)
@@ -144,39 +204,48 @@ contains
             q_ref(i) = q(i, 3) + d1/(2.0_dp**p - 1.0_dp)
             if (i == 5) q_ref(i) = q(i, 3)           ! the extent moves by stations: no extrapolation
             uncertainty(i) = abs(q_ref(i) - q(i, 3))
+            if (i == 5) uncertainty(i) = abs(q(i, 3) - q(i, 2))
         end do
-    end subroutine reference
+    end subroutine extrapolate
 
     subroutine study(plate, out_dir)
         logical, intent(in) :: plate
         character(len=*), intent(in) :: out_dir
         character(len=:), allocatable :: stem
-        real(dp) :: q_ref(n_q), unc(n_q), q(n_q), seconds, err_q(n_q)
-        integer :: u, k, j, i, unknowns
+        real(dp) :: q_ref(n_q), unc(n_q), q(n_q), seconds
+        character(len=1) :: source(n_q)
+        integer :: u, k, j, i, unknowns, ne_final
         logical :: ok
         stem = out_dir//'/work_precision_'//trim(merge('plate', 'beam ', plate))
-        call reference(plate, q_ref, unc)
+        call reference(plate, q_ref, unc, source)
         open (newunit=u, file=stem//'.txt', status='replace', action='write')
         write (u, '(a)') '# work-precision, '//trim(merge('PLATE rho 0.001 zeta 0.1 f 0.6, disk load r <= 0.1 a           ', &
             'BEAM rho 0.001 zeta 0.1 beta 0.05 f 0.6, central load H = 0.1 V', plate))
-        write (u, '(a)') '# reference: Richardson of P1/LOADS N_e 320, 640 (order from 160/320/640)'
+        write (u, '(a)') '# reference (a): Richardson of P1/LOADS N_e 320, 640 (order from 160/320/640)'
+        write (u, '(a)') '# reference (b): the P1-ADAPT mesh of tol 1e-4 bisected once and twice, '// &
+            'Richardson (observed order)'
+        write (u, '(a)') '# each quantity from the one with the smaller uncertainty |ref - finest|'
         do i = 1, n_q
-            write (u, '(a,es14.6,a,es9.2)') '#   '//q_names(i), q_ref(i), '  uncertainty ', unc(i)
+            write (u, '(a,es14.6,a,es9.2,a)') '#   '//q_names(i), q_ref(i), '  uncertainty ', &
+                unc(i), '  ('//source(i)//')'
         end do
         write (u, '(a)') '# errors relative to the reference (extent: absolute, t); time: discretise + solve [s]'
         write (u, '(a)') '# disc            N_e  unknowns   time_s      err_W0      err_Sz0     err_Szmax   err_Mmax    err_extent'
         discretisations: do k = 1, n_disc
             do j = 1, size(ne_list)
-                call measure(discretised(plate, k, ne_list(j)), q, seconds, unknowns, ok)
-                if (.not. ok) then
-                    write (u, '(a16,i5,i9,a)') disc_names(k), ne_list(j), unknowns, '   failed'
-                    cycle
+                if (k == n_disc) then
+                    call measure(discretised(plate, k, j), q, seconds, unknowns, ok, ne_final)
+                else
+                    call measure(discretised(plate, k, ne_list(j)), q, seconds, unknowns, ok, ne_final)
                 end if
-                err_q(1:4) = abs(q(1:4) - q_ref(1:4))/max(abs(q_ref(1:4)), tiny(1.0_dp))
-                err_q(5) = abs(q(5) - q_ref(5))
-                write (u, '(a16,i5,i9,es11.3,5es12.3)') disc_names(k), ne_list(j), unknowns, &
-                    seconds, err_q
+                call write_row(u, disc_names(k), ne_final, unknowns, seconds, q, q_ref, ok)
             end do
+            if (k == 1) then
+                do j = 1, size(ne_long)
+                    call measure(discretised(plate, k, ne_long(j)), q, seconds, unknowns, ok, ne_final)
+                    call write_row(u, disc_names(k), ne_final, unknowns, seconds, q, q_ref, ok)
+                end do
+            end if
             write (u, '(a)') ''
             write (u, '(a)') ''
         end do discretisations
@@ -184,6 +253,22 @@ contains
         write (output_unit, '(a)') 'work_precision: wrote '//stem//'.txt'
         call plot(stem, plate)
     end subroutine study
+
+    !> One row of the table: errors relative to the reference (the extent: absolute).
+    subroutine write_row(u, name, ne, unknowns, seconds, q, q_ref, ok)
+        integer, intent(in) :: u, ne, unknowns
+        character(len=*), intent(in) :: name
+        real(dp), intent(in) :: seconds, q(n_q), q_ref(n_q)
+        logical, intent(in) :: ok
+        real(dp) :: err_q(n_q)
+        if (.not. ok) then
+            write (u, '(a16,i5,i9,a)') name, ne, unknowns, '   failed'
+            return
+        end if
+        err_q(1:4) = abs(q(1:4) - q_ref(1:4))/max(abs(q_ref(1:4)), tiny(1.0_dp))
+        err_q(5) = abs(q(5) - q_ref(5))
+        write (u, '(a16,i5,i9,es11.3,5es12.3)') name, ne, unknowns, seconds, err_q
+    end subroutine write_row
 
     !> stem.png: log error against log time, one curve per discretisation (gnuplot index
     !! blocks), one panel per quantity.

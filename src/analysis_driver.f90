@@ -16,6 +16,7 @@ module analysis_driver
     use atomic_files, only: open_temporary, commit_file
     use plausibility, only: warning_length, input_warnings, settlement_warnings
     use error_estimate, only: estimate_errors
+    use adaptive_solve, only: adaptation_t, solve_adaptive
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten
     use blas_threads, only: set_blas_threads, blas_thread_count
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
@@ -31,6 +32,7 @@ module analysis_driver
         real(dp) :: mean_pressure = 0.0_dp         !! V / contact area [F/L^2] (figures)
         integer :: n_outer = 0, n_inner = 0
         type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
+        type(adaptation_t) :: adaptation           !! what ADAPT did (adapted false without it)
         character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
     end type case_result_t
 
@@ -304,7 +306,9 @@ contains
         result%warnings = input_warnings(m)
         call new_discretization(m, d, err)
         if (.not. allocated(err)) then
-            if (progress_unit >= 0) then
+            if (m%adapt_tol > 0.0_dp) then
+                call solve_adaptive(m, d, sol, result%adaptation, err)
+            else if (progress_unit >= 0) then
                 call solve_contact(m, d, sol, err, progress_unit)
             else
                 call solve_contact(m, d, sol, err)
@@ -325,13 +329,47 @@ contains
             result%warnings = [character(len=warning_length) :: result%warnings, &
                                settlement_warnings(m, s%w_max%value)]
             result%entries = summary_entries(m, s, contact_extent(tab, m%length))
-            if (estimates) call estimate_errors(m, d, result%entries)
+            if (result%adaptation%adapted) then
+                call take_adapted_estimates(result)
+            else if (estimates) then
+                call estimate_errors(m, d, result%entries)
+            end if
             result%mean_pressure = s%mean_pressure
         end if
         !$omp critical (fricon_output)
         call write_case_files(deck, m, d, sol, tab, s, out_dir//'/'//name, figures, result)
         !$omp end critical (fricon_output)
     end subroutine solve_case
+
+    !> The estimates of the adaptation's final cycle (the same mesh and solution as the
+    !! entries) and, when the tolerance was not reached, a warning that says so.
+    subroutine take_adapted_estimates(r)
+        type(case_result_t), intent(inout) :: r
+        character(len=warning_length) :: text
+        integer :: i, k
+        associate (a => r%adaptation)
+            do i = 1, size(r%entries)
+                do k = 1, size(a%entries)
+                    if (a%entries(k)%key /= r%entries(i)%key) cycle
+                    r%entries(i)%has_error = a%entries(k)%has_error
+                    r%entries(i)%error = a%entries(k)%error
+                    r%entries(i)%order = a%entries(k)%order
+                end do
+            end do
+            if (a%reached) return
+            ! the reason (a failed refined solve quotes its message) goes in the report's
+            ! adaptation lines; the warning stays within one warning line
+            if (a%estimate >= 0.0_dp) then
+                write (text, '(a,es9.2,a,es9.2,a,i0,a)') 'ADAPT tolerance ', a%tol, &
+                    ' not reached: largest estimated relative error ', a%estimate, &
+                    ' ('//a%worst//') at N_e = ', a%ne, '; see the report, section 2'
+            else
+                write (text, '(a,es9.2,a,i0,a)') 'ADAPT tolerance ', a%tol, &
+                    ' not reached: no error estimate at N_e = ', a%ne, '; see the report, section 2'
+            end if
+            r%warnings = [character(len=warning_length) :: r%warnings, text]
+        end associate
+    end subroutine take_adapted_estimates
 
     !> The files of one solved or failed case (see solve_case).
     subroutine write_case_files(deck, m, d, sol, tab, s, base, figures, result)
@@ -351,9 +389,10 @@ contains
             call remove_stale(base)
             call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
                               result%entries, s, result%message, &
-                              report_notes(result%warnings, ''), err_report)
+                              report_notes(result%warnings, ''), err_report, result%adaptation)
             call write_summary_json(base//'.json', result%name, deck%path, m, result%status, &
-                                    result%message, result%entries, s, sol, tab, err_report)
+                                    result%message, result%entries, s, sol, tab, err_report, &
+                                    result%adaptation)
             return
         end if
         call write_data_file(base//'.dat', m, tab, err)
@@ -361,7 +400,7 @@ contains
                                                                                tab, err)
         if (.not. allocated(err)) call write_summary_json(base//'.json', result%name, deck%path, &
                                                           m, EXIT_OK, '', result%entries, s, &
-                                                          sol, tab, err)
+                                                          sol, tab, err, result%adaptation)
         if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
                                                          result%label, s, err)
         if (allocated(err)) then
@@ -373,7 +412,8 @@ contains
         if (figures) call render_png(base, note)
         result%message = note
         call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
-                          result%entries, s, '', report_notes(result%warnings, note), err)
+                          result%entries, s, '', report_notes(result%warnings, note), err, &
+                          result%adaptation)
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message

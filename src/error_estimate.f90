@@ -29,7 +29,7 @@ module error_estimate
         'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim']
     integer, parameter :: min_coarse_elements = 4
 
-    public :: estimate_errors, error_method_text
+    public :: estimate_errors, error_method_text, case_entries, attach_estimates, is_estimated
 
 contains
 
@@ -41,7 +41,6 @@ contains
         type(entry_t), allocatable :: e2(:), e4(:)
         real(dp) :: h_edge
         logical :: ok2, ok4
-        integer :: i
         if (m%ne/4 < min_coarse_elements) return
         call coarse_entries(m, m%ne/2, e2, ok2)
         if (.not. ok2) return
@@ -49,14 +48,32 @@ contains
         if (.not. ok4) return
         ! the contact extent moves by whole stations: at least half the largest element (as t)
         h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%length
+        call attach_estimates(e, e2, e4, 2.0_dp, 0.5_dp*h_edge)
+    end subroutine estimate_errors
+
+    !> Estimates of the estimated keys of e from the same keys on two coarser meshes of a
+    !! nested family (e2 about N_e/ratio, e4 about N_e/ratio^2 elements); the contact
+    !! extent's estimate is at least extent_floor (t).
+    pure subroutine attach_estimates(e, e2, e4, ratio, extent_floor)
+        type(entry_t), intent(inout) :: e(:)
+        type(entry_t), intent(in) :: e2(:), e4(:)
+        real(dp), intent(in) :: ratio              !! refinement ratio between the meshes
+        real(dp), intent(in) :: extent_floor
+        integer :: i
         do i = 1, size(e)
-            if (.not. any(estimated_keys == e(i)%key)) cycle
+            if (.not. is_estimated(e(i)%key)) cycle
             if (.not. (e(i)%defined .and. e2(i)%defined .and. e4(i)%defined)) cycle
-            call richardson(e(i)%value, e2(i)%value, e4(i)%value, e(i)%error, e(i)%order)
-            if (trim(e(i)%key) == 'contact_extent_t') e(i)%error = max(e(i)%error, 0.5_dp*h_edge)
+            call richardson(e(i)%value, e2(i)%value, e4(i)%value, ratio, e(i)%error, e(i)%order)
+            if (trim(e(i)%key) == 'contact_extent_t') e(i)%error = max(e(i)%error, extent_floor)
             e(i)%has_error = .true.
         end do
-    end subroutine estimate_errors
+    end subroutine attach_estimates
+
+    !> Whether a key of summary_table gets an error estimate.
+    pure logical function is_estimated(key)
+        character(len=*), intent(in) :: key
+        is_estimated = any(estimated_keys == key)
+    end function is_estimated
 
     !> The key results of the case on ne elements (ok false when the solve fails).
     subroutine coarse_entries(m, ne, e, ok)
@@ -66,27 +83,47 @@ contains
         logical, intent(out) :: ok
         type(model_t) :: mc
         type(discretization_t) :: d
-        type(solution_t) :: sol
         type(station_table_t) :: tab
-        type(summary_t) :: s
         type(error_t), allocatable :: err
         mc = m
         mc%ne = ne
         ok = .false.
         call new_discretization(mc, d, err)
         if (allocated(err)) return
-        call solve_contact(mc, d, sol, err)
-        if (.not. allocated(err)) call tabulate(mc, d, sol, tab, err)
-        if (allocated(err)) return
-        s = summarise(mc, sol, tab)
-        e = summary_entries(mc, s, contact_extent(tab, mc%length))
-        ok = .true.
+        call case_entries(mc, d, e, tab, ok)
     end subroutine coarse_entries
 
-    !> GCI estimate of the error of q1 from q1, q2, q4 (fine, medium, coarse); order: the
-    !! observed p, or -1 when p = 1 was assumed.
-    pure subroutine richardson(q1, q2, q4, error, order)
-        real(dp), intent(in) :: q1, q2, q4
+    !> The key results of the case solved on the discretisation d, and its station table
+    !! (and, if asked, the table at the nodes); ok false when the solve fails.
+    subroutine case_entries(m, d, e, tab, ok, node_tab)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(entry_t), allocatable, intent(out) :: e(:)
+        type(station_table_t), intent(out) :: tab
+        logical, intent(out) :: ok
+        type(station_table_t), intent(out), optional :: node_tab
+        type(solution_t) :: sol
+        type(summary_t) :: s
+        type(error_t), allocatable :: err
+        type(model_t) :: mn
+        ok = .false.
+        call solve_contact(m, d, sol, err)
+        if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
+        if (present(node_tab) .and. .not. allocated(err)) then
+            mn = m
+            mn%stations = 0
+            call tabulate(mn, d, sol, node_tab, err)
+        end if
+        if (allocated(err)) return
+        s = summarise(m, sol, tab)
+        e = summary_entries(m, s, contact_extent(tab, m%length))
+        ok = .true.
+    end subroutine case_entries
+
+    !> GCI estimate of the error of q1 from q1, q2, q4 (fine, medium, coarse; refinement
+    !! ratio r between them); order: the observed p, or -1 when p = 1 was assumed.
+    pure subroutine richardson(q1, q2, q4, r, error, order)
+        real(dp), intent(in) :: q1, q2, q4, r
         real(dp), intent(out) :: error, order
         real(dp) :: d12, d24, p
         d12 = q2 - q1
@@ -94,18 +131,31 @@ contains
         order = -1.0_dp
         ! not (yet) regular: first order assumed, the larger of the two differences (a
         ! difference that happens to be small must not make the band small), Fs = 3
-        error = 3.0_dp*max(abs(d12), 0.5_dp*abs(d24))
+        error = 3.0_dp*max(abs(d12), abs(d24)/r)/(r - 1.0_dp)
         if (d12 == 0.0_dp .or. d24 == 0.0_dp) return
         if (sign(1.0_dp, d12) /= sign(1.0_dp, d24)) return
-        p = log(abs(d24)/abs(d12))/log(2.0_dp)
+        p = log(abs(d24)/abs(d12))/log(r)
         if (p < 0.5_dp .or. p > 4.0_dp) return
         order = p
-        error = 1.25_dp*abs(d12)/(2.0_dp**p - 1.0_dp)
+        error = 1.25_dp*abs(d12)/(r**p - 1.0_dp)
     end subroutine richardson
 
-    !> One line for reports: how the estimate was obtained.
-    pure function error_method_text() result(text)
+    !> One line for reports: how the estimate was obtained (adapted: on an adapted mesh).
+    pure function error_method_text(adapted) result(text)
+        logical, intent(in), optional :: adapted
         character(len=:), allocatable :: text
+        if (present(adapted)) then
+            if (adapted) then
+                text = 'estimated error: the adapted mesh (N_e elements) coarsened twice by '// &
+                    'removing every other node, keeping the ends, the load positions and the '// &
+                    'snapped contact and slip boundaries (N2, N4 elements, r = N_e/N2); E = '// &
+                    '1.25 |Q(N2) - Q(N_e)| / (r^p - 1) with the observed order p, or (p*) '// &
+                    '3 max(|Q(N2) - Q(N_e)|, |Q(N4) - Q(N2)|/r)/(r - 1) where convergence is '// &
+                    'not yet regular; contact extent at least the distance of its node from '// &
+                    'the located boundary'
+                return
+            end if
+        end if
         text = 'estimated error: the case re-solved on N_e/2 and N_e/4 elements (same grading '// &
                'and interpolation); E = 1.25 |Q(N_e/2) - Q(N_e)| / (2^p - 1) with the observed '// &
                'order p, or (p*) 3 max(|Q(N_e/2) - Q(N_e)|, |Q(N_e/4) - Q(N_e/2)|/2) where '// &

@@ -50,6 +50,9 @@ module model
         integer :: ne = 20
         character(len=10) :: grading = 'UNIFORM'
         integer :: interp(5) = 1      !! per field (FIELD_*): INTERP_P1/P2/S2
+        ! adaptive meshing (ADAPT card; adapt_tol = 0: the MESH card's mesh as it is)
+        real(dp) :: adapt_tol = 0.0_dp    !! relative tolerance of the estimated errors
+        integer :: adapt_max_ne = 0       !! largest number of elements of an adapted mesh
         ! solver
         real(dp) :: tol_outer = 1.0e-8_dp
         real(dp) :: tol_inner = 1.0e-10_dp

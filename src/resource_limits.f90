@@ -31,12 +31,16 @@ module resource_limits
 
 contains
 
-    !> Unknowns of the case (displacements + tractions), from its discretisation.
+    !> Unknowns of the case (displacements + tractions), from its discretisation; with ADAPT,
+    !! of the largest mesh it may reach (max_elements).
     integer function case_unknowns(m) result(n)
         type(model_t), intent(in) :: m
         type(discretization_t) :: d
         type(error_t), allocatable :: err
-        call new_discretization(m, d, err)
+        type(model_t) :: mc
+        mc = m
+        if (m%adapt_tol > 0.0_dp) mc%ne = max(m%ne, m%adapt_max_ne)
+        call new_discretization(mc, d, err)
         n = 0
         if (.not. allocated(err)) n = d%n
     end function case_unknowns
@@ -84,7 +88,8 @@ contains
         need = memory_needed(n)*real(max(at_once, 1), dp)
         limit = usable_fraction*available
         if (need <= limit) return
-        write (text, '(a,i0,a,i0,a,f0.1,a,i0,a,f0.1,a)') 'N_e = ', m%ne, ' gives ', n, &
+        write (text, '(a,i0,a,i0,a,f0.1,a,i0,a,f0.1,a)') 'N_e = ', &
+            merge(max(m%ne, m%adapt_max_ne), m%ne, m%adapt_tol > 0.0_dp), ' gives ', n, &
             ' unknowns and needs about ', need/1.0e9_dp, ' GB (dense system; ', max(at_once, 1), &
             ' case(s) at once), more than the ', limit/1.0e9_dp, ' GB usable on this machine '// &
             '(80 % of the memory available): use fewer elements, a graded mesh (MESH EDGES or '// &

@@ -18,13 +18,14 @@ program tester
     use test_properties, only: collect_properties
     use test_malformed_decks, only: collect_malformed_decks
     use test_simplifications, only: collect_simplifications
+    use test_adaptive, only: collect_adaptive
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
     integer :: n_pass, n_fail
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
-        'design_values paper malformed_decks newton properties simplifications '
+        'design_values paper malformed_decks newton properties simplifications adaptive '
 
     want_suite = ''
     want_test = ''
@@ -95,6 +96,10 @@ program tester
     if (wanted('properties')) then
         call collect_properties(tests)
         call run_suite('properties', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('adaptive')) then
+        call collect_adaptive(tests)
+        call run_suite('adaptive', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)

@@ -39,7 +39,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 74
+    integer, parameter :: n_decks = 77
 
 contains
 
@@ -51,6 +51,7 @@ contains
                  new_unittest('fields_in_wrong_columns', test_columns), &
                  new_unittest('bad_numbers', test_numbers), &
                  new_unittest('bad_counts', test_counts), &
+                 new_unittest('adapt_card', test_adapt), &
                  new_unittest('tab_and_non_ascii', test_characters), &
                  new_unittest('long_lines', test_lines), &
                  new_unittest('end_duplicate_conflicting', test_card_set), &
@@ -158,6 +159,17 @@ contains
         ! line 12 (inserted OUTPUT): stations is -5
         call add('counts', 'output_stations_negative.dat', ':12:11-20:', &
                  'must be a whole number in [2, 100000], got -5')
+        ! --- ADAPT (line 12, inserted after MESH 20 on line 11)
+        ! tol (f1, columns 11-20) = 0.0
+        call add('adapt', 'adapt_tol_zero.dat', ':12:11-20:', &
+                 'ADAPT tol (relative tolerance of the estimated errors) must be in (0, 1), got 0.0')
+        ! tol (f1, columns 11-20) blank
+        call add('adapt', 'adapt_tol_missing.dat', ':12:11-20:', &
+                 'ADAPT tol (relative tolerance of the estimated errors) is required but the '// &
+                 'field is blank')
+        ! max_elements (f2, columns 21-30) = 10 below MESH N_e = 20
+        call add('adapt', 'adapt_max_below_ne.dat', ':12:21-30:', &
+                 'ADAPT max_elements must be at least the MESH N_e = 20 it starts from, got 10')
         ! --- characters
         ! line 4 'MODEL<TAB>BEAM': the TAB is column 6
         call add('characters', 'tab_in_card.dat', ':4:6:', 'TAB character in column 6')
@@ -398,6 +410,11 @@ contains
         end do
         close (u)
     end subroutine write_lines
+
+    subroutine test_adapt(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check_group('adapt', err)
+    end subroutine test_adapt
 
     ! The three base decks the malformed files are made from (each file = one comment card,
     ! the ruler, and one of these with one fault put in).

@@ -16,6 +16,7 @@
 !!     FRICTION  0.5       1.0E-6
 !!     LOAD      PATCH     8000.0              0.0       0.4
 !!     MESH      40        UNIFORM   P1        P1        P1        P1        P1
+!!     ADAPT     1.0E-3    400
 !!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9              NEWTON
 !!     OUTPUT
 !!     SWEEP     F         0.3       0.5       0.7
@@ -65,13 +66,13 @@ module deck_reader
     integer, parameter :: C_TITLE = 1, C_MODEL = 2, C_UNITS = 3, C_GEOMETRY = 4, &
                           C_STRUCTURE = 5, C_SOIL = 6, C_NONDIM = 7, C_FRICTION = 8, &
                           C_LOAD = 9, C_MESH = 10, C_SOLVER = 11, C_OUTPUT = 12, C_SWEEP = 13, &
-                          C_END = 14
-    integer, parameter :: n_cards = 14
+                          C_END = 14, C_ADAPT = 15
+    integer, parameter :: n_cards = 15
     character(len=9), parameter :: card_names(n_cards) = [character(len=9) :: 'TITLE', &
         'MODEL', 'UNITS', 'GEOMETRY', 'STRUCTURE', 'SOIL', 'NONDIM', 'FRICTION', 'LOAD', &
-        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END']
+        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT']
     character(len=*), parameter :: card_list = 'TITLE, MODEL, UNITS, GEOMETRY, STRUCTURE, '// &
-        'SOIL, NONDIM, FRICTION, LOAD, MESH, SOLVER, OUTPUT, SWEEP or END'
+        'SOIL, NONDIM, FRICTION, LOAD, MESH, ADAPT, SOLVER, OUTPUT, SWEEP or END'
 
     ! Sweepable parameters: name, range rule, deck kind (0 any, 1 NONDIM, 2 physical), model
     ! (0 any, MODEL_BEAM, MODEL_PLATE).
@@ -96,6 +97,7 @@ module deck_reader
         '11-20, f2 21-30, f3 31-40, ... (free format is not read; see the column ruler in README)'
     integer, parameter :: max_lines = 100000        !! longer files are not decks
     real(dp), parameter :: unit_load_tol = 1.0e-6_dp  !! NONDIM: |sum F_z - 1| allowed
+    integer, parameter :: default_adapt_max_ne = 1000 !! ADAPT max_elements when blank
 
     !> One significant card (not blank, not a comment).
     type :: card_t
@@ -202,6 +204,7 @@ contains
         call read_model_card(st)
         call check_card_set(st)
         call read_cards(st)
+        call check_adapt(st)
         call check_loads(st)
         call check_sweep_lengths(st)
         call check_case_total(st)
@@ -574,6 +577,8 @@ contains
                 call read_load(st, k)
             case (C_MESH)
                 call read_mesh(st, st%cards(k))
+            case (C_ADAPT)
+                call read_adapt(st, st%cards(k))
             case (C_SOLVER)
                 call read_solver(st, st%cards(k))
             case (C_OUTPUT)
@@ -700,6 +705,31 @@ contains
             if (s == FIELD_OK) st%m%interp(j) = interp_code(word)
         end do
     end subroutine read_mesh
+
+    !> ADAPT tol max_elements: refine the MESH card's mesh until the estimated error of every
+    !! key result is below tol (relative to its scale, README "ADAPT") or the mesh has
+    !! max_elements elements (default 1000).
+    subroutine read_adapt(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        st%m%adapt_max_ne = default_adapt_max_ne
+        call take_real(st, cd, 1, 'ADAPT tol (relative tolerance of the estimated errors)', &
+                       RULE_OPEN_UNIT, .true., st%m%adapt_tol)
+        call take_count(st, cd, 2, 'ADAPT max_elements (largest number of elements)', &
+                        RULE_ELEMENTS, .false., st%m%adapt_max_ne)
+        call check_unused(st, cd, 2)
+    end subroutine read_adapt
+
+    !> ADAPT may only refine: its max_elements is at least the MESH card's N_e.
+    subroutine check_adapt(st)
+        type(state_t), intent(inout) :: st
+        integer :: k
+        k = first_card(st, C_ADAPT)
+        if (k == 0 .or. st%m%adapt_tol <= 0.0_dp) return
+        if (st%m%adapt_max_ne >= st%m%ne) return
+        call field_error(st, st%cards(k), 2, 'ADAPT max_elements must be at least the MESH '// &
+            'N_e = '//int_text(st%m%ne)//' it starts from, got '//int_text(st%m%adapt_max_ne))
+    end subroutine check_adapt
 
     !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0 method.
     subroutine read_solver(st, cd)

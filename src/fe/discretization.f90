@@ -20,7 +20,7 @@ module discretization
         integer, allocatable :: fixed(:)   !! constrained unknowns (plate: u_s(0), psi(0), sigma_x(0))
     end type discretization_t
 
-    public :: new_discretization, locate_element
+    public :: new_discretization, discretise_mesh, load_positions, locate_element
 
 contains
 
@@ -29,8 +29,8 @@ contains
         type(model_t), intent(in) :: m
         type(discretization_t), intent(out) :: d
         type(error_t), allocatable, intent(out) :: err
+        type(mesh_t) :: msh
         real(dp) :: x_left, x_right
-        integer :: field
 
         if (m%kind == MODEL_BEAM) then
             x_left = -0.5_dp*m%length
@@ -39,8 +39,19 @@ contains
             x_left = 0.0_dp
             x_right = m%length
         end if
-        call new_mesh(d%msh, x_left, x_right, m%ne, m%grading, err, load_positions(m))
+        call new_mesh(msh, x_left, x_right, m%ne, m%grading, err, load_positions(m))
         if (allocated(err)) return
+        call discretise_mesh(m, msh, d)
+    end subroutine new_discretization
+
+    !> Bases, numbering and constraints of the model's fields on a given mesh (any nodes:
+    !! the MESH card's, or an adapted mesh). The one place these rules live.
+    subroutine discretise_mesh(m, msh, d)
+        type(model_t), intent(in) :: m
+        type(mesh_t), intent(in) :: msh             !! nodes spanning the whole interface
+        type(discretization_t), intent(out) :: d
+        integer :: field
+        d%msh = msh
         do field = FIELD_U, FIELD_SZ
             call new_basis(d%basis(field), d%msh, m%interp(field))
             if (field > FIELD_U) d%offset(field) = d%offset(field - 1) + d%basis(field - 1)%n_dof
@@ -54,7 +65,7 @@ contains
             ! axisymmetry: u_s, psi and the radial shear traction vanish on the axis
             d%fixed = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1, d%offset(FIELD_SX) + 1]
         end if
-    end subroutine new_discretization
+    end subroutine discretise_mesh
 
     !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading).
     pure function load_positions(m) result(x)

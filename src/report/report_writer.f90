@@ -18,6 +18,7 @@ module report_writer
     use summary_table, only: entry_t
     use error_estimate, only: error_method_text
     use model_reduction, only: simplification_text
+    use adaptive_solve, only: adaptation_t, adaptation_lines
     implicit none
     private
 
@@ -109,7 +110,8 @@ contains
 
     !> output/CASE.json: status, units, the key results (summary_table), contact intervals
     !! and the checks. A failed case gets its status and message, and no results.
-    subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err)
+    subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err, &
+                                  adaptation)
         character(len=*), intent(in) :: path, name, deck_path, message
         type(model_t), intent(in) :: m
         integer, intent(in) :: status
@@ -118,8 +120,12 @@ contains
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(in) :: tab
         type(error_t), allocatable, intent(out) :: err
+        type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
         type(units_t) :: un
         integer :: u, i
+        logical :: adapted
+        adapted = .false.
+        if (present(adaptation)) adapted = adaptation%adapted
         call open_temporary(path, u, err)
         if (allocated(err)) return
         un = case_units(m)
@@ -154,7 +160,8 @@ contains
         end do
         call write_json_intervals(u, m, s%intervals)
         write (u, '(a)') '  },'
-        call write_json_errors(u, e)
+        call write_json_errors(u, e, adapted)
+        if (adapted) call write_json_adaptation(u, adaptation)
         call write_json_checks(u, sol, tab, s)
         write (u, '(a)') '}'
         call commit_file(path, u, err)
@@ -163,9 +170,10 @@ contains
     !> "errors": the estimated absolute error of each estimated key (same unit as the
     !! result), "error_orders": the observed order (null where first order was assumed),
     !! "error_method": how the estimate was obtained (module error_estimate).
-    subroutine write_json_errors(u, e)
+    subroutine write_json_errors(u, e, adapted)
         integer, intent(in) :: u
         type(entry_t), intent(in) :: e(:)
+        logical, intent(in) :: adapted      !! the mesh was adapted (ADAPT)
         integer :: i, k
         character(len=*), parameter :: blocks(2) = ['errors      ', 'error_orders']
         do k = 1, 2
@@ -188,8 +196,33 @@ contains
             end block first
             write (u, '(a)') '},'
         end do
-        write (u, '(a)') '  "error_method": '//json_string(error_method_text())//','
+        write (u, '(a)') '  "error_method": '//json_string(error_method_text(adapted))//','
     end subroutine write_json_errors
+
+    !> "adaptation": the ADAPT settings, the cycles, the final N_e and estimate, whether the
+    !! tolerance was reached (and if not, why), and each cycle's N_e and estimate.
+    subroutine write_json_adaptation(u, a)
+        integer, intent(in) :: u
+        type(adaptation_t), intent(in) :: a
+        integer :: k
+        write (u, '(a)') '  "adaptation": {'
+        write (u, '(a)') '    "tolerance": '//json_number(a%tol, .true.)//','
+        write (u, '(a,i0,a)') '    "max_elements": ', a%max_ne, ','
+        write (u, '(a,i0,a)') '    "cycles": ', a%cycles, ','
+        write (u, '(a,i0,a)') '    "elements": ', a%ne, ','
+        write (u, '(a)') '    "estimate": '//json_number(a%estimate, a%estimate >= 0.0_dp)//','
+        write (u, '(a)') '    "estimate_key": '//json_string(a%worst)//','
+        write (u, '(a)') '    "tolerance_reached": '//trim(merge('true ', 'false', a%reached))//','
+        write (u, '(a)') '    "note": '//json_string(a%note)//','
+        write (u, '(a)', advance='no') '    "history": ['
+        do k = 1, size(a%history_ne)
+            if (k > 1) write (u, '(a)', advance='no') ', '
+            write (u, '(a,i0,a)', advance='no') '[', a%history_ne(k), ', '// &
+                json_number(a%history_estimate(k), a%history_estimate(k) >= 0.0_dp)//']'
+        end do
+        write (u, '(a)') ']'
+        write (u, '(a)') '  },'
+    end subroutine write_json_adaptation
 
     subroutine write_json_intervals(u, m, iv)
         integer, intent(in) :: u
@@ -601,7 +634,7 @@ contains
 
     !> The text report. `failure` non-empty: ANALYSIS FAILED banner, log only.
     subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, e, s, failure, notes, &
-                            err)
+                            err, adaptation)
         character(len=*), intent(in) :: path, deck_path, label, failure
         type(entry_t), intent(in) :: e(:)          !! key results with their error estimates
         character(len=*), intent(in) :: notes(:)   !! 'WARNING: ...' and 'NOTE: ...' lines
@@ -612,7 +645,11 @@ contains
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(in) :: s
         type(error_t), allocatable, intent(out) :: err
+        type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
+        character(len=400), allocatable :: adapt_text(:)
         integer :: u, i
+        allocate (adapt_text(0))
+        if (present(adaptation)) adapt_text = adaptation_lines(adaptation)
         call open_temporary(path, u, err)
         if (allocated(err)) return
         write (u, '(a)') repeat('=', 100)
@@ -625,6 +662,9 @@ contains
         end if
         call write_echo(u, lines)
         call write_groups(u, m, d)
+        do i = 1, size(adapt_text)
+            write (u, '(3x,a)') trim(adapt_text(i))
+        end do
         call write_conventions(u, m)
         call write_log(u, sol)
         if (len_trim(failure) == 0) then
@@ -633,7 +673,7 @@ contains
             if (.not. m%nondim) call write_table(u, ' 6. STATIONS (physical units)', &
                                                  physical_columns(m), tab, .false.)
             call write_station_notes(u, m, tab)
-            call write_summary(u, m, e, s)
+            call write_summary(u, m, e, s, size(adapt_text) > 0)
             call write_checks(u, m, sol, tab, s)
         end if
         if (any(len_trim(notes) > 0)) write (u, '(a)') ''
@@ -817,11 +857,12 @@ contains
     end subroutine write_station_notes
 
     !> The design summary: the entries of summary_table, then the contact intervals.
-    subroutine write_summary(u, m, e, s)
+    subroutine write_summary(u, m, e, s, adapted)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         type(entry_t), intent(in) :: e(:)
         type(summary_t), intent(in) :: s
+        logical, intent(in) :: adapted      !! the mesh was adapted (ADAPT)
         integer :: i
         write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional (SPEC.md 6)', &
             'physical units            ', m%nondim))//')'//repeat(' ', 16)//'estimated error (*)'
@@ -838,7 +879,7 @@ contains
             end if
         end do
         if (any(e%has_error)) then
-            write (u, '(3x,a)') '(*) '//error_method_text()
+            write (u, '(3x,a)') '(*) '//error_method_text(adapted)
         else
             write (u, '(3x,a)') '(*) no error estimate: it needs N_e >= 16 (two coarser meshes '// &
                 'of at least 4 elements) and coarse solves that converge'
