@@ -41,6 +41,7 @@ module newton_method
                               jacobian_diagonal, relative_change, linear_part, &
                               set_terms_t, set_terms
     use interface_law, only: friction_threshold, in_tension, is_slipping
+    use sorting, only: sort_ascending
     implicit none
     private
 
@@ -488,23 +489,6 @@ contains
         knots = knots(1:n)
         call sort_ascending(knots)
     end function ray_kinks
-
-    !> Insertion sort (the knots are few: three per contact point at most).
-    pure subroutine sort_ascending(x)
-        real(dp), intent(inout) :: x(:)
-        real(dp) :: key
-        integer :: i, j
-        outer: do i = 2, size(x)
-            key = x(i)
-            j = i - 1
-            shift: do while (j >= 1)
-                if (x(j) <= key) exit shift
-                x(j + 1) = x(j)
-                j = j - 1
-            end do shift
-            x(j + 1) = key
-        end do outer
-    end subroutine sort_ascending
 
     !> Minimum of || D (f_a + s (f_b - f_a)) || over s in [0, 1] (F is affine between kinks).
     pure subroutine segment_minimum(wgt, f_a, f_b, s, phi)

@@ -29,6 +29,7 @@
 module galerkin_assembly
     use iso_fortran_env, only: int64
     use kinds, only: dp
+    use sorting, only: sort_ascending
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
     use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
@@ -503,28 +504,11 @@ contains
                 cuts = [a1 - b2, a1 - a2, b1 - b2, 0.0_dp, b1 - a2]
             end if
         end if
-        call sort_cuts(cuts)
+        call sort_ascending(cuts)
         clip: do i = 2, 4
             cuts(i) = min(max(cuts(i), cuts(1)), cuts(5))
         end do clip
     end subroutine reduced_cuts
-
-    !> Insertion sort of the five cuts.
-    pure subroutine sort_cuts(a)
-        real(dp), intent(inout) :: a(5)
-        real(dp) :: key
-        integer :: i, j
-        outer: do i = 2, 5
-            key = a(i)
-            j = i - 1
-            shift: do while (j >= 1)
-                if (a(j) <= key) exit shift
-                a(j + 1) = a(j)
-                j = j - 1
-            end do shift
-            a(j + 1) = key
-        end do outer
-    end subroutine sort_cuts
 
     !> Offsets of the nodes of v from the singular point (work%dv) with weights work%w,
     !! work%wc, and with_log, piece by piece.

@@ -30,6 +30,7 @@
 module singular_quadrature
     use iso_fortran_env, only: int64
     use kinds, only: dp
+    use sorting, only: sort_ascending
     use errors, only: error_t, new_error, add_context, EXIT_INTERNAL
     use quadrature, only: gauss_legendre
     use shape_functions, only: basis_t, eval_basis, max_local
@@ -364,7 +365,7 @@ contains
         call need_order(tab, n_inner)
         tiny_len = 1.0e-14_dp*((b1 - a1) + (b2 - a2))
         cuts = [a1 - b2, a1 - a2, b1 - b2, 0.0_dp, b1 - a2]
-        call sort_small(cuts)
+        call sort_ascending(cuts)
         n_cut = 5
         pieces: do i = 1, n_cut - 1
             lo = max(cuts(i), a1 - b2)
@@ -412,23 +413,6 @@ contains
             end do t_nodes
         end do outer_nodes
     end subroutine add_ratio
-
-    !> Insertion sort of a short array.
-    pure subroutine sort_small(a)
-        real(dp), intent(inout) :: a(:)
-        real(dp) :: key
-        integer :: i, j
-        outer: do i = 2, size(a)
-            key = a(i)
-            j = i - 1
-            shift: do while (j >= 1)
-                if (a(j) <= key) exit shift
-                a(j + 1) = a(j)
-                j = j - 1
-            end do shift
-            a(j + 1) = key
-        end do outer
-    end subroutine sort_small
 
     ! ---------------------------------------------------------------- assembly and evaluation
 
