@@ -33,7 +33,8 @@ program bench_phases
     use solution_checks, only: final_checks
     use model_reduction, only: plan_reduction, is_active
     use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_factorise
-    use mindlin_structure, only: section_of, assemble_stiffness, assemble_coupling
+    use mindlin_structure, only: section_of, stiffness_entries, coupling_entries
+    use sparse_matrix, only: columns_t, compressed
     use halfspace_operator, only: assemble_flexibility
     use station_results, only: station_table_t, tabulate, contact_extent
     use design_summary, only: summary_t, summarise
@@ -230,35 +231,29 @@ contains
         sol%pts = contact_points(m, d)
     end subroutine discretise
 
-    !> T, and K with M, as build_system assembles them (K into a dense nv x nv block, which
-    !! assemble_stiffness zeroes first; M dense nr x nv), each timed on its own. build_system
-    !! assembles K into A0, whose pages its zero fill has already touched (that is in the
-    !! rest of the set-up), so K's array is touched here before the clock starts: a fresh
-    !! 72 MB array at N_e = 1000 costs about 40 ms of page faults on its first write (system
-    !! time, which cpu_time counts) and would be counted twice. T and M are fresh arrays in
-    !! build_system too, and are timed with their allocation.
+    !> T, and K with M, as build_system assembles them (K and M by their nonzeros: element
+    !! triplets compressed into columns), each timed on its own with its allocation.
     subroutine time_assembly(m, d, t_t, t_km)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         real(dp), intent(out) :: t_t, t_km
-        real(dp), allocatable :: t_mat(:, :), k(:, :), mm(:, :)
+        real(dp), allocatable :: t_mat(:, :)
+        type(columns_t) :: k, mm
         type(error_t), allocatable :: err
         real(dp) :: t0
         t0 = now()
         call assemble_flexibility(m, d, t_mat, err)
         t_t = now() - t0
         if (allocated(err)) error stop 'bench_phases: T assembly failed'
-        allocate (k(d%nv, d%nv))
-        k = 1.0_dp
         t0 = now()
-        allocate (mm(d%nr, d%nv))
-        call assemble_stiffness(section_of(m), d, k)
-        call assemble_coupling(m, d, mm)
+        k = compressed(stiffness_entries(section_of(m), d))
+        mm = compressed(coupling_entries(m, d))
         t_km = now() - t0
+        if (k%ncol /= d%nv .or. mm%nrow /= d%nr) error stop 'bench_phases: K or M misshapen'
     end subroutine time_assembly
 
     !> contact_solver::solve_contact for a Newton case without model reduction, in its
-    !! order: the system (build_system: T, K, M, dense A0, loads, sparse blocks; then the
+    !! order: the system (build_system: T, K, M, packed B0, loads; then the
     !! change to rigid coordinates), the Newton iterations (solve_newton: Schur set-up,
     !! adhesive start, the steps with their factorisations, updates, line searches and
     !! residuals, a continuation if it stalls), and the final checks (the complete problem's
@@ -545,17 +540,13 @@ contains
             '  admissibility check, contact_points (Gauss points of the interface). Expected 1.', &
             '- T assembly: assemble_flexibility, the dense nr x nr half-space flexibility;', &
             '  nr^2/2 pairs of element integrals of the kernels. Expected 2.', &
-            '- K, M assembly: assemble_stiffness into a dense nv x nv array (zeroed first, as', &
-            '  build_system does in A0; its pages touched before the clock starts, as A0''s are)', &
-            '  and assemble_coupling into a fresh dense nr x nv array. The element loops are', &
-            '  O(N_e) (expected 1); the zero fill of the dense arrays is O(N_e^2) and takes', &
-            '  over at large N_e (expected 2 there).', &
+            '- K, M assembly: stiffness_entries and coupling_entries (element triplets),', &
+            '  compressed into sparse columns as build_system does. Expected 1.', &
             '- rest of system set-up (*): build_system + use_rigid_coordinates, less the T and', &
             '  K, M times measured on their own (build_system assembles T, K and M inside it);', &
-            '  the dense n x n A0 (zero fill, block copies, the transpose of M), loads, the stick', &
-            '  terms, the row scaling, the scan of A0 for its sparse blocks (twice: before and', &
-            '  after the change to rigid coordinates), the page faults of the fresh A0', &
-            '  (200 MB at N_e = 1000). Expected 2.', &
+            '  the stick terms on T, the packing of B0 = -(T + c eps S0) into its lower', &
+            '  triangle, M^T, loads, the row scaling, the rigid-coordinate change of K and M.', &
+            '  Expected 2 (the packing of the dense block).', &
             '- Newton iterations: solve_newton. The Schur set-up (banded Cholesky of K_ii,', &
             '  O(N_e); S0 = J_kk - C^T K_ii^-1 C: nk band solves, O(N_e^2)), the adhesive start,', &
             '  each step: set terms, a dense LDL^T/LU of the nk x nk kept block (nk ~ 2 N_e,', &
@@ -563,7 +554,7 @@ contains
             '  (O(N_e^2)), line search residuals (O(N_e^2)). Expected 2 at small N_e, 3 in the', &
             '  limit (3 or 4 factorisations of nk^3/3 flops each); the step count grows slowly.', &
             '- final checks: the sets of the complete problem, the residuals of 4.2a/b (products', &
-            '  with A0''s dense T block), equilibrium, admissibility, to_absolute. Expected 2.', &
+            '  with the packed B0 block), equilibrium, admissibility, to_absolute. Expected 2.', &
             '- tabulation (stations): station_results::tabulate at the N_e + 1 node stations;', &
             '  the half-space surface displacement at each station integrates the tractions over', &
             '  every element (O(stations x elements)). Expected 2.', &

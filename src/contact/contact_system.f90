@@ -18,12 +18,15 @@ module contact_system
     use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ, &
                      friction_compliance
     use discretization, only: discretization_t
-    use mindlin_structure, only: section_of, assemble_stiffness, assemble_loads, &
-                                 assemble_coupling
+    use mindlin_structure, only: section_of, stiffness_entries, assemble_loads, &
+                                 coupling_entries
     use halfspace_operator, only: assemble_flexibility
     use interface_law, only: friction_threshold, slip_excess, tensile_part, threshold_slope, &
                              is_slipping, in_tension
     use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
+    use sparse_matrix, only: columns_t, triplets_t, compressed, transposed, triplets_of, &
+                             columns_times, dense_column, packed_lower, packed_times, &
+                             packed_column, packed_entry
     implicit none
     private
 
@@ -81,26 +84,30 @@ module contact_system
         real(dp) :: penalty = 0.0_dp         !! c / eta_bar
     end type law_t
 
-    !> The set-independent data of one case.
+    !> The set-independent data of one case. The base matrix A0 = [K M^T; M B0] is held by
+    !! blocks (sparse_matrix): K and M by their nonzeros, B0 = -(T + c eps0 S0) (symmetric,
+    !! dense) by its lower triangle; a dense A0 is formed only for the methods that need one
+    !! (a0_dense: the two-loop method, the dense fallback of the Newton method).
     type, public :: system_t
-        real(dp), allocatable :: a0(:, :)    !! matrix without the set-dependent terms
+        type(columns_t) :: k                 !! K (nv x nv)
+        type(columns_t) :: mm                !! M (nr x nv)
+        type(columns_t) :: mt                !! M^T (nv x nr)
+        real(dp), allocatable :: b0(:)       !! B0 (nr x nr), packed lower triangle
         real(dp), allocatable :: q(:)        !! structural loads
         real(dp), allocatable :: row_scale(:)  !! 1/sqrt|diag a0|: fixed scaling of the residual
         real(dp) :: c = 0.0_dp, kappa = 0.0_dp, penalty = 0.0_dp
         type(law_t) :: law                   !! the deck's law
         type(rigid_t) :: rigid               !! the structure's rigid-body modes (K R = 0)
-        logical :: rigid_coordinates = .false.  !! a0, q (and the solvers' z) in rigid
+        logical :: rigid_coordinates = .false.  !! K, M, q (and the solvers' z) in rigid
                                                 !! coordinates (rigid_body), else absolute
         integer :: nv = 0                    !! displacement unknowns
-        integer, allocatable :: sp_ptr(:)    !! a0 outside its traction-traction block (K, M,
-        integer, allocatable :: sp_row(:)    !! M^T: sparse) by columns (sparse_blocks):
-        real(dp), allocatable :: sp_val(:)   !! entries sp_ptr(j):sp_ptr(j+1)-1
+        integer :: nr = 0                    !! traction unknowns
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
-    public :: jacobian_diagonal, linear_part, set_terms, a0_times, sparse_blocks
-    public :: use_rigid_coordinates
+    public :: jacobian_diagonal, linear_part, set_terms, a0_times, set_base_matrix
+    public :: use_rigid_coordinates, a0_column, a0_dense, a0_diagonal, diagonal_scaling
 
     !> Set-dependent entries of the Jacobian (global unknown numbers).
     type, public :: set_terms_t
@@ -120,22 +127,14 @@ contains
         type(contact_points_t), intent(in) :: pts
         type(system_t), intent(out) :: sys
         type(error_t), allocatable, intent(out) :: err
-        real(dp), allocatable :: t_mat(:, :), mm(:, :)
-        integer :: nv, n, i
-        nv = d%nv
-        n = d%n
-        allocate (sys%a0(n, n), sys%q(nv), mm(d%nr, nv))
-        sys%a0 = 0.0_dp
-        call assemble_stiffness(section_of(m), d, sys%a0(1:nv, 1:nv))
-        call assemble_coupling(m, d, mm)
-        sys%a0(nv + 1:n, 1:nv) = mm
-        sys%a0(1:nv, nv + 1:n) = transpose(mm)
+        real(dp), allocatable :: t_mat(:, :), b0(:)
+        integer :: i
         call assemble_flexibility(m, d, t_mat, err)
         if (allocated(err)) then
             call add_context(err, 'assembling the half-space flexibility T')
             return
         end if
-        sys%a0(nv + 1:n, nv + 1:n) = -t_mat
+        allocate (sys%q(d%nv))
         call assemble_loads(m, d, sys%q, err)
         if (allocated(err)) return
         sys%c = friction_compliance(m)
@@ -143,17 +142,39 @@ contains
         sys%rigid = rigid_modes(m, d)
         sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
         sys%penalty = sys%law%penalty
-        ! - c eps S0 on the sigma_x block: the stick branch of the law, everywhere
+        ! B0 = -(T + c eps S0): S0 the stick branch of the law, everywhere
+        t_mat = -t_mat
         do i = 1, pts%n
-            call add_point_mass(pts, i, 1, -sys%c*m%eps_bar, sys%a0)
+            call add_point_mass(pts, i, 1, -sys%c*m%eps_bar, t_mat, d%nv)
         end do
-        allocate (sys%row_scale(n))
-        do i = 1, n
-            sys%row_scale(i) = 1.0_dp
-            if (sys%a0(i, i) /= 0.0_dp) sys%row_scale(i) = 1.0_dp/sqrt(abs(sys%a0(i, i)))
-        end do
-        call sparse_blocks(nv, sys)
+        b0 = packed_lower(t_mat)
+        deallocate (t_mat)
+        call set_base_matrix(sys, d%nv, stiffness_entries(section_of(m), d), &
+                             coupling_entries(m, d), b0)
+        sys%row_scale = diagonal_scaling(a0_diagonal(sys))
     end subroutine build_system
+
+    !> The base matrix from the entries of K and M and the packed B0 (moved in).
+    subroutine set_base_matrix(sys, nv, k, mm, b0)
+        type(system_t), intent(inout) :: sys
+        integer, intent(in) :: nv
+        type(triplets_t), intent(in) :: k, mm
+        real(dp), allocatable, intent(inout) :: b0(:)
+        sys%nv = nv
+        sys%nr = mm%nrow
+        sys%k = compressed(k)
+        sys%mm = compressed(mm)
+        sys%mt = transposed(sys%mm)
+        if (allocated(b0)) call move_alloc(b0, sys%b0)
+    end subroutine set_base_matrix
+
+    !> 1/sqrt|a_ii| (1 where a_ii = 0): the fixed row scaling of the residual.
+    pure function diagonal_scaling(dg) result(scale)
+        real(dp), intent(in) :: dg(:)
+        real(dp) :: scale(size(dg))
+        scale = 1.0_dp
+        where (dg /= 0.0_dp) scale = 1.0_dp/sqrt(abs(dg))
+    end function diagonal_scaling
 
     !> The rigid-body modes of the structure: the translation of w (plate), and for the beam
     !! also the translation of u_s and the rotation psi = 1, w = x.
@@ -173,77 +194,73 @@ contains
                        linear_coefficients(d%basis(FIELD_W)))
     end function rigid_modes
 
-    !> Change a0 and q to rigid coordinates (rigid_body; once, before a method solves): the
-    !! methods then solve for z in rigid coordinates, which to_absolute maps back.
+    !> Change A0 and q to rigid coordinates (rigid_body; once, before a method solves): the
+    !! methods then solve for z in rigid coordinates, which to_absolute maps back. The row
+    !! scaling stays that of the absolute coordinates.
     subroutine use_rigid_coordinates(sys)
         type(system_t), intent(inout) :: sys
+        type(triplets_t) :: k, mm
+        real(dp), allocatable :: no_b0(:)
         if (sys%rigid_coordinates) return
-        call to_rigid_coordinates(sys%rigid, sys%nv, sys%a0, sys%q)
-        deallocate (sys%sp_ptr, sys%sp_row, sys%sp_val)
-        call sparse_blocks(sys%nv, sys)
+        k = triplets_of(sys%k, 0)
+        mm = triplets_of(sys%mm, sys%rigid%np*sys%nr)
+        call to_rigid_coordinates(sys%rigid, k, mm, sys%q)
+        call set_base_matrix(sys, sys%nv, k, mm, no_b0)
         sys%rigid_coordinates = .true.
     end subroutine use_rigid_coordinates
 
-    !> The nonzeros of a0 outside its dense traction-traction block, by columns (a0 is read
-    !! down its columns, as stored): sparse column j <= n holds the displacement rows of
-    !! column j (K, M^T), column n + j (j <= nv) the traction rows of column j (M).
-    subroutine sparse_blocks(nv, sys)
-        integer, intent(in) :: nv
-        type(system_t), intent(inout) :: sys
-        integer :: j, n, pass, nnz
-        n = size(sys%a0, 1)
-        sys%nv = nv
-        allocate (sys%sp_ptr(n + nv + 1))
-        passes: do pass = 1, 2      ! count, then fill
-            nnz = 0
-            do j = 1, n
-                call gather(j, 1, nv)
-            end do
-            do j = 1, nv
-                call gather(j, nv + 1, n)
-                sys%sp_ptr(n + j + 1) = nnz + 1
-            end do
-            if (pass == 1) allocate (sys%sp_row(nnz), sys%sp_val(nnz))
-        end do passes
-    contains
-        !> Nonzeros of a0(i1:i2, j); the pointer of the sparse column.
-        subroutine gather(j, i1, i2)
-            integer, intent(in) :: j, i1, i2
-            integer :: i
-            if (i1 == 1) sys%sp_ptr(j) = nnz + 1
-            if (i1 > 1) sys%sp_ptr(n + j) = nnz + 1
-            rows: do i = i1, i2
-                if (sys%a0(i, j) == 0.0_dp) cycle rows
-                nnz = nnz + 1
-                if (pass == 1) cycle rows
-                sys%sp_row(nnz) = i
-                sys%sp_val(nnz) = sys%a0(i, j)
-            end do rows
-        end subroutine gather
-    end subroutine sparse_blocks
-
-    !> a0 times x_top in the displacement rows and times x_bottom in the traction rows (the
-    !! sparse blocks, then the dense traction-traction block).
+    !> A0 times x_top in the displacement rows and times x_bottom in the traction rows.
     pure function a0_times(sys, x_top, x_bottom) result(y)
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: x_top(:), x_bottom(:)
         real(dp) :: y(size(x_top))
-        integer :: j, n, nv
-        n = size(y)
-        nv = sys%nv
-        y = 0.0_dp
-        y(nv + 1:) = matmul(sys%a0(nv + 1:, nv + 1:), x_bottom(nv + 1:))
-        top: do j = 1, n
-            associate (k1 => sys%sp_ptr(j), k2 => sys%sp_ptr(j + 1) - 1)
-                y(sys%sp_row(k1:k2)) = y(sys%sp_row(k1:k2)) + sys%sp_val(k1:k2)*x_top(j)
-            end associate
-        end do top
-        bottom: do j = 1, nv
-            associate (k1 => sys%sp_ptr(n + j), k2 => sys%sp_ptr(n + j + 1) - 1)
-                y(sys%sp_row(k1:k2)) = y(sys%sp_row(k1:k2)) + sys%sp_val(k1:k2)*x_bottom(j)
-            end associate
-        end do bottom
+        associate (nv => sys%nv)
+            y(1:nv) = columns_times(sys%k, x_top(1:nv)) + columns_times(sys%mt, x_top(nv + 1:))
+            y(nv + 1:) = columns_times(sys%mm, x_bottom(1:nv)) &
+                         + packed_times(sys%b0, x_bottom(nv + 1:))
+        end associate
     end function a0_times
+
+    !> Column j of A0.
+    pure function a0_column(sys, j) result(col)
+        type(system_t), intent(in) :: sys
+        integer, intent(in) :: j
+        real(dp) :: col(sys%nv + sys%nr)
+        associate (nv => sys%nv)
+            if (j <= nv) then
+                col(1:nv) = dense_column(sys%k, j)
+                col(nv + 1:) = dense_column(sys%mm, j)
+            else
+                col(1:nv) = dense_column(sys%mt, j - nv)
+                col(nv + 1:) = packed_column(sys%b0, sys%nr, j - nv)
+            end if
+        end associate
+    end function a0_column
+
+    !> A0 as a dense array (n^2 numbers: only for the methods that factorise it whole).
+    pure function a0_dense(sys) result(a)
+        type(system_t), intent(in) :: sys
+        real(dp), allocatable :: a(:, :)
+        integer :: j
+        allocate (a(sys%nv + sys%nr, sys%nv + sys%nr))
+        do j = 1, size(a, 2)
+            a(:, j) = a0_column(sys, j)
+        end do
+    end function a0_dense
+
+    !> The diagonal of A0.
+    pure function a0_diagonal(sys) result(dg)
+        type(system_t), intent(in) :: sys
+        real(dp) :: dg(sys%nv + sys%nr)
+        integer :: j
+        do j = 1, sys%nv
+            dg(j) = sum(sys%k%val(sys%k%ptr(j):sys%k%ptr(j + 1) - 1), &
+                        mask=sys%k%row(sys%k%ptr(j):sys%k%ptr(j + 1) - 1) == j)
+        end do
+        do j = 1, sys%nr
+            dg(sys%nv + j) = packed_entry(sys%b0, sys%nr, j, j)
+        end do
+    end function a0_diagonal
 
     !> The law with regularisation eps_bar = eps, penalty parameter eta_bar = eta.
     pure function new_law(m, c, eps, eta) result(law)
@@ -258,14 +275,18 @@ contains
         law%penalty = c/eta
     end function new_law
 
-    !> a(i,j) += factor * wt g_i g_j at contact point p for traction field k (1: x, 2: z).
-    pure subroutine add_point_mass(pts, p, k, factor, a)
+    !> a(i,j) += factor * wt g_i g_j at contact point p for traction field k (1: x, 2: z);
+    !! a holds the unknowns from shift + 1 on (default 0: all of them).
+    pure subroutine add_point_mass(pts, p, k, factor, a, shift)
         type(contact_points_t), intent(in) :: pts
         integer, intent(in) :: p, k
         real(dp), intent(in) :: factor
         real(dp), intent(inout) :: a(:, :)
-        integer :: i, j
-        associate (idx => pts%idx(:, k, p), val => pts%val(:, k, p))
+        integer, intent(in), optional :: shift
+        integer :: i, j, s
+        s = 0
+        if (present(shift)) s = shift
+        associate (idx => pts%idx(:, k, p) - s, val => pts%val(:, k, p))
             do j = 1, pts%nl(k)
                 do i = 1, pts%nl(k)
                     a(idx(i), idx(j)) = a(idx(i), idx(j)) + factor*pts%wt(p)*val(i)*val(j)
@@ -390,7 +411,7 @@ contains
         logical, intent(out) :: symmetric
         type(set_terms_t) :: st
         integer :: i
-        a = sys%a0
+        a = a0_dense(sys)
         call set_terms(sys, law, pts, sigma, st)
         symmetric = st%symmetric
         entries: do i = 1, st%n
@@ -499,9 +520,7 @@ contains
         real(dp) :: dg(d%n)
         real(dp) :: fx, fz
         integer :: i, p
-        do i = 1, d%n
-            dg(i) = sys%a0(i, i)
-        end do
+        dg = a0_diagonal(sys)
         points: do p = 1, pts%n
             fx = -sys%c*(law%eps - sys%law%eps)
             if (is_slipping(sigma(1, p), friction_threshold(law%f, sigma(2, p)))) &
@@ -518,7 +537,8 @@ contains
             ! the Schur complement onto the mode amplitudes, (MR)^T D^-1 (MR), so that their
             ! Jacobi correction is a displacement like the others'
             do i = 1, sys%rigid%np
-                associate (mr => sys%a0(d%nv + 1:, sys%rigid%pinned(i)), dr => dg(d%nv + 1:))
+                associate (mr => dense_column(sys%mm, sys%rigid%pinned(i)), &
+                           dr => dg(d%nv + 1:))
                     dg(sys%rigid%pinned(i)) = sum(mr**2/abs(dr), mask=dr /= 0.0_dp)
                 end associate
             end do

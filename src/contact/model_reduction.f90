@@ -26,7 +26,10 @@ module model_reduction
                      FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     use mesh, only: mesh_t
     use discretization, only: discretization_t
-    use contact_system, only: system_t, contact_points_t, sparse_blocks
+    use contact_system, only: system_t, contact_points_t, set_base_matrix, a0_diagonal, &
+                              diagonal_scaling
+    use sparse_matrix, only: columns_t, triplets_t, new_triplets, add_entry, packed_column, &
+                             packed_lower
     use rigid_body, only: new_rigid
     implicit none
     private
@@ -206,32 +209,35 @@ contains
         dr%fixed = pack(dr%fixed, dr%fixed > 0)
     end function reduced_discretization
 
-    !> P^T A0 P, P^T q, its sparse blocks (for the structured products of contact_system) and
-    !! the rigid-body bookkeeping of the reduced problem.
+    !> P^T A0 P (by blocks), P^T q and the rigid-body bookkeeping of the reduced problem.
     function reduced_system(sys, d, dr, red) result(sr)
         type(system_t), intent(in) :: sys
         type(discretization_t), intent(in) :: d, dr
         type(reduction_t), intent(in) :: red
         type(system_t) :: sr
+        real(dp), allocatable :: b0(:, :), b0_packed(:)
         integer :: i, j
-        allocate (sr%a0(dr%n, dr%n), sr%q(dr%nv), sr%row_scale(dr%n))
-        sr%a0 = 0.0_dp
+        allocate (sr%q(dr%nv), b0(dr%nr, dr%nr))
         sr%q = 0.0_dp
-        columns: do j = 1, d%n
-            if (red%k(j) == 0) cycle columns
-            rows: do i = 1, d%n
-                if (red%k(i) == 0) cycle rows
-                sr%a0(red%k(i), red%k(j)) = sr%a0(red%k(i), red%k(j)) &
-                                            + red%s(i)*red%s(j)*sys%a0(i, j)
-            end do rows
-        end do columns
         do i = 1, d%nv
             if (red%k(i) > 0) sr%q(red%k(i)) = sr%q(red%k(i)) + red%s(i)*sys%q(i)
         end do
-        do i = 1, dr%n
-            sr%row_scale(i) = 1.0_dp
-            if (sr%a0(i, i) /= 0.0_dp) sr%row_scale(i) = 1.0_dp/sqrt(abs(sr%a0(i, i)))
-        end do
+        b0 = 0.0_dp
+        columns: do j = 1, d%nr
+            if (red%k(d%nv + j) == 0) cycle columns
+            associate (col => packed_column(sys%b0, d%nr, j), jr => red%k(d%nv + j) - dr%nv)
+                rows: do i = 1, d%nr
+                    if (red%k(d%nv + i) == 0) cycle rows
+                    b0(red%k(d%nv + i) - dr%nv, jr) = b0(red%k(d%nv + i) - dr%nv, jr) &
+                                                      + red%s(d%nv + i)*red%s(d%nv + j)*col(i)
+                end do rows
+            end associate
+        end do columns
+        b0_packed = packed_lower(b0)
+        deallocate (b0)
+        call set_base_matrix(sr, dr%nv, restricted(sys%k, red, 0, 0, 0, 0), &
+                             restricted(sys%mm, red, d%nv, 0, dr%nv, 0), b0_packed)
+        sr%row_scale = diagonal_scaling(a0_diagonal(sr))
         sr%c = sys%c
         sr%kappa = sys%kappa
         sr%penalty = sys%penalty
@@ -244,8 +250,31 @@ contains
             ! only tractions dropped: the displacement numbering is the full one
             sr%rigid = sys%rigid
         end if
-        call sparse_blocks(dr%nv, sr)
     end function reduced_system
+
+    !> The entries of the block c of A0 mapped through P: c(i, j) is A0(row0 + i, col0 + j)
+    !! in the full numbering, the result's (i', j') is the reduced A0(row0r + i', col0r + j').
+    pure function restricted(c, red, row0, col0, row0r, col0r) result(t)
+        type(columns_t), intent(in) :: c
+        type(reduction_t), intent(in) :: red
+        integer, intent(in) :: row0, col0, row0r, col0r
+        type(triplets_t) :: t
+        integer :: j, l
+        t = new_triplets(c%nrow, c%ncol, size(c%val))
+        ! (mirror pairs share one reduced unknown: the size is the largest reduced number)
+        t%nrow = maxval([row0r, red%k(row0 + 1:row0 + c%nrow)]) - row0r
+        t%ncol = maxval([col0r, red%k(col0 + 1:col0 + c%ncol)]) - col0r
+        columns: do j = 1, c%ncol
+            if (red%k(col0 + j) == 0) cycle columns
+            entries: do l = c%ptr(j), c%ptr(j + 1) - 1
+                associate (i => c%row(l))
+                    if (red%k(row0 + i) == 0) cycle entries
+                    call add_entry(t, red%k(row0 + i) - row0r, red%k(col0 + j) - col0r, &
+                                   red%s(row0 + i)*red%s(col0 + j)*c%val(l))
+                end associate
+            end do entries
+        end do columns
+    end function restricted
 
     !> The contact points with their traction basis mapped through P (entries of one point
     !! that map to the same reduced unknown merged, so no index repeats within a point;

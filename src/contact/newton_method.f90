@@ -39,7 +39,7 @@ module newton_method
                               contact_points_t, &
                               point_tractions, complete_residual, complete_jacobian, &
                               jacobian_diagonal, relative_change, linear_part, &
-                              set_terms_t, set_terms
+                              set_terms_t, set_terms, a0_dense
     use interface_law, only: friction_threshold, in_tension, is_slipping
     use sorting, only: sort_ascending
     implicit none
@@ -128,7 +128,7 @@ contains
             sol%n_factorisations = sol%n_factorisations + 1
             return
         end if
-        a = sys%a0
+        a = a0_dense(sys)
         do i = 1, size(d%fixed)
             a(d%fixed(i), :) = 0.0_dp
             a(:, d%fixed(i)) = 0.0_dp
@@ -223,7 +223,7 @@ contains
         logical, intent(out) :: converged
         type(error_t), allocatable, intent(out) :: err
         type(newton_state_t) :: s
-        real(dp), allocatable :: dz(:), z_old(:)
+        real(dp), allocatable :: dz(:), z_old(:), z_exact(:)
         integer, allocatable :: code(:), new_code(:)
         real(dp) :: t, incr, phi_exact, equilibrium
         integer :: iter
@@ -256,7 +256,14 @@ contains
             exact = exact .or. s%phi <= round_off
             converged = exact .and. (equilibrium <= refine_tol .or. &
                                      equilibrium > 0.5_dp*phi_exact)
-            if (exact) phi_exact = equilibrium
+            if (converged .and. equilibrium > phi_exact) then
+                ! the refinement has reached round-off and made it worse: keep the better
+                ! exact step (the state is recomputed from z by the caller)
+                sol%z = z_exact
+            else if (exact) then
+                phi_exact = equilibrium
+                z_exact = sol%z
+            end if
             code = new_code
             if (.not. (converged .or. patient) .and. s%exhausted) exit iterations
         end do iterations

@@ -16,6 +16,7 @@
 !! symmetric; the flexural part is solved for directly, to the precision of its own size.
 module rigid_body
     use kinds, only: dp
+    use sparse_matrix, only: triplets_t, add_entry
     implicit none
     private
 
@@ -69,25 +70,33 @@ contains
         end associate
     end function new_rigid
 
-    !> a <- P^T a P and q <- P^T q for the base matrix a = [K M^T; M B] (nv displacement
-    !! unknowns first) and the structural loads q; K R = 0 and R^T K = 0 exactly.
-    pure subroutine to_rigid_coordinates(rb, nv, a, q)
+    !> [K M^T; M B] <- P^T [K M^T; M B] P and q <- P^T q, on the entries of K (nv x nv) and
+    !! M (nr x nv); B is unchanged. K R = 0 and R^T K = 0 exactly: the entries of K in the
+    !! pinned rows and columns are set to 0; the pinned columns of M become M R.
+    pure subroutine to_rigid_coordinates(rb, k, mm, q)
         type(rigid_t), intent(in) :: rb
-        integer, intent(in) :: nv
-        real(dp), intent(inout) :: a(:, :)
+        type(triplets_t), intent(inout) :: k, mm
         real(dp), intent(inout) :: q(:)
         real(dp), allocatable :: mr(:, :), rq(:)
-        integer :: k
+        logical, allocatable :: pinned(:)
+        integer :: i, e
         if (rb%np == 0) return
-        mr = matmul(a(nv + 1:, 1:nv), rb%modes)     ! M R: the modes seen by the tractions
-        rq = matmul(q, rb%modes)
-        do k = 1, rb%np
-            a(1:nv, rb%pinned(k)) = 0.0_dp
-            a(rb%pinned(k), 1:nv) = 0.0_dp
-            a(nv + 1:, rb%pinned(k)) = mr(:, k)
-            a(rb%pinned(k), nv + 1:) = mr(:, k)
-            q(rb%pinned(k)) = rq(k)
+        allocate (pinned(k%ncol), mr(mm%nrow, rb%np))
+        pinned = .false.
+        pinned(rb%pinned) = .true.
+        mr = 0.0_dp                                  ! M R: the modes seen by the tractions
+        do e = 1, mm%n
+            mr(mm%row(e), :) = mr(mm%row(e), :) + mm%val(e)*rb%modes(mm%col(e), :)
         end do
+        rq = matmul(q, rb%modes)
+        where (pinned(k%row(1:k%n)) .or. pinned(k%col(1:k%n))) k%val(1:k%n) = 0.0_dp
+        where (pinned(mm%col(1:mm%n))) mm%val(1:mm%n) = 0.0_dp
+        modes: do e = 1, rb%np
+            do i = 1, mm%nrow
+                if (mr(i, e) /= 0.0_dp) call add_entry(mm, i, rb%pinned(e), mr(i, e))
+            end do
+            q(rb%pinned(e)) = rq(e)
+        end do modes
     end subroutine to_rigid_coordinates
 
     !> The absolute unknowns of z in rigid coordinates (the tractions are unchanged).

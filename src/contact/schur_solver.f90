@@ -20,7 +20,8 @@ module schur_solver
     use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
     use model, only: FIELD_U, FIELD_PSI
     use discretization, only: discretization_t
-    use contact_system, only: system_t, set_terms_t, a0_times
+    use contact_system, only: system_t, set_terms_t, a0_times, a0_column
+    use sparse_matrix, only: packed_position, unpack_lower
     use lapack_interfaces, only: dpbtrf, dpbtrs, dsytrf, dsytrs, dgetrf, dgetrs
     implicit none
     private
@@ -37,7 +38,7 @@ module schur_solver
         integer, allocatable :: pos(:)       !! global -> position in kept (0: not kept)
         logical, allocatable :: fixed(:)     !! global: a constrained unknown (z_i = 0 rows)
         real(dp), allocatable :: kband(:, :) !! Cholesky factor of K_ii, LAPACK band storage
-        real(dp), allocatable :: s0(:, :)    !! constant Schur complement (nk x nk)
+        real(dp), allocatable :: s0(:)       !! constant Schur complement (nk x nk), packed lower
         integer, allocatable :: c_row(:)     !! nonzeros of C = J(inner, kept): inner position,
         integer, allocatable :: c_col(:)     !! kept position,
         real(dp), allocatable :: c_val(:)    !! value (J is symmetric there: J(kept, inner) = C^T)
@@ -151,21 +152,24 @@ contains
     subroutine factorise_inner(sys, sc)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(inout) :: sc
+        real(dp), allocatable :: col(:)
         integer :: i, j, info
         sc%kd = 0
         columns: do j = 1, sc%ni
+            col = a0_column(sys, sc%inner(j))
             do i = sc%ni, j + sc%kd + 1, -1
-                if (sys%a0(sc%inner(i), sc%inner(j)) /= 0.0_dp) then
+                if (col(sc%inner(i)) /= 0.0_dp) then
                     sc%kd = i - j
                     cycle columns
                 end if
             end do
         end do columns
         allocate (sc%kband(sc%kd + 1, sc%ni))
-        sc%kband = 0.0_dp
         do j = 1, sc%ni
+            col = a0_column(sys, sc%inner(j))
+            sc%kband(:, j) = 0.0_dp
             do i = j, min(sc%ni, j + sc%kd)
-                sc%kband(1 + i - j, j) = sys%a0(sc%inner(i), sc%inner(j))
+                sc%kband(1 + i - j, j) = col(sc%inner(i))
             end do
         end do
         call dpbtrf('L', sc%ni, sc%kd, sc%kband, sc%kd + 1, info)
@@ -176,36 +180,41 @@ contains
     subroutine coupling_nonzeros(sys, sc)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(inout) :: sc
-        integer :: i, l, nnz
-        nnz = 0
-        do l = 1, sc%nk
-            nnz = nnz + count(sys%a0(sc%inner, sc%kept(l)) /= 0.0_dp)
-        end do
-        allocate (sc%c_row(nnz), sc%c_col(nnz), sc%c_val(nnz))
-        nnz = 0
-        kept_columns: do l = 1, sc%nk
-            inner_rows: do i = 1, sc%ni
-                if (sys%a0(sc%inner(i), sc%kept(l)) == 0.0_dp) cycle inner_rows
-                nnz = nnz + 1
-                sc%c_row(nnz) = i
-                sc%c_col(nnz) = l
-                sc%c_val(nnz) = sys%a0(sc%inner(i), sc%kept(l))
-            end do inner_rows
-        end do kept_columns
+        real(dp), allocatable :: col(:)
+        integer :: i, l, nnz, pass
+        passes: do pass = 1, 2      ! count, then fill
+            nnz = 0
+            kept_columns: do l = 1, sc%nk
+                col = a0_column(sys, sc%kept(l))
+                inner_rows: do i = 1, sc%ni
+                    if (col(sc%inner(i)) == 0.0_dp) cycle inner_rows
+                    nnz = nnz + 1
+                    if (pass == 1) cycle inner_rows
+                    sc%c_row(nnz) = i
+                    sc%c_col(nnz) = l
+                    sc%c_val(nnz) = col(sc%inner(i))
+                end do inner_rows
+            end do kept_columns
+            if (pass == 1) allocate (sc%c_row(nnz), sc%c_col(nnz), sc%c_val(nnz))
+        end do passes
     end subroutine coupling_nonzeros
 
-    !> S0 = J(kept, kept) - C^T K_ii^-1 C, block_columns columns at a time; the pinned-pinned
-    !! block exactly 0.
+    !> S0 = J(kept, kept) - C^T K_ii^-1 C, block_columns columns at a time, stored as its
+    !! lower triangle (packed: S0 is symmetric); the pinned-pinned block exactly 0.
     subroutine form_s0(sys, sc)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(inout) :: sc
-        real(dp), allocatable :: w(:, :)
+        real(dp), allocatable :: w(:, :), col(:)
         integer :: j1, j2, j, k, info
-        sc%s0 = sys%a0(sc%kept, sc%kept)
-        allocate (w(sc%ni, block_columns))
+        allocate (w(sc%ni, block_columns), sc%s0(sc%nk*(sc%nk + 1)/2))
         blocks: do j1 = 1, sc%nk, block_columns
             j2 = min(sc%nk, j1 + block_columns - 1)
-            w(:, 1:j2 - j1 + 1) = sys%a0(sc%inner, sc%kept(j1:j2))
+            do j = j1, j2
+                col = a0_column(sys, sc%kept(j))
+                w(:, j - j1 + 1) = col(sc%inner)
+                sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%nk, j)) = &
+                    col(sc%kept(j:))
+            end do
             call dpbtrs('L', sc%ni, sc%kd, j2 - j1 + 1, sc%kband, sc%kd + 1, w, sc%ni, info)
             if (info /= 0) then      ! an illegal argument: keep the dense path
                 sc%ready = .false.
@@ -213,12 +222,16 @@ contains
             end if
             columns: do j = j1, j2
                 nonzeros: do k = 1, size(sc%c_val)
-                    sc%s0(sc%c_col(k), j) = sc%s0(sc%c_col(k), j) &
-                                            - sc%c_val(k)*w(sc%c_row(k), j - j1 + 1)
+                    if (sc%c_col(k) < j) cycle nonzeros
+                    associate (s => sc%s0(packed_position(sc%nk, sc%c_col(k), j)))
+                        s = s - sc%c_val(k)*w(sc%c_row(k), j - j1 + 1)
+                    end associate
                 end do nonzeros
             end do columns
         end do blocks
-        sc%s0(1:sc%n_pinned, 1:sc%n_pinned) = 0.0_dp
+        do j = 1, sc%n_pinned
+            sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%n_pinned, j)) = 0.0_dp
+        end do
     end subroutine form_s0
 
     !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU).
@@ -231,7 +244,8 @@ contains
         real(dp), allocatable :: work(:)
         integer :: i, r, c, info
         character(len=160) :: text
-        fac%lu = sc%s0
+        allocate (fac%lu(sc%nk, sc%nk))
+        call unpack_lower(sc%s0, fac%lu)
         fac%symmetric = st%symmetric
         fac%base = st
         fac%nu = 0

@@ -15,7 +15,7 @@ module two_loop_method
     use mindlin_structure, only: traction_at
     use linear_solve, only: solve_symmetric
     use contact_system, only: iteration_record_t, solution_t, system_t, add_point_mass, &
-                              relative_change
+                              relative_change, a0_dense, a0_diagonal
     use interface_law, only: STATE_STICK, contact_state, friction_threshold, in_tension, &
                              is_slipping
     implicit none
@@ -212,14 +212,15 @@ contains
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(solution_t), intent(in) :: sol
-        real(dp), allocatable :: a(:, :), rhs(:), res(:)
+        real(dp), allocatable :: a(:, :), rhs(:), res(:), a0_diag(:)
         integer :: i
         call system_for_sets(d, sys, sol, a, rhs)
         res = matmul(a, sol%z) - rhs
+        a0_diag = a0_diagonal(sys)
         do i = 1, d%n
             ! (a rigid-body compatibility row has diagonal 0 in both: weight 1)
             if (a(i, i) /= 0.0_dp) &
-                res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(sys%a0(i, i)/a(i, i)))**0.5_dp
+                res(i) = res(i)*sys%row_scale(i)*min(1.0_dp, abs(a0_diag(i)/a(i, i)))**0.5_dp
         end do
         merit = norm2(res)
     end function merit
@@ -280,7 +281,7 @@ contains
         real(dp), allocatable, intent(out) :: a(:, :), rhs(:)
         integer :: p, i, nl
         real(dp) :: sgn
-        a = sys%a0
+        a = a0_dense(sys)
         allocate (rhs(d%n))
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q

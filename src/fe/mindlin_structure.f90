@@ -18,6 +18,7 @@ module mindlin_structure
     use quadrature, only: gauss_legendre
     use shape_functions, only: basis_t, eval_basis, max_local
     use discretization, only: discretization_t, locate_element
+    use sparse_matrix, only: triplets_t, new_triplets, add_entry, compressed, dense_of
     use model, only: model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, &
                      LOAD_RING, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     implicit none
@@ -40,6 +41,7 @@ module mindlin_structure
     end type field_point_t
 
     public :: section_of, assemble_stiffness, assemble_loads, assemble_coupling
+    public :: stiffness_entries, coupling_entries
     public :: displacement_at, traction_at, resultants
 
 contains
@@ -63,27 +65,35 @@ contains
         end if
     end function section_of
 
-    !> Structural stiffness K (nv x nv) in the numbering of d.
+    !> Structural stiffness K (nv x nv) in the numbering of d, dense (tests, benchmarks).
     pure subroutine assemble_stiffness(sec, d, k)
         type(section_t), intent(in) :: sec
         type(discretization_t), intent(in) :: d
         real(dp), intent(out) :: k(:, :)     !! nv x nv
+        k = dense_of(compressed(stiffness_entries(sec, d)))
+    end subroutine assemble_stiffness
+
+    !> The element contributions to K as triplets (they add where they meet).
+    pure function stiffness_entries(sec, d) result(k)
+        type(section_t), intent(in) :: sec
+        type(discretization_t), intent(in) :: d
+        type(triplets_t) :: k
         integer :: e, n_full, n_shear
-        k = 0.0_dp
+        k = new_triplets(d%nv, d%nv, 4*d%msh%ne*(2*max_local)**2)
         n_full = maxval(d%basis(FIELD_U:FIELD_PSI)%degree) + merge(2, 1, sec%plate)
         n_shear = max(d%basis(FIELD_W)%degree, d%basis(FIELD_PSI)%degree)
         elements: do e = 1, d%msh%ne
             call add_membrane_bending(sec, d, e, n_full, k)
             call add_shear(sec, d, e, n_shear, k)
         end do elements
-    end subroutine assemble_stiffness
+    end function stiffness_entries
 
     !> Membrane and bending terms of element e (exact Gauss rule, n points).
     pure subroutine add_membrane_bending(sec, d, e, n, k)
         type(section_t), intent(in) :: sec
         type(discretization_t), intent(in) :: d
         integer, intent(in) :: e, n
-        real(dp), intent(inout) :: k(:, :)
+        type(triplets_t), intent(inout) :: k
         real(dp) :: xi(n), w(n)
         integer :: q
         call gauss_legendre(n, xi, w)
@@ -101,7 +111,7 @@ contains
         type(basis_t), intent(in) :: basis
         integer, intent(in) :: offset, e
         real(dp), intent(in) :: xi, w_gauss, stiff
-        real(dp), intent(inout) :: k(:, :)
+        type(triplets_t), intent(inout) :: k
         integer :: idx(max_local), i, j, n
         real(dp) :: val(max_local), der(max_local), x, wt, r_inv
         call eval_basis(basis, e, xi, idx, val, der, x)
@@ -114,12 +124,11 @@ contains
         do j = 1, n
             do i = 1, n
                 if (sec%plate) then
-                    k(offset + idx(i), offset + idx(j)) = k(offset + idx(i), offset + idx(j)) &
-                        + wt*(der(i)*der(j) + sec%nu*(der(i)*val(j) + val(i)*der(j))*r_inv &
-                              + val(i)*val(j)*r_inv**2)
+                    call add_entry(k, offset + idx(i), offset + idx(j), &
+                                   wt*(der(i)*der(j) + sec%nu*(der(i)*val(j) + val(i)*der(j)) &
+                                       *r_inv + val(i)*val(j)*r_inv**2))
                 else
-                    k(offset + idx(i), offset + idx(j)) = k(offset + idx(i), offset + idx(j)) &
-                        + wt*der(i)*der(j)
+                    call add_entry(k, offset + idx(i), offset + idx(j), wt*der(i)*der(j))
                 end if
             end do
         end do
@@ -130,7 +139,7 @@ contains
         type(section_t), intent(in) :: sec
         type(discretization_t), intent(in) :: d
         integer, intent(in) :: e, n
-        real(dp), intent(inout) :: k(:, :)
+        type(triplets_t), intent(inout) :: k
         real(dp) :: xi(n), w(n), b_vec(2*max_local), x, wt
         real(dp) :: val(max_local), der(max_local)
         integer :: idx_w(max_local), idx_p(max_local), dofs(2*max_local), q, i, j, nw, np
@@ -148,25 +157,34 @@ contains
             if (sec%plate) wt = wt*2.0_dp*pi*x
             do j = 1, nw + np
                 do i = 1, nw + np
-                    k(dofs(i), dofs(j)) = k(dofs(i), dofs(j)) + wt*b_vec(i)*b_vec(j)
+                    call add_entry(k, dofs(i), dofs(j), wt*b_vec(i)*b_vec(j))
                 end do
             end do
         end do gauss_points
     end subroutine add_shear
 
-    !> Coupling M (nr x nv) between tractions and bottom-face displacements (paper 2.2b).
+    !> Coupling M (nr x nv) between tractions and bottom-face displacements (paper 2.2b),
+    !! dense (tests, benchmarks).
     pure subroutine assemble_coupling(m, d, mm)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         real(dp), intent(out) :: mm(:, :)    !! nr x nv
+        mm = dense_of(compressed(coupling_entries(m, d)))
+    end subroutine assemble_coupling
+
+    !> The element contributions to M as triplets.
+    pure function coupling_entries(m, d) result(mm)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(triplets_t) :: mm
         integer :: e
-        mm = 0.0_dp
+        mm = new_triplets(d%nr, d%nv, 12*d%msh%ne*max_local**2)
         elements: do e = 1, d%msh%ne
             call add_mass_block(m, d, e, FIELD_SX, FIELD_U, 1.0_dp, mm)
             call add_mass_block(m, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*m%h, mm)
             call add_mass_block(m, d, e, FIELD_SZ, FIELD_W, 1.0_dp, mm)
         end do elements
-    end subroutine assemble_coupling
+    end function coupling_entries
 
     !> factor * int g_a f_b (weight 1 or 2 pi r) on element e into the (row_field, col_field) block.
     pure subroutine add_mass_block(m, d, e, row_field, col_field, factor, mm)
@@ -174,7 +192,7 @@ contains
         type(discretization_t), intent(in) :: d
         integer, intent(in) :: e, row_field, col_field
         real(dp), intent(in) :: factor
-        real(dp), intent(inout) :: mm(:, :)
+        type(triplets_t), intent(inout) :: mm
         integer, parameter :: n = 4    ! exact for degree 2 x degree 2 x r
         real(dp) :: xi(n), w(n), vr(max_local), vc(max_local), dr(max_local), x, wt
         integer :: ir(max_local), ic(max_local), q, i, j, row0
@@ -187,8 +205,8 @@ contains
             if (m%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
             do j = 1, d%basis(col_field)%n_local
                 do i = 1, d%basis(row_field)%n_local
-                    mm(row0 + ir(i), d%offset(col_field) + ic(j)) = &
-                        mm(row0 + ir(i), d%offset(col_field) + ic(j)) + wt*vr(i)*vc(j)
+                    call add_entry(mm, row0 + ir(i), d%offset(col_field) + ic(j), &
+                                   wt*vr(i)*vc(j))
                 end do
             end do
         end do

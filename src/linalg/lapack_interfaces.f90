@@ -4,6 +4,7 @@ module lapack_interfaces
     implicit none
     private
     public :: dsytrf, dsytrs, dpotrf, dlansy, dgesv, dgetrs, dgetrf, dpbtrf, dpbtrs
+    public :: dspmv
 
     interface
         subroutine dsytrf(uplo, n, a, lda, ipiv, work, lwork, info)
@@ -86,5 +87,16 @@ module lapack_interfaces
             real(dp), intent(inout) :: work(*)
             real(dp) :: dlansy
         end function dlansy
+
+        !> BLAS y := alpha A x + beta y, A symmetric in packed storage. Declared pure: it
+        !! writes y only, so that the pure products of contact_system can use it.
+        pure subroutine dspmv(uplo, n, alpha, ap, x, incx, beta, y, incy)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, incx, incy
+            real(dp), intent(in) :: alpha, beta
+            real(dp), intent(in) :: ap(*), x(*)
+            real(dp), intent(inout) :: y(*)
+        end subroutine dspmv
     end interface
 end module lapack_interfaces
