@@ -24,7 +24,7 @@ program bench_phases
     use model, only: model_t, METHOD_NEWTON
     use deck_reader, only: deck_t, read_deck, case_model
     use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact, check_load_admissible
+    use contact_solver, only: solution_t, solve_contact, check_load_admissible, nested_prediction
     use contact_system, only: system_t, build_system, contact_points, point_tractions, &
                               use_rigid_coordinates, set_terms_t, set_terms
     use interface_law, only: friction_threshold, contact_state, is_slipping, in_tension
@@ -254,8 +254,8 @@ contains
 
     !> contact_solver::solve_contact for a Newton case without model reduction, in its
     !! order: the system (build_system: T, K, M, packed B0, loads; then the
-    !! change to rigid coordinates), the Newton iterations (solve_newton: Schur set-up,
-    !! adhesive start, the steps with their factorisations, updates, line searches and
+    !! change to rigid coordinates), the Newton iterations (nested_prediction: the solves on
+    !! the nested coarser meshes, then solve_newton: Schur set-up, the start, the steps with their factorisations, updates, line searches and
     !! residuals, a continuation if it stalls), and the final checks (the complete problem's
     !! sets, residuals, equilibrium, admissibility; back to absolute coordinates).
     subroutine time_solve(m, d, sys, sol, t_build, t_newton, t_checks)
@@ -265,6 +265,7 @@ contains
         type(solution_t), intent(inout) :: sol
         real(dp), intent(out) :: t_build, t_newton, t_checks
         type(error_t), allocatable :: err
+        real(dp), allocatable :: sigma_start(:, :)
         real(dp) :: t0
         if (m%method /= METHOD_NEWTON .or. is_active(plan_reduction(m, d))) &
             error stop 'bench_phases: the replica covers Newton without model reduction only'
@@ -277,7 +278,8 @@ contains
         call use_rigid_coordinates(sys)
         t_build = now() - t0
         t0 = now()
-        call solve_newton(m, d, sys, sol, err)
+        call nested_prediction(m, d, sol, sigma_start)
+        call solve_newton(m, d, sys, sol, err, sigma_start)
         t_newton = now() - t0
         if (allocated(err)) error stop 'bench_phases: the Newton solve failed'
         t0 = now()
@@ -547,7 +549,8 @@ contains
             '  the stick terms on T, the packing of B0 = -(T + c eps S0) into its lower', &
             '  triangle, M^T, loads, the row scaling, the rigid-coordinate change of K and M.', &
             '  Expected 2 (the packing of the dense block).', &
-            '- Newton iterations: solve_newton. The Schur set-up (banded Cholesky of K_ii,', &
+            '- Newton iterations: nested_prediction (N_e > 48: the case on the nested coarser', &
+            '  mesh, recursively, for the start) and solve_newton. The Schur set-up (banded Cholesky of K_ii,', &
             '  O(N_e); S0 = J_kk - C^T K_ii^-1 C: nk band solves, O(N_e^2)), the adhesive start,', &
             '  each step: set terms, a dense LDL^T/LU of the nk x nk kept block (nk ~ 2 N_e,', &
             '  O(N_e^3)) or a Woodbury update, solves and refinement with the dense T block', &

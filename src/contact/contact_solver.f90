@@ -8,10 +8,24 @@
 !! point), newton_method and two_loop_method (the iterations), solution_checks (refusals and
 !! the checks of every answer). This module only dispatches; every method solves in the
 !! rigid coordinates of rigid_body (stiff structures), the answer is returned absolute.
+!!
+!! Nested start (Newton): a mesh of more than nested_from elements is first solved on its
+!! nested coarser mesh (every other node, the ends and the load positions kept: mesh_refinement),
+!! itself solved the same way; the coarse tractions at the fine contact points predict the
+!! sets, and the Newton method starts from the solution for those sets. The lift-off and
+!! stick/slip boundaries then start within an element or two of their place, where the
+!! adhesive start leaves them to move one front of Gauss points per step: on fine meshes of
+!! soft structures that front moved by a few points per step and the merit stalled (a plate,
+!! rho 1e-6, disk load: solved at N_e = 20, status 2 at N_e = 200 to 2000 before).
 module contact_solver
     use errors, only: error_t
     use model, only: model_t, METHOD_TWOLOOP
-    use discretization, only: discretization_t
+    use kinds, only: dp
+    use discretization, only: discretization_t, discretise_mesh, load_positions, &
+                              locate_element
+    use mesh, only: mesh_t
+    use mesh_refinement, only: coarsened, pinned_nodes
+    use mindlin_structure, only: traction_at
     use contact_system, only: contact_points_t, iteration_record_t, solution_t, system_t, &
                               build_system, contact_points, point_tractions, &
                               use_rigid_coordinates
@@ -28,37 +42,41 @@ module contact_solver
 
     public :: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
     public :: contact_points_t, iteration_record_t, solution_t
-    public :: solve_contact, check_load_admissible, contact_points
+    public :: solve_contact, check_load_admissible, contact_points, nested_prediction
+
+    integer, parameter :: nested_from = 48   !! larger meshes start from the nested coarser one
 
 contains
 
     !> Solve one case. Fails with EXIT_ANALYSIS when there is no equilibrium or no convergence.
-    subroutine solve_contact(m, d, sol, err, progress_unit)
+    recursive subroutine solve_contact(m, d, sol, err, progress_unit)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(out) :: sol
         type(error_t), allocatable, intent(out) :: err
         integer, intent(in), optional :: progress_unit   !! a unit for one line per Newton step
         type(system_t) :: sys
+        real(dp), allocatable :: sigma_start(:, :)
 
         allocate (sol%history(0))
         if (present(progress_unit)) sol%progress_unit = progress_unit
         call check_load_admissible(m, err)
         if (allocated(err)) return
         sol%pts = contact_points(m, d)
+        call nested_prediction(m, d, sol, sigma_start)
         call build_system(m, d, sol%pts, sys, err)
         if (allocated(err)) return
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
         if (is_active(plan_reduction(m, d))) then
-            call solve_reduced(m, d, sys, sol, err)
+            call solve_reduced(m, d, sys, sol, err, sigma_start)
             return
         end if
         call use_rigid_coordinates(sys)
         if (m%method == METHOD_TWOLOOP) then
             call solve_two_loop(m, d, sys, sol, err)
         else
-            call solve_newton(m, d, sys, sol, err)
+            call solve_newton(m, d, sys, sol, err, sigma_start)
             if (.not. allocated(err)) call classify_complete(m, sol)
         end if
         if (.not. allocated(err)) call final_checks(m, d, sys, sol, err)
@@ -69,12 +87,13 @@ contains
     !! problem (the model solved: for f = 0 Coulomb's sigma_x = 0, which the full model's
     !! regularised law would judge at its stick kink), then expanded to the full numbering
     !! (the contact points, and so the tractions and sets there, are the full model's).
-    subroutine solve_reduced(m, d, sys, sol, err)
+    subroutine solve_reduced(m, d, sys, sol, err, sigma_start)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable, intent(in) :: sigma_start(:, :)   !! nested_prediction's
         type(reduction_t) :: red
         type(discretization_t) :: dr
         type(system_t) :: sr
@@ -87,7 +106,7 @@ contains
         sol%pts = reduced_points(pts, red)
         deallocate (sol%z)
         allocate (sol%z(dr%n))
-        call solve_newton(m, dr, sr, sol, err)
+        call solve_newton(m, dr, sr, sol, err, sigma_start)
         if (.not. allocated(err)) then
             call classify_complete(m, sol)
             call final_checks(m, dr, sr, sol, err)
@@ -95,6 +114,36 @@ contains
         sol%z = expand(red, to_absolute(sr%rigid, sol%z))
         sol%pts = pts
     end subroutine solve_reduced
+
+    !> The tractions at the contact points of sol predicted by the solution on the nested
+    !! coarser mesh, for the Newton method on more than nested_from elements (not allocated
+    !! otherwise, or when the coarse case could not be solved: the Newton method then starts
+    !! from the adhesive solution). Its linear solves are counted in sol%n_nested_solves.
+    recursive subroutine nested_prediction(m, d, sol, sigma)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(inout) :: sol
+        real(dp), allocatable, intent(out) :: sigma(:, :)
+        type(mesh_t) :: coarse
+        type(discretization_t) :: dc
+        type(solution_t) :: sol_c
+        type(error_t), allocatable :: err_c
+        logical, allocatable :: pinned_c(:)
+        integer :: p, e
+        real(dp) :: xi
+        if (m%method == METHOD_TWOLOOP .or. d%msh%ne <= nested_from) return
+        call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m)), coarse, pinned_c)
+        if (coarse%ne >= d%msh%ne) return
+        call discretise_mesh(m, coarse, dc)
+        call solve_contact(m, dc, sol_c, err_c)
+        sol%n_nested_solves = sol_c%n_solves + sol_c%n_nested_solves
+        if (allocated(err_c)) return
+        allocate (sigma(2, sol%pts%n))
+        do p = 1, sol%pts%n
+            call locate_element(dc%msh, sol%pts%x(p), e, xi)
+            sigma(:, p) = traction_at(dc, sol_c%z(dc%nv + 1:), e, xi)
+        end do
+    end subroutine nested_prediction
 
     !> Tractions, threshold tau0 = f max(sigma_z, 0), sets and states of the complete problem.
     subroutine classify_complete(m, sol)

@@ -64,6 +64,8 @@ module contact_system
         character(len=8) :: method = ''      !! NEWTON or TWOLOOP
         integer :: n_outer = 0, n_inner = 0
         integer :: n_solves = 0              !! linear solves of the case
+        integer :: n_nested_solves = 0       !! linear solves on the nested coarser meshes
+                                             !! that gave the Newton start (contact_solver)
         integer :: progress_unit = -1        !! >= 0: each Newton step also reported there
                                              !! (the caller's progress for a big case)
         integer :: n_factorisations = 0      !! matrix factorisations among them (Newton: the
@@ -106,6 +108,7 @@ module contact_system
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
+    public :: jacobian_with_terms
     public :: jacobian_diagonal, linear_part, set_terms, a0_times, set_base_matrix
     public :: use_rigid_coordinates, a0_column, a0_dense, a0_diagonal, diagonal_scaling
 
@@ -410,10 +413,20 @@ contains
         real(dp), allocatable, intent(out) :: a(:, :)
         logical, intent(out) :: symmetric
         type(set_terms_t) :: st
-        integer :: i
-        a = a0_dense(sys)
         call set_terms(sys, law, pts, sigma, st)
         symmetric = st%symmetric
+        call jacobian_with_terms(d, sys, st, a)
+    end subroutine complete_jacobian
+
+    !> A0 plus the set terms st (duplicates add), fixed unknowns with identity rows and
+    !! columns: the dense Jacobian.
+    pure subroutine jacobian_with_terms(d, sys, st, a)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(set_terms_t), intent(in) :: st
+        real(dp), allocatable, intent(out) :: a(:, :)
+        integer :: i
+        a = a0_dense(sys)
         entries: do i = 1, st%n
             a(st%row(i), st%col(i)) = a(st%row(i), st%col(i)) + st%val(i)
         end do entries
@@ -422,7 +435,7 @@ contains
             a(:, d%fixed(i)) = 0.0_dp
             a(d%fixed(i), d%fixed(i)) = 1.0_dp
         end do
-    end subroutine complete_jacobian
+    end subroutine jacobian_with_terms
 
     !> The set-dependent entries of the Jacobian at the tractions sigma, as (row, col, value)
     !! triplets on the traction unknowns (duplicates add): the eps_bar of a continuation stage

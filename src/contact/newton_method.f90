@@ -39,7 +39,7 @@ module newton_method
                               contact_points_t, &
                               point_tractions, complete_residual, complete_jacobian, &
                               jacobian_diagonal, relative_change, linear_part, &
-                              set_terms_t, set_terms, a0_dense
+                              set_terms_t, set_terms, jacobian_with_terms
     use interface_law, only: friction_threshold, in_tension, is_slipping
     use sorting, only: sort_ascending
     implicit none
@@ -79,19 +79,29 @@ contains
 
     !> Solve the complete problem from the adhesive start; continuation if the plain method
     !! stalls. Fails with EXIT_ANALYSIS when neither converges.
-    subroutine solve_newton(m, d, sys, sol, err)
+    subroutine solve_newton(m, d, sys, sol, err, sigma_start)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable, intent(in) :: sigma_start(:, :)  !! tractions at the contact
+                                            !! points predicting the sets (else: adhesive)
         real(dp), allocatable :: z_start(:)
         type(schur_t) :: sc
         type(schur_factor_t) :: fac
+        type(set_terms_t) :: st
         logical :: converged
         sol%method = 'NEWTON'
         call new_schur(d, sys, sc)
-        call adhesive_start(d, sys, sc, fac, sol, err)
+        if (allocated(sigma_start)) then
+            call set_terms(sys, sys%law, sol%pts, sigma_start, st)
+            call log_note(sol, 'start: sets of the nested coarser mesh')
+        else
+            allocate (st%first(sol%pts%n + 1), st%row(0), st%col(0), st%val(0))
+            st%first = 1
+        end if
+        call solve_for_sets(d, sys, sc, fac, st, sol, err)
         if (allocated(err)) return
         z_start = sol%z
         call newton_stage(d, sys, sc, fac, sys%law, 1, min(plain_limit, m%max_inner), &
@@ -102,44 +112,34 @@ contains
         call continuation(m, d, sys, sc, fac, sol, err)
     end subroutine solve_newton
 
-    !> Bonded bilateral contact: A0 z = [q; 0], one symmetric solve.
-    subroutine adhesive_start(d, sys, sc, fac, sol, err)
+    !> The start: the solution for the set terms st, J_st z = [q; 0] (F is linear on each set
+    !! pattern and F(0) = -[q; 0], so one solve gives it). No set terms: bonded bilateral
+    !! contact A0 z = [q; 0], the paper's adhesive start.
+    subroutine solve_for_sets(d, sys, sc, fac, st, sol, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
         type(schur_factor_t), intent(inout) :: fac   !! the factorised Schur complement
+        type(set_terms_t), intent(in) :: st
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :), rhs(:)
-        type(set_terms_t) :: none
         logical :: factorised
-        integer :: i
         allocate (rhs(d%n))
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q
         rhs(d%fixed) = 0.0_dp
         if (sc%ready) then
-            allocate (none%first(sol%pts%n + 1), none%row(0), none%col(0), none%val(0))
-            none%first = 1
-            call schur_prepare(sc, none, fac, factorised, err)
-            if (.not. allocated(err)) call schur_solve(sys, sc, none, fac, rhs, sol%z, err)
-            if (allocated(err)) return
-            sol%n_solves = sol%n_solves + 1
-            sol%n_factorisations = sol%n_factorisations + 1
-            return
+            call schur_prepare(sc, st, fac, factorised, err)
+            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, rhs, sol%z, err)
+        else
+            call jacobian_with_terms(d, sys, st, a)
+            call solve_equilibrated(a, rhs, sol%z, st%symmetric, err)
         end if
-        a = a0_dense(sys)
-        do i = 1, size(d%fixed)
-            a(d%fixed(i), :) = 0.0_dp
-            a(:, d%fixed(i)) = 0.0_dp
-            a(d%fixed(i), d%fixed(i)) = 1.0_dp
-            rhs(d%fixed(i)) = 0.0_dp
-        end do
-        call solve_equilibrated(a, rhs, sol%z, .true., err)
         if (allocated(err)) return
         sol%n_solves = sol%n_solves + 1
         sol%n_factorisations = sol%n_factorisations + 1
-    end subroutine adhesive_start
+    end subroutine solve_for_sets
 
     !> Stages from eps_bar = max(10^3 eps_bar, 1e-3) down to the deck's (stage_law) from
     !! sol%z, the decrement doubled after a quick stage; a stage that fails is retried from

@@ -797,6 +797,8 @@ contains
         end do
         write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, ' inner'
         write (u, '(3x,a,i0)') 'linear solves: ', sol%n_solves
+        if (sol%n_nested_solves > 0) write (u, '(3x,a,i0,a)') 'start: ', sol%n_nested_solves, &
+            ' linear solves on the nested coarser meshes (every other node)'
     end subroutine write_log
 
     !> A station table from a list of columns; flagged rows end with ` !T` (tension beyond
