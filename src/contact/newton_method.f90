@@ -389,14 +389,18 @@ contains
     end subroutine take_step
 
     !> Set pattern of the complete problem at the tractions sigma: 1 for tension (penalty),
-    !! plus +-2 for slipping with that sign (interface_law decides both, independently).
+    !! plus +-2 for slipping with that sign (interface_law decides both, independently). On
+    !! the tension set tau0 = 0, so the slip term is linear in sigma_x whatever its sign and
+    !! the Jacobian does not depend on it: a tensile slipping point is 3 for either sign (else
+    !! a sign change there, e.g. where sigma_x ~ 0 in a lifted-off zone, would count as a set
+    !! change: a cycle, or a step that solves F = 0 not recognised as exact).
     pure function set_pattern(law, sigma) result(code)
         type(law_t), intent(in) :: law
         real(dp), intent(in) :: sigma(:, :)
         integer :: code(size(sigma, 2))
         code = merge(1, 0, in_tension(sigma(2, :)))
         where (is_slipping(sigma(1, :), friction_threshold(law%f, sigma(2, :)))) &
-            code = code + merge(2, -2, sigma(1, :) >= 0.0_dp)
+            code = code + merge(2, -2, sigma(1, :) >= 0.0_dp .or. code == 1)
     end function set_pattern
 
     !> Step length t on the ray z + t dz: the exact minimiser of the merit over (0, 1] (on each
