@@ -5,7 +5,8 @@
 !! d tau0/d sigma_z (LU then; LDL^T where the Jacobian is symmetric).
 !!
 !! Globalisation:
-!! - start: the adhesive (bonded, bilateral) solution A0 z = [q; 0], the paper's start;
+!! - start: the solution for the sets predicted by the nested coarser mesh (contact_solver),
+!!   else the adhesive (bonded, bilateral) solution A0 z = [q; 0], the paper's start;
 !! - merit: the Jacobi correction |F_i / J_ii| of every equation (J at the point where F is
 !!   evaluated) relative to max |v| or max |r| at the start of the stage, in the 2-norm: the
 !!   penalty and slip rows, whose entries carry 1/eta_bar and 1/eps_bar, count in tractions;
@@ -16,12 +17,12 @@
 !!   pattern met in the last 16 iterates (a cycle) is replaced by the exact line search along
 !!   it; a full step that keeps the set pattern is always taken (it solves F = 0);
 !! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once, or a
-!!   damped step no longer moves), from the adhesive start: eps_bar scaled by 10^s from
+!!   damped step no longer moves), from the same start: eps_bar scaled by 10^s from
 !!   max(10^3 eps_bar, 1e-3) (at most 0.5) down to the deck's, eta_bar by 10^min(s, 3), each
 !!   stage started from the previous solution, one decade per stage (doubled, up to 4, after
 !!   a stage of at most 3 steps while s > 3: eps_bar = 1e-12 spans 9 decades). A failed stage
 !!   is retried from the last converged one with half the decrement; a failed first stage
-!!   from one decade more regularisation; the case ends with status 2 when the decrement falls
+!!   from two decades more regularisation; the case ends with status 2 when the decrement falls
 !!   below 1/8 decade or the first stage fails at eps_bar = 0.5.
 !! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
 !! then linear between the iterates and the step solves F = 0) or the merit is at round-off,
@@ -52,7 +53,7 @@ module newton_method
     real(dp), parameter :: round_off = 1.0e3_dp*epsilon(1.0_dp)  !! merit of a solution
     real(dp), parameter :: refine_tol = 1.0e-12_dp  !! refine an exact step while 4.2a's
                                                     !! residual is above this (of max |q|)
-    integer, parameter :: watchdog = 10             !! full steps allowed without descent
+    integer, parameter :: watchdog = 5             !! full steps allowed without descent
     real(dp), parameter :: stall_increment = 1.0e-12_dp  !! a damped step this small: stalled
     integer, parameter :: memory = 16               !! set patterns kept for cycle detection
     real(dp), parameter :: top_level = 3.0_dp       !! continuation starts at 10^3 eps, eta
@@ -77,8 +78,8 @@ module newton_method
 
 contains
 
-    !> Solve the complete problem from the adhesive start; continuation if the plain method
-    !! stalls. Fails with EXIT_ANALYSIS when neither converges.
+    !> Solve the complete problem from the predicted or adhesive start; continuation if the
+    !! plain method stalls. Fails with EXIT_ANALYSIS when neither converges.
     subroutine solve_newton(m, d, sys, sol, err, sigma_start)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -144,7 +145,7 @@ contains
     !> Stages from eps_bar = max(10^3 eps_bar, 1e-3) down to the deck's (stage_law) from
     !! sol%z, the decrement doubled after a quick stage; a stage that fails is retried from
     !! the last converged one with half the decrement, a first stage that fails from a
-    !! regularisation one decade larger (up to eps_bar = 0.5).
+    !! regularisation two decades larger (up to eps_bar = 0.5).
     subroutine continuation(m, d, sys, sc, fac, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -178,7 +179,7 @@ contains
                 level = max(level - step, 0.0_dp)
             else if (good_level == huge(1.0_dp)) then
                 if (m%eps_bar*10.0_dp**level >= 0.5_dp) exit stages
-                level = level + 1.0_dp
+                level = level + 2.0_dp
                 sol%z = z_good
             else
                 step = 0.5_dp*step
