@@ -5,7 +5,9 @@ module discretization
     use errors, only: error_t
     use mesh, only: mesh_t, new_mesh
     use shape_functions, only: basis_t, new_basis
-    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
+    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, &
+                     FIELD_SZ
+    use mesh_refinement, only: nearest_node
     implicit none
     private
 
@@ -53,7 +55,11 @@ contains
         integer :: field
         d%msh = msh
         do field = FIELD_U, FIELD_SZ
-            call new_basis(d%basis(field), d%msh, m%interp(field))
+            if (field <= FIELD_PSI) then
+                call new_basis(d%basis(field), d%msh, m%interp(field), concentrated_nodes(m, msh))
+            else
+                call new_basis(d%basis(field), d%msh, m%interp(field))
+            end if
             if (field > FIELD_U) d%offset(field) = d%offset(field - 1) + d%basis(field - 1)%n_dof
         end do
         d%nv = d%offset(FIELD_SX)
@@ -66,6 +72,27 @@ contains
             d%fixed = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1, d%offset(FIELD_SX) + 1]
         end if
     end subroutine discretise_mesh
+
+    !> Interior nodes at which a concentrated load (point, ring, moment) acts: there a
+    !! shear force, axial force or moment jumps, so the slope of the displacement fields
+    !! does, and an S2 displacement basis is made C0 there (shape_functions); P1 and P2 are
+    !! C0 everywhere already. A load between nodes gets nothing (LOADS grading puts nodes on
+    !! the loads).
+    pure function concentrated_nodes(m, msh) result(nodes)
+        type(model_t), intent(in) :: m
+        type(mesh_t), intent(in) :: msh
+        integer, allocatable :: nodes(:)
+        real(dp) :: tol
+        integer :: i, k
+        tol = 1.0e-9_dp*(msh%x(msh%ne) - msh%x(0))
+        allocate (nodes(0))
+        do i = 1, size(m%loads)
+            if (m%loads(i)%kind == LOAD_PATCH) cycle
+            k = nearest_node(msh, m%loads(i)%x1)
+            if (abs(msh%x(k) - m%loads(i)%x1) <= tol .and. k > 0 .and. k < msh%ne .and. &
+                .not. any(nodes == k)) nodes = [nodes, k]
+        end do
+    end function concentrated_nodes
 
     !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading).
     pure function load_positions(m) result(x)

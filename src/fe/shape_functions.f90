@@ -5,7 +5,9 @@
 !!       local order (left, middle, right).
 !! * S2: quadratic B-splines on the open knot vector (x0, x0, x0, x1, ..., x_{ne-1}, xne, xne, xne)
 !!       (n_dof = ne + 2), C1 at every interior node: the paper's "parabolic" functions of
-!!       its Fig. 8. Coefficients are control values, not nodal values.
+!!       its Fig. 8. Coefficients are control values, not nodal values. A displacement
+!!       field may ask for C0 at given interior nodes (c0_nodes: a concentrated load acts
+!!       there, so the slope jumps): the knot is doubled there, one coefficient more each.
 !!
 !! For all three the first coefficient is the field value at the left end and the last one the
 !! value at the right end (the other functions vanish there), so end conditions such as
@@ -27,7 +29,9 @@ module shape_functions
         integer :: n_local = 0                     !! functions nonzero on each element
         integer :: degree = 1                      !! polynomial degree on an element
         real(dp), allocatable :: x(:)              !! mesh nodes x(0:ne) [length]
-        real(dp), allocatable :: knots(:)          !! S2 knot vector t(1:ne+5) [length]
+        real(dp), allocatable :: knots(:)          !! S2 knot vector t(1:n_dof+3) [length]
+        integer, allocatable :: span(:)            !! S2: element e is knot span
+                                                   !! [t(span(e)), t(span(e)+1)]
     end type basis_t
 
     public :: new_basis, eval_basis, interp_name, interp_code
@@ -35,10 +39,11 @@ module shape_functions
 contains
 
     !> Build the basis of the given family on the mesh.
-    pure subroutine new_basis(basis, msh, family)
+    pure subroutine new_basis(basis, msh, family, c0_nodes)
         type(basis_t), intent(out) :: basis
         type(mesh_t), intent(in) :: msh
         integer, intent(in) :: family          !! INTERP_P1, INTERP_P2 or INTERP_S2
+        integer, intent(in), optional :: c0_nodes(:)  !! S2: interior nodes made C0
         integer :: ne
         ne = msh%ne
         basis%family = family
@@ -50,19 +55,40 @@ contains
             basis%n_local = 3
             basis%degree = 2
         case (INTERP_S2)
-            basis%n_dof = ne + 2
             basis%n_local = 3
             basis%degree = 2
-            allocate (basis%knots(ne + 5))
-            basis%knots(1:3) = msh%x(0)
-            basis%knots(4:ne + 2) = msh%x(1:ne - 1)
-            basis%knots(ne + 3:ne + 5) = msh%x(ne)
+            call spline_knots(msh, basis, c0_nodes)
         case default
             basis%n_dof = ne + 1
             basis%n_local = 2
             basis%degree = 1
         end select
     end subroutine new_basis
+
+    !> The open knot vector of S2 (interior knots single, doubled at c0_nodes) and the knot
+    !! span of every element.
+    pure subroutine spline_knots(msh, basis, c0_nodes)
+        type(mesh_t), intent(in) :: msh
+        type(basis_t), intent(inout) :: basis
+        integer, intent(in), optional :: c0_nodes(:)
+        logical :: double(0:msh%ne)
+        integer :: k, e
+        double = .false.
+        if (present(c0_nodes)) then
+            do k = 1, size(c0_nodes)
+                if (c0_nodes(k) > 0 .and. c0_nodes(k) < msh%ne) double(c0_nodes(k)) = .true.
+            end do
+        end if
+        basis%knots = [msh%x(0), msh%x(0)]
+        allocate (basis%span(msh%ne))
+        do e = 1, msh%ne
+            basis%knots = [basis%knots, msh%x(e - 1)]
+            if (double(e - 1)) basis%knots = [basis%knots, msh%x(e - 1)]
+            basis%span(e) = size(basis%knots)
+        end do
+        basis%knots = [basis%knots, msh%x(msh%ne), msh%x(msh%ne), msh%x(msh%ne)]
+        basis%n_dof = size(basis%knots) - 3
+    end subroutine spline_knots
 
     !> Values and x-derivatives of the functions nonzero on element e at local xi in [-1, 1].
     pure subroutine eval_basis(basis, e, xi, idx, val, der, x)
@@ -85,8 +111,10 @@ contains
             val(1:3) = [0.5_dp*xi*(xi - 1.0_dp), 1.0_dp - xi*xi, 0.5_dp*xi*(xi + 1.0_dp)]
             der(1:3) = [xi - 0.5_dp, -2.0_dp*xi, xi + 0.5_dp]*(2.0_dp/h)
         case (INTERP_S2)
-            idx(1:3) = [e, e + 1, e + 2]
-            call quadratic_bspline(basis%knots, e + 2, x, val(1:3), der(1:3))
+            associate (span => basis%span(e))
+                idx(1:3) = [span - 2, span - 1, span]
+                call quadratic_bspline(basis%knots, span, x, val(1:3), der(1:3))
+            end associate
         case default
             idx(1:2) = [e, e + 1]
             val(1:2) = [0.5_dp*(1.0_dp - xi), 0.5_dp*(1.0_dp + xi)]
