@@ -16,6 +16,8 @@ program fricon_bench
                      METHOD_NEWTON, METHOD_TWOLOOP
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
+    use station_results, only: station_table_t, tabulate
+    use design_summary, only: summary_t, summarise
     use deck_reader, only: deck_t, read_deck, case_count, case_model
     use shape_functions, only: INTERP_P2
     implicit none
@@ -28,6 +30,10 @@ program fricon_bench
         integer :: ne = 0
         integer :: solves = 0
         integer :: nested = 0              !! linear solves on the nested coarser meshes (start)
+        integer :: factorisations = 0
+        real(dp) :: phase(6) = 0.0_dp      !! T, K + M + set-up, nested start, iterations,
+                                           !! checks (solution_t%seconds), output (stations
+                                           !! and design summary) [s]
         real(dp) :: seconds = 0.0_dp
         character(len=90) :: outcome = ''
     end type run_t
@@ -147,8 +153,10 @@ contains
         type(model_t) :: m
         type(discretization_t) :: d
         type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(summary_t) :: summary
         type(error_t), allocatable :: err
-        integer(int64) :: t0, t1, rate
+        integer(int64) :: t0, t1, t2, rate
         m = m0
         m%method = method
         r%label = name
@@ -162,8 +170,17 @@ contains
         r%seconds = real(t1 - t0, dp)/real(rate, dp)
         r%solves = sol%n_solves
         r%nested = sol%n_nested_solves
+        r%factorisations = sol%n_factorisations
+        r%phase(1:5) = sol%seconds
         r%outcome = 'solved'
-        if (allocated(err)) r%outcome = 'status 2: '//err%message
+        if (allocated(err)) then
+            r%outcome = 'status 2: '//err%message
+            return
+        end if
+        call tabulate(m, d, sol, tab, err)
+        if (.not. allocated(err)) summary = summarise(m, sol, tab)
+        call system_clock(t2)
+        r%phase(6) = real(t2 - t1, dp)/real(rate, dp)
     end function bench_case
 
     subroutine write_table(runs)
@@ -172,11 +189,13 @@ contains
         open (newunit=u, file=out_dir//'/bench_table.txt', status='replace', action='write')
         call write_machine(u)
         write (u, '(a)') '# set   case                                             N_e  method'// &
-            '   solves   nested   time_s  outcome'
+            '   solves   nested   time_s  outcome'//repeat(' ', 60)// &
+            '  factorisations  T_s  K_M_setup_s  nested_s  iterations_s  checks_s  output_s'
         do i = 1, size(runs)
-            write (u, '(a5,2x,a48,i5,2x,a7,2i9,f9.3,2x,a)') runs(i)%set, runs(i)%label, &
-                runs(i)%ne, method_name(runs(i)%method), runs(i)%solves, runs(i)%nested, &
-                runs(i)%seconds, trim(runs(i)%outcome)
+            write (u, '(a5,2x,a48,i5,2x,a7,2i9,f9.3,2x,a90,i16,6es11.3)') runs(i)%set, &
+                runs(i)%label, runs(i)%ne, method_name(runs(i)%method), runs(i)%solves, &
+                runs(i)%nested, runs(i)%seconds, runs(i)%outcome, runs(i)%factorisations, &
+                runs(i)%phase
         end do
         close (u)
     end subroutine write_table
@@ -240,7 +259,9 @@ contains
         write (u, '(a)') '# options: '//compiler_options()
         write (u, '(a)') '# time: wall clock of discretisation + solve_contact (T, K, M '// &
             'assembly, iterations, checks); solves: linear solves of the case; nested: '// &
-            'those on the nested coarser meshes that gave the start (N_e > 48)'
+            'those on the nested coarser meshes that gave the start (N_e > 48); after the '// &
+            'outcome: factorisations and the wall time of each phase (solution_t%seconds; '// &
+            'output: station table and design summary, not part of time_s)'
     end subroutine write_machine
 
     pure function method_name(method) result(name)

@@ -20,6 +20,7 @@
 module contact_solver
     use errors, only: error_t
     use model, only: model_t, METHOD_TWOLOOP
+    use iso_fortran_env, only: int64
     use kinds, only: dp
     use discretization, only: discretization_t, discretise_mesh, load_positions, &
                               locate_element
@@ -57,19 +58,26 @@ contains
         integer, intent(in), optional :: progress_unit   !! a unit for one line per Newton step
         type(system_t) :: sys
         real(dp), allocatable :: sigma_start(:, :)
+        real(dp) :: t0
 
         allocate (sol%history(0))
         if (present(progress_unit)) sol%progress_unit = progress_unit
         call check_load_admissible(m, err)
         if (allocated(err)) return
         sol%pts = contact_points(m, d)
+        t0 = wall_seconds()
         call nested_prediction(m, d, sol, sigma_start)
+        sol%seconds(3) = wall_seconds() - t0
+        t0 = wall_seconds()
         call build_system(m, d, sol%pts, sys, err)
+        sol%seconds(1) = sys%t_seconds
+        sol%seconds(2) = wall_seconds() - t0 - sys%t_seconds
         if (allocated(err)) return
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
+        t0 = wall_seconds()
         if (is_active(plan_reduction(m, d))) then
-            call solve_reduced(m, d, sys, sol, err, sigma_start)
+            call solve_reduced(m, d, sys, sol, err, sigma_start, t0)
             return
         end if
         call use_rigid_coordinates(sys)
@@ -79,21 +87,25 @@ contains
             call solve_newton(m, d, sys, sol, err, sigma_start)
             if (.not. allocated(err)) call classify_complete(m, sol)
         end if
+        sol%seconds(4) = wall_seconds() - t0
+        t0 = wall_seconds()
         if (.not. allocated(err)) call final_checks(m, d, sys, sol, err)
         sol%z = to_absolute(sys%rigid, sol%z)
+        sol%seconds(5) = wall_seconds() - t0
     end subroutine solve_contact
 
     !> Newton on the reduced problem of model_reduction, checked against the reduced complete
     !! problem (the model solved: for f = 0 Coulomb's sigma_x = 0, which the full model's
     !! regularised law would judge at its stick kink), then expanded to the full numbering
     !! (the contact points, and so the tractions and sets there, are the full model's).
-    subroutine solve_reduced(m, d, sys, sol, err, sigma_start)
+    subroutine solve_reduced(m, d, sys, sol, err, sigma_start, t0)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable, intent(in) :: sigma_start(:, :)   !! nested_prediction's
+        real(dp), intent(in) :: t0           !! wall_seconds() when the iterations began
         type(reduction_t) :: red
         type(discretization_t) :: dr
         type(system_t) :: sr
@@ -107,11 +119,13 @@ contains
         deallocate (sol%z)
         allocate (sol%z(dr%n))
         call solve_newton(m, dr, sr, sol, err, sigma_start)
+        sol%seconds(4) = wall_seconds() - t0
         if (.not. allocated(err)) then
             call classify_complete(m, sol)
             call final_checks(m, dr, sr, sol, err)
         end if
         sol%z = expand(red, to_absolute(sr%rigid, sol%z))
+        sol%seconds(5) = wall_seconds() - t0 - sol%seconds(4)
         sol%pts = pts
     end subroutine solve_reduced
 
@@ -155,6 +169,13 @@ contains
         sol%slip = is_slipping(sol%sigma(1, :), sol%tau0)
         sol%tension = in_tension(sol%sigma(2, :))
     end subroutine classify_complete
+
+    !> Wall-clock seconds (for the phase times of solution_t).
+    real(dp) function wall_seconds()
+        integer(int64) :: count, rate
+        call system_clock(count, rate)
+        wall_seconds = real(count, dp)/real(rate, dp)
+    end function wall_seconds
 
 end module contact_solver
 

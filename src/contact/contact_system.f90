@@ -11,6 +11,7 @@
 !! regularisation other than the deck's (law_t) serves the continuation of the Newton method.
 !! Constrained unknowns (d%fixed) have the equation z_i = 0.
 module contact_system
+    use iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use errors, only: error_t, add_context
     use quadrature, only: gauss_legendre
@@ -66,6 +67,9 @@ module contact_system
         integer :: n_solves = 0              !! linear solves of the case
         integer :: n_nested_solves = 0       !! linear solves on the nested coarser meshes
                                              !! that gave the Newton start (contact_solver)
+        real(dp) :: seconds(5) = 0.0_dp      !! wall time [s] of: T assembly; the rest of the
+                                             !! system (K, M, B0, loads); the nested start;
+                                             !! the iterations; the final checks
         integer :: progress_unit = -1        !! >= 0: each Newton step also reported there
                                              !! (the caller's progress for a big case)
         integer :: n_factorisations = 0      !! matrix factorisations among them (Newton: the
@@ -104,6 +108,7 @@ module contact_system
                                                 !! coordinates (rigid_body), else absolute
         integer :: nv = 0                    !! displacement unknowns
         integer :: nr = 0                    !! traction unknowns
+        real(dp) :: t_seconds = 0.0_dp       !! wall time of the assembly of T [s]
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
@@ -132,7 +137,11 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: t_mat(:, :), b0(:)
         integer :: i
+        integer(int64) :: t0, t1, rate
+        call system_clock(t0, rate)
         call assemble_flexibility(m, d, t_mat, err)
+        call system_clock(t1)
+        sys%t_seconds = real(t1 - t0, dp)/real(rate, dp)
         if (allocated(err)) then
             call add_context(err, 'assembling the half-space flexibility T')
             return

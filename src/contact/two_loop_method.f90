@@ -271,6 +271,7 @@ contains
         if (allocated(err)) return
         z = s*y
         sol%n_solves = sol%n_solves + 1
+        sol%n_factorisations = sol%n_factorisations + 1   ! every dense solve factorises
     end subroutine solve_with_sets
 
     !> Matrix and right-hand side of (4.2) for the sets held in sol, constraints applied.
