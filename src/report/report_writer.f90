@@ -415,15 +415,13 @@ contains
     !! (from the station column table), axis labels and legend names with units, the clip
     !! rule, the friction coefficient and the load positions.
     subroutine write_figure_settings(u, m, mean_pressure)
-        use model, only: LOAD_PATCH, LOAD_MOMENT, LOAD_RING
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         real(dp), intent(in) :: mean_pressure      !! V / contact area [F/L^2]; 0: V / base
         type(column_t), allocatable :: cols(:)
         type(units_t) :: un
-        character(len=1) :: kind_letter
         logical :: beam, phys
-        integer :: k, ix
+        integer :: ix
         real(dp) :: p_mean, xs
         beam = m%kind == MODEL_BEAM
         phys = .not. m%nondim
@@ -521,38 +519,7 @@ contains
         call put_num('clip_inner', 1.25_dp)
         call put_num('edge_d', m%h*xs)
         call put_num('friction', m%f)
-        write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
-        k = 0
-        if (allocated(m%loads)) k = size(m%loads)
-        write (u, '(a)') 'n_loads = '//itoa(k)
-        if (k > 0) then
-            write (u, '(a)', advance='no') 'array load_kind['//itoa(k)//'] = ['
-            do k = 1, size(m%loads)
-                select case (m%loads(k)%kind)
-                case (LOAD_PATCH)
-                    kind_letter = 'D'
-                case (LOAD_MOMENT)
-                    kind_letter = 'M'
-                case (LOAD_RING)
-                    kind_letter = 'R'
-                case default
-                    kind_letter = 'P'
-                end select
-                write (u, '(a)', advance='no') "'"//kind_letter//"'"//after(k)
-            end do
-            write (u, '(a)') ''
-            write (u, '(a)', advance='no') 'array load_x1['//itoa(size(m%loads))//'] = ['
-            do k = 1, size(m%loads)
-                write (u, '(a)', advance='no') num(m%loads(k)%x1*xs)//after(k)
-            end do
-            write (u, '(a)') ''
-            write (u, '(a)', advance='no') 'array load_x2['//itoa(size(m%loads))//'] = ['
-            do k = 1, size(m%loads)
-                write (u, '(a)', advance='no') num(merge(m%loads(k)%x2, m%loads(k)%x1, &
-                    m%loads(k)%kind == LOAD_PATCH)*xs)//after(k)
-            end do
-            write (u, '(a)') ''
-        end if
+        call write_figure_loads(u, m, xs)
 
     contains
 
@@ -610,15 +577,58 @@ contains
             write (u, '(a)') name//' = '//num(x)
         end subroutine put_num
 
+    end subroutine write_figure_settings
+
+    !> The loads of the figure settings as gnuplot arrays: kind letter (P point, M moment,
+    !! R ring, D patch) and the interval [x1, x2] (a point for all but the patch), in the
+    !! plotted unit of x (xs per deck length).
+    subroutine write_figure_loads(u, m, xs)
+        use model, only: LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+        integer, intent(in) :: u
+        type(model_t), intent(in) :: m
+        real(dp), intent(in) :: xs
+        character(len=1) :: kind_letter
+        integer :: k, n
+        write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
+        n = 0
+        if (allocated(m%loads)) n = size(m%loads)
+        write (u, '(a)') 'n_loads = '//itoa(n)
+        if (n == 0) return
+        write (u, '(a)', advance='no') 'array load_kind['//itoa(n)//'] = ['
+        do k = 1, n
+            select case (m%loads(k)%kind)
+            case (LOAD_PATCH)
+                kind_letter = 'D'
+            case (LOAD_MOMENT)
+                kind_letter = 'M'
+            case (LOAD_RING)
+                kind_letter = 'R'
+            case default
+                kind_letter = 'P'
+            end select
+            write (u, '(a)', advance='no') "'"//kind_letter//"'"//after(k)
+        end do
+        write (u, '(a)') ''
+        write (u, '(a)', advance='no') 'array load_x1['//itoa(n)//'] = ['
+        do k = 1, n
+            write (u, '(a)', advance='no') num(m%loads(k)%x1*xs)//after(k)
+        end do
+        write (u, '(a)') ''
+        write (u, '(a)', advance='no') 'array load_x2['//itoa(n)//'] = ['
+        do k = 1, n
+            write (u, '(a)', advance='no') num(merge(m%loads(k)%x2, m%loads(k)%x1, &
+                m%loads(k)%kind == LOAD_PATCH)*xs)//after(k)
+        end do
+        write (u, '(a)') ''
+    contains
         !> ', ' between the items of a gnuplot array, ']' after the last.
         function after(k) result(text)
             integer, intent(in) :: k
             character(len=:), allocatable :: text
             text = ']'
-            if (k < size(m%loads)) text = ', '
+            if (k < n) text = ', '
         end function after
-
-    end subroutine write_figure_settings
+    end subroutine write_figure_loads
 
     !> Text safe inside single quotes of a shell or gnuplot command: quotes, backquote, $ and
     !! backslash become blanks.
