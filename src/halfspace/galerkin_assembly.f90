@@ -54,8 +54,10 @@ module galerkin_assembly
                                          !! basis products (degree <= 6 with the ring measure)
     integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
     integer, parameter :: max_batch = 256  !! field nodes of one far batch (>= n_max)
-    integer, parameter :: min_parallel = 40  !! fewer elements: one thread (0.4 ms at 20 on one
-                                             !! thread, 0.6 ms on two: start-up, barriers)
+    integer, parameter :: min_parallel = 100 !! fewer elements: one thread (below about 3 ms
+                                             !! a thread start-up, or a colour's barrier
+                                             !! waiting for a preempted thread on a busy
+                                             !! machine, costs more than the second core saves)
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
     !! first the bx functions then the bz functions (the global numbers: work%glob).
@@ -197,7 +199,7 @@ contains
         type(basis_t), intent(in) :: bx
         type(work_t), intent(inout) :: work
         allocate (work%far(3, bx%ne), work%by_n2(2, bx%ne), work%gx(max_batch), &
-                  work%g(max_batch, n_max, 2, 2), work%y(max_batch, 2, n_loc))
+                  work%g(max_batch, 4, 2, 2), work%y(max_batch, 2, n_loc))
     end subroutine new_batch_arrays
 
     !> The least stride s such that elements e and e + s have no function in common, for
@@ -591,6 +593,12 @@ contains
             work%gx(k0 + 1:k0 + n1) = work%by_order(n1)%x(:, work%by_n2(1, q))
             k0 = k0 + n1
         end do field_nodes
+        if (size(work%g, 2) < n2) then
+            ! as large as needed only: below the allocator's mmap threshold it is reused
+            ! without fresh pages (page faults) at every assembly
+            deallocate (work%g)
+            allocate (work%g(max_batch, n2, 2, 2))
+        end if
         call kernel%grid_values(work%gx(1:k0), work%by_order(n2)%x(:, e2), &
                                 work%g(1:k0, 1:n2, :, :), err)
         if (allocated(err)) return
