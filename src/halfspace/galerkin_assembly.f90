@@ -58,6 +58,8 @@ module galerkin_assembly
                                              !! a thread start-up, or a colour's barrier
                                              !! waiting for a preempted thread on a busy
                                              !! machine, costs more than the second core saves)
+    integer, parameter :: max_threads = 8    !! each thread keeps its own GL tables (about 12 MB
+                                             !! at N_e = 1000) and column storage (0.6 MB)
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
     !! first the bx functions then the bz functions (the global numbers: work%glob).
@@ -129,7 +131,7 @@ contains
         in_order = any(shift_ok)
         n_threads = 1
         !$ if (.not. in_order .and. .not. omp_in_parallel() .and. bx%ne >= min_parallel) &
-        !$     n_threads = omp_get_max_threads()
+        !$     n_threads = min(omp_get_max_threads(), max_threads)
         allocate (works(n_threads))
         works(:) = work
         each_thread: do thread = 1, n_threads
