@@ -7,8 +7,11 @@
 !! shared by all local basis products of the pair:
 !!  * well separated pairs (gap >= near_ratio times the longer element): tensor Gauss–Legendre,
 !!    n points per direction from the Bernstein-ellipse parameter of gap/size and the degree of
-!!    the polynomial factor (`far_points`, 1e-16 per direction), contracted as
-!!    L = B_f diag(w_f W) K diag(w_s) B_s^T;
+!!    the polynomial factor (`far_points`, 1e-15 per direction), contracted as
+!!    L = B_f diag(w_f W) K diag(w_s) B_s^T. The far pairs of one source element that share its
+!!    order are done together (`far_batch`): the kernel on the grid of all their field nodes x
+!!    the source nodes in one call (`grid_values`, vectorised for the rings), then
+!!    K diag(w_s) B_s^T for all field nodes at once, then B_f per pair;
 !!  * touching and nearly touching pairs, kernels that depend on one variable v only (strip:
 !!    v = x - xi; rings, homogeneous of degree 0: v = x/xi, ln|x - xi| = ln xi + ln|v - 1|):
 !!    the logarithm is integrated analytically by the product-log rule of `singular_quadrature`
@@ -20,7 +23,11 @@
 !!    positions would cost eps |x|/h, 1e-13 at N_e = 1000);
 !!  * other kernels: the two-dimensional pair rules of `singular_quadrature`.
 !! A translation-invariant kernel on a (piecewise) uniform mesh repeats the pair integrals of
-!! the translated pair (`translates`): O(N_e) pairs are integrated, the rest copied.
+!! the translated pair (`translates`): O(N_e) pairs are integrated, the rest copied, column
+!! after column. Otherwise the columns (source elements) are integrated in parallel (OpenMP, one work per
+!! thread), in colours of columns that share no function (`column_stride`), each column added
+!! to T by the thread that integrated it: T does not depend on the number of threads, bit for
+!! bit.
 !! Only pairs e2 >= e1 are integrated; the pair (e2, e1) is the transpose by reciprocity
 !! (W(x) K_ij(x, xi) = W(xi) K_ji(xi, x): r G_ij(r, s) = s G_ji(s, r) for the rings, k_ij(X) =
 !! k_ji(-X) for the strip); a self pair is one triangle plus its transpose, so T is exactly
@@ -28,6 +35,7 @@
 !! the reference of the tests.
 module galerkin_assembly
     use iso_fortran_env, only: int64
+    !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num, omp_in_parallel
     use kinds, only: dp
     use sorting, only: sort_ascending
     use errors, only: error_t, add_context
@@ -41,28 +49,36 @@ module galerkin_assembly
     public :: assemble_split_kernel
 
     integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
-    real(dp), parameter :: far_digits = 16.5_dp  !! see far_points
+    real(dp), parameter :: far_digits = 15.0_dp  !! see far_points
     integer, parameter :: n_across = 4   !! GL points across the reduced variable: exact for the
                                          !! basis products (degree <= 6 with the ring measure)
+    integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
+    integer, parameter :: max_batch = 256  !! field nodes of one far batch (>= n_max)
+    integer, parameter :: min_parallel = 100 !! fewer elements: one thread (below about 3 ms
+                                             !! a thread start-up, or a colour's barrier
+                                             !! waiting for a preempted thread on a busy
+                                             !! machine, costs more than the second core saves)
+    integer, parameter :: max_threads = 8    !! each thread keeps its own GL tables (about 12 MB
+                                             !! at N_e = 1000) and column storage (0.6 MB)
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
-    !! first the bx functions then the bz functions.
+    !! first the bx functions then the bz functions (the global numbers: work%glob).
     type :: pair_map_t
         integer :: nf = 0                         !! local rows
         integer :: ns = 0                         !! local columns
         integer :: comp_f(n_loc) = 0              !! 1 = bx (tangential), 2 = bz (normal)
         integer :: comp_s(n_loc) = 0
-        integer :: row(n_loc) = 0                 !! global row of each local row
-        integer :: col(n_loc) = 0                 !! global column of each local column
     end type pair_map_t
 
-    !> Values of the local functions of every element at the nodes of one GL rule.
+    !> Nodes of one GL rule on every element and the weighted local functions there.
     type :: order_table_t
-        logical :: ready = .false.
-        real(dp), allocatable :: b(:, :, :)        !! b(r, i, e): function r of e at node i
+        logical, allocatable :: done(:)            !! done(e): element e tabulated
+        real(dp), allocatable :: x(:, :)           !! x(i, e): node i on element e
+        real(dp), allocatable :: bf(:, :, :)       !! bf(i, r, e) = g_r(x_i) h w_i W(x_i), field
+        real(dp), allocatable :: bs(:, :, :)       !! bs(i, r, e) = g_r(x_i) h w_i, source
     end type order_table_t
 
-    !> Work arrays reused over the element pairs.
+    !> Work arrays reused over the element pairs; one per thread.
     type :: work_t
         type(gauss_tables_t) :: tab
         type(point_rule_t) :: rule
@@ -76,8 +92,16 @@ module galerkin_assembly
         integer, allocatable :: n_fun(:)           !! functions nonzero on element e
         integer, allocatable :: comp(:, :)         !! their field (1 = bx, 2 = bz)
         integer, allocatable :: glob(:, :)         !! their global number in T
-        type(order_table_t) :: by_order(n_max)     !! basis values at the GL nodes, by order
+        type(order_table_t) :: by_order(n_max)     !! nodes and weighted functions, by order
         real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
+        real(dp) :: far_limit(2:n_max, 0:max_degree) = 0.0_dp  !! see far_points
+        real(dp), allocatable :: raise_ratio(:)    !! see field_degree
+        integer, allocatable :: far(:, :)          !! (e1, n1, n2) of the far pairs of a column
+        integer, allocatable :: by_n2(:, :)        !! the same (e1, n1), sorted by n2
+        real(dp), allocatable :: gx(:)             !! field nodes of a far batch
+        real(dp), allocatable :: g(:, :, :, :)     !! kernel on the batch grid, g(k, l, i, j)
+        real(dp), allocatable :: y(:, :, :)        !! y(k, i, c) = sum_l g(k, l, i, .) bs(c, l)
+        type(error_t), allocatable :: err          !! failure of this thread's last column
     end type work_t
 
 contains
@@ -91,43 +115,178 @@ contains
         type(error_t), allocatable, intent(out) :: err
         integer(int64), intent(out), optional :: n_kernel
         type(work_t) :: work
-        type(pair_map_t) :: map
-        real(dp), allocatable :: column_loc(:, :, :, :)
+        type(work_t), allocatable :: works(:)
+        real(dp), allocatable :: column_loc(:, :, :, :, :)
         logical, allocatable :: shift_ok(:)
-        integer :: e1, e2, now
-        character(len=60) :: where
+        logical :: in_order
+        integer :: e2, n_threads, thread, n_colours, colour, first, last, step
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
+        call new_work(kernel, bx, bz, work)
+        call translates(kernel, bx, work%poly, shift_ok)
+        ! translated pairs are copied from the previous column: one thread does the columns in
+        ! order then (O(N_e) pair integrals); no nested teams (the cases of a sweep already run
+        ! in parallel)
+        in_order = any(shift_ok)
+        n_threads = 1
+        !$ if (.not. in_order .and. .not. omp_in_parallel() .and. bx%ne >= min_parallel) &
+        !$     n_threads = min(omp_get_max_threads(), max_threads)
+        allocate (works(n_threads))
+        works(:) = work
+        each_thread: do thread = 1, n_threads
+            call new_batch_arrays(bx, works(thread))
+        end do each_thread
+        n_colours = 1
+        if (.not. in_order) n_colours = column_stride(work)
+        allocate (column_loc(n_loc, n_loc, bx%ne, 0:1, n_threads))
+        ! columns outer: the pair (e1, e2) adds to the columns of e2's functions only, and the
+        ! columns e2 of one colour (e2 mod n_colours) share no function, so they are added to T
+        ! in parallel without races; every entry receives its terms in the same order (colour
+        ! by colour, rows in order) on any number of threads. Costly (long) columns first,
+        ! except for the translated pairs (one colour, one thread, in order).
+        colours: do colour = 1, n_colours
+            first = 1
+            last = bx%ne
+            step = 1
+            if (.not. in_order) then
+                first = bx%ne - modulo(bx%ne - colour, n_colours)
+                last = 1
+                step = -n_colours
+            end if
+            !$omp parallel do num_threads(n_threads) schedule(dynamic, 1) default(shared) &
+            !$omp private(thread)
+            source_elements: do e2 = first, last, step
+                thread = 1
+                !$ thread = omp_get_thread_num() + 1
+                call integrate_column(kernel, bx, bz, e2, shift_ok, works(thread), &
+                                      column_loc(:, :, :, :, thread))
+                call add_column(e2, works(thread), column_loc(:, :, :, mod(e2, 2), thread), t_mat)
+            end do source_elements
+            !$omp end parallel do
+        end do colours
+        threads: do thread = 1, n_threads
+            if (.not. allocated(works(thread)%err)) cycle threads
+            call move_alloc(works(thread)%err, err)
+            return
+        end do threads
+        call add_transpose(t_mat)
+        if (present(n_kernel)) n_kernel = sum(works%n_kernel)
+    end subroutine assemble_split_kernel
+
+    !> Work of one thread: GL tables (filled when needed), the numbering and polynomials of
+    !! every element and the far-rule limits.
+    pure subroutine new_work(kernel, bx, bz, work)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        type(work_t), intent(inout) :: work
+        real(dp) :: q
+        integer :: e
         call new_gauss_tables(work%tab, lazy=.true.)
         call need_order(work%tab, n_across)
         call reserve(work, 1024)
         call number_elements(bx, bz, work)
-        call translates(kernel, bx, work%poly, shift_ok)
-        allocate (column_loc(n_loc, n_loc, bx%ne, 0:1))
-        ! columns outer: the pair (e1, e2) adds to columns of e2 only, rows in order
-        source_elements: do e2 = 1, bx%ne
-            now = mod(e2, 2)
-            field_elements: do e1 = 1, e2
-                call new_pair_map(work, e1, e2, map)
-                if (repeats_pair(bx, shift_ok, e1, e2)) then
-                    ! translate of the pair (e1 - 1, e2 - 1), integrated in the last column
-                    column_loc(:, :, e1, now) = column_loc(:, :, e1 - 1, 1 - now)
-                else
-                    call pair_integrals(kernel, bx, bz, e1, e2, map, work, &
-                                        column_loc(:, :, e1, now), err)
-                    if (allocated(err)) then
-                        write (where, '("half-space operator, elements ",i0," and ",i0)') e1, e2
-                        call add_context(err, trim(where))
-                        return
-                    end if
-                end if
-                call scatter(map, e1 == e2, column_loc(:, :, e1, now), t_mat)
-            end do field_elements
-        end do source_elements
-        call add_transpose(t_mat)
-        if (present(n_kernel)) n_kernel = work%n_kernel
-    end subroutine assemble_split_kernel
+        call far_limits(work%far_limit)
+        allocate (work%raise_ratio(bx%ne), source=huge(1.0_dp))
+        if (kernel%homogeneous) then
+            elements: do e = 1, bx%ne
+                q = (bx%x(e) + bx%x(e - 1))/(bx%x(e) - bx%x(e - 1))
+                work%raise_ratio(e) = 0.5_dp*(0.5_dp*(q + 1.0_dp/q) - 1.0_dp)
+            end do elements
+        end if
+    end subroutine new_work
+
+    !> The far-batch arrays of one thread's work (not in the work copied to every thread).
+    pure subroutine new_batch_arrays(bx, work)
+        type(basis_t), intent(in) :: bx
+        type(work_t), intent(inout) :: work
+        allocate (work%far(3, bx%ne), work%by_n2(2, bx%ne), work%gx(max_batch), &
+                  work%g(max_batch, 4, 2, 2), work%y(max_batch, 2, n_loc))
+    end subroutine new_batch_arrays
+
+    !> The least stride s such that elements e and e + s have no function in common, for
+    !! every e (the supports are consecutive elements: P1, P2 2, S2 3).
+    pure integer function column_stride(work) result(stride)
+        type(work_t), intent(in) :: work
+        integer :: e, f, i
+        stride = 1
+        elements: do e = 1, size(work%n_fun)
+            later: do f = e + stride, size(work%n_fun)
+                shares: do i = 1, work%n_fun(f)
+                    if (any(work%glob(1:work%n_fun(e), e) == work%glob(i, f))) exit shares
+                end do shares
+                if (i > work%n_fun(f)) exit later
+                stride = f - e + 1
+            end do later
+        end do elements
+    end function column_stride
+
+    !> The pairs (e1, e2), e1 = 1..e2, of source element e2 into loc(:, :, e1, mod(e2, 2)):
+    !! translated pairs copied from the previous column (loc(:, :, :, mod(e2 - 1, 2)), filled
+    !! by the same work: one thread), near pairs one by one, far pairs in batches
+    !! (far_pairs). A failure is left in work%err (the threads share no error variable), and
+    !! the thread does nothing more.
+    subroutine integrate_column(kernel, bx, bz, e2, shift_ok, work, loc)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: e2
+        logical, intent(in) :: shift_ok(:)         !! see translates
+        type(work_t), intent(inout) :: work
+        real(dp), contiguous, intent(inout) :: loc(:, :, :, 0:)  !! loc(r, c, e1, parity of e2)
+        type(error_t), allocatable :: err
+        type(pair_map_t) :: map
+        real(dp) :: gap, h1, h2
+        integer :: e1, now, n_far
+        character(len=60) :: where
+        if (allocated(work%err)) return
+        now = mod(e2, 2)
+        n_far = 0
+        h2 = bx%x(e2) - bx%x(e2 - 1)
+        field_elements: do e1 = 1, e2
+            if (repeats_pair(bx, shift_ok, e1, e2)) then
+                loc(:, :, e1, now) = loc(:, :, e1 - 1, 1 - now)
+                cycle field_elements
+            end if
+            h1 = bx%x(e1) - bx%x(e1 - 1)
+            gap = max(bx%x(e2 - 1) - bx%x(e1), bx%x(e1 - 1) - bx%x(e2))
+            if (gap >= near_ratio*max(h1, h2)) then
+                n_far = n_far + 1
+                work%far(:, n_far) = [e1, &
+                    far_points(work%far_limit(:, field_degree(work, bx, bz, e1, gap/h1)), &
+                               gap/h1), &
+                    far_points(work%far_limit(:, max(bx%degree, bz%degree)), gap/h2)]
+                cycle field_elements
+            end if
+            call new_pair_map(work, e1, e2, map)
+            call near_pair(kernel, bx, bz, e1, e2, map, work, loc(:, :, e1, now), err)
+            if (allocated(err)) then
+                write (where, '("half-space operator, elements ",i0," and ",i0)') e1, e2
+                call add_context(err, trim(where))
+                call move_alloc(err, work%err)
+                return
+            end if
+        end do field_elements
+        call far_pairs(kernel, bx, e2, n_far, work, loc(:, :, :, now), err)
+        if (allocated(err)) then
+            write (where, '("half-space operator, far pairs of element ",i0)') e2
+            call add_context(err, trim(where))
+            call move_alloc(err, work%err)
+        end if
+    end subroutine integrate_column
+
+    !> Add the pairs of column e2 (loc(:, :, e1), e1 <= e2) to T, unless this thread failed.
+    pure subroutine add_column(e2, work, loc, t_mat)
+        integer, intent(in) :: e2
+        type(work_t), intent(in) :: work
+        real(dp), contiguous, intent(in) :: loc(:, :, :)
+        real(dp), intent(inout) :: t_mat(:, :)
+        integer :: e1
+        if (allocated(work%err)) return
+        field_elements: do e1 = 1, e2
+            call scatter(work%glob(1:work%n_fun(e1), e1), work%glob(1:work%n_fun(e2), e2), &
+                         e1 == e2, loc(:, :, e1), t_mat)
+        end do field_elements
+    end subroutine add_column
 
     !> shift_ok(e): for a translation-invariant kernel, element e is element e - 1 moved by its
     !! length: the same length and the same local functions (polynomial coefficients), both up
@@ -167,17 +326,15 @@ contains
                       8.0_dp*epsilon(1.0_dp)*max(abs(bx%x(0)), abs(bx%x(bx%ne)))
     end function same_length
 
-    !> Local and global numbering of the functions of elements e1 (rows) and e2 (columns).
+    !> Local numbering of the functions of elements e1 (rows) and e2 (columns).
     pure subroutine new_pair_map(work, e1, e2, map)
         type(work_t), intent(in) :: work
         integer, intent(in) :: e1, e2
         type(pair_map_t), intent(out) :: map
         map%nf = work%n_fun(e1)
         map%comp_f = work%comp(:, e1)
-        map%row = work%glob(:, e1)
         map%ns = work%n_fun(e2)
         map%comp_s = work%comp(:, e2)
-        map%col = work%glob(:, e2)
     end subroutine new_pair_map
 
     !> Numbering of the functions of every element (element_numbers), once.
@@ -232,23 +389,36 @@ contains
         der(bx%n_local + 1:bx%n_local + bz%n_local) = d(1:bz%n_local)
     end subroutine end_values
 
-    !> Tabulate the local functions of every element at the nodes of the n-point GL rule.
-    pure subroutine tabulate_order(bx, bz, n, work)
-        type(basis_t), intent(in) :: bx, bz
-        integer, intent(in) :: n
+    !> Nodes of the n-point GL rule on element e and the local functions there, weighted for
+    !! the field side (h w W(x)) and for the source side (h w); once per order and element (a
+    !! translation-invariant kernel needs few elements at each order).
+    pure subroutine need_tables(kernel, bx, n, e, work)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        integer, intent(in) :: n, e
         type(work_t), intent(inout) :: work
-        real(dp) :: xi(n)
-        integer :: e, i
-        xi = 2.0_dp*work%tab%v(1:n, n) - 1.0_dp
-        allocate (work%by_order(n)%b(n_loc, n, bx%ne))
-        elements: do e = 1, bx%ne
+        real(dp) :: xi, b(n_loc), h
+        integer :: i
+        if (.not. allocated(work%by_order(n)%done)) then
+            call need_order(work%tab, n)
+            associate (tbl => work%by_order(n))
+                allocate (tbl%done(bx%ne), source=.false.)
+                allocate (tbl%x(n, bx%ne), tbl%bf(n, n_loc, bx%ne), tbl%bs(n, n_loc, bx%ne))
+            end associate
+        end if
+        if (work%by_order(n)%done(e)) return
+        h = bx%x(e) - bx%x(e - 1)
+        associate (tbl => work%by_order(n))
             nodes: do i = 1, n
-                work%by_order(n)%b(:, i, e) = work%poly(1, :, e) + xi(i)*(work%poly(2, :, e) + &
-                                                                          xi(i)*work%poly(3, :, e))
+                xi = 2.0_dp*work%tab%v(i, n) - 1.0_dp
+                tbl%x(i, e) = bx%x(e - 1) + h*work%tab%v(i, n)
+                b = work%poly(1, :, e) + xi*(work%poly(2, :, e) + xi*work%poly(3, :, e))
+                tbl%bs(i, :, e) = b*(h*work%tab%w(i, n))
+                tbl%bf(i, :, e) = b*(h*work%tab%w(i, n)*kernel%field_weight(tbl%x(i, e)))
             end do nodes
-        end do elements
-        work%by_order(n)%ready = .true.
-    end subroutine tabulate_order
+            tbl%done(e) = .true.
+        end associate
+    end subroutine need_tables
 
     !> Functions nonzero on element e: count, field (1 = bx, 2 = bz) and global number.
     pure subroutine element_numbers(bx, bz, e, n, comp, glob)
@@ -276,32 +446,52 @@ contains
     !! poly_p(x) k(x), k singular at distance `ratio` element lengths from the element, is about
     !! rho^(p - 2n), rho = c + sqrt(c^2 - 1), c = 1 + 2 ratio (Bernstein ellipse through the
     !! singularity; the polynomial of degree p grows like rho^p on it). n = (far_digits/log10 rho
-    !! + p)/2 rounded up keeps it below 1e-16 of int |poly_p k| for k = 1/d, ln d and for the
-    !! worst (Legendre) polynomial of degree p <= 3, as measured with 40-digit arithmetic at
-    !! ratios 2 to 3000.
-    pure integer function far_points(ratio, p) result(n)
-        real(dp), intent(in) :: ratio      !! gap / element length, >= near_ratio
-        integer, intent(in) :: p           !! polynomial degree of the non-kernel factor
-        real(dp) :: c, rho
-        c = 1.0_dp + 2.0_dp*ratio
-        rho = c + sqrt(c*c - 1.0_dp)
-        n = min(n_max, max(2, ceiling(0.5_dp*(far_digits/log10(rho) + real(p, dp)))))
+    !! + p)/2 rounded up keeps it below 10^-far_digits of int |poly_p k| for k = 1/d, ln d and
+    !! for the worst (Legendre) polynomial of degree p <= 3, as measured with 40-digit
+    !! arithmetic at ratios 2 to 3000. far_digits = 15 (16.5 before): against rules of 20
+    !! digits, T moves by at most 1e-15 of its largest entry and each entry by at most 1.3e-15
+    !! of itself on uniform meshes (as with 16.5; 14 gives 6e-15, 13 gives 5e-14), for 12 %
+    !! fewer kernel evaluations (doc/METHOD.md). The least n >= 2 (at most n_max) whose limit
+    !! (far_limits) the ratio reaches.
+    pure integer function far_points(limit, ratio) result(n)
+        real(dp), intent(in) :: limit(2:n_max)  !! work%far_limit(:, p), p the polynomial degree
+        real(dp), intent(in) :: ratio           !! gap / element length, >= near_ratio
+        n = 2
+        fewest: do while (n < n_max)
+            if (ratio >= limit(n)) exit fewest
+            n = n + 1
+        end do fewest
     end function far_points
+
+    !> limit(n, p): the least gap/size ratio at which n points suffice for degree p in
+    !! far_points: n >= (far_digits/log10 rho + p)/2 is rho >= rho_n = 10^(far_digits/(2n - p)),
+    !! i.e. ratio >= (c_n - 1)/2, c_n = (rho_n + 1/rho_n)/2. Tabulated once, so that a pair
+    !! costs comparisons instead of a logarithm.
+    pure subroutine far_limits(limit)
+        real(dp), intent(out) :: limit(2:n_max, 0:max_degree)
+        real(dp) :: rho
+        integer :: n, p
+        degrees: do p = 0, max_degree
+            orders: do n = 2, n_max
+                rho = 10.0_dp**(far_digits/real(2*n - p, dp))
+                limit(n, p) = 0.5_dp*(0.5_dp*(rho + 1.0_dp/rho) - 1.0_dp)
+            end do orders
+        end do degrees
+    end subroutine far_limits
 
     !> Degree of the polynomial factor on the field side: the basis, times x for the ring
     !! measure 2 pi x (homogeneous kernels are the ring kernels) where that factor grows on the
     !! Bernstein ellipse: 2 pi x = W0 (1 + eps xi), eps = h/(a + b), is at most 2 W0 on the
     !! ellipse rho when eps rho <= 1 (elements away from the axis), a factor 2 in the error.
-    pure integer function field_degree(kernel, bx, bz, e, ratio) result(p)
-        class(split_kernel_t), intent(in) :: kernel
+    !! With q = (a + b)/h >= 1, rho > q is ratio > ((q + 1/q)/2 - 1)/2 = work%raise_ratio(e)
+    !! (new_work; huge for the other kernels).
+    pure integer function field_degree(work, bx, bz, e, ratio) result(p)
+        type(work_t), intent(in) :: work
         type(basis_t), intent(in) :: bx, bz
         integer, intent(in) :: e                !! field element
         real(dp), intent(in) :: ratio           !! gap / its length
-        real(dp) :: c
         p = max(bx%degree, bz%degree)
-        if (.not. kernel%homogeneous) return
-        c = 1.0_dp + 2.0_dp*ratio
-        if ((bx%x(e) - bx%x(e - 1))*(c + sqrt(c*c - 1.0_dp)) > bx%x(e) + bx%x(e - 1)) p = p + 1
+        if (ratio > work%raise_ratio(e)) p = p + 1
     end function field_degree
 
     !> Make the work arrays hold n point pairs.
@@ -318,8 +508,9 @@ contains
                   work%with_log(cap), work%f(2, 2, cap), work%p(2, 2, cap))
     end subroutine reserve
 
-    !> loc(r, c) = int int g_r(x) W(x) K_{comp_f(r), comp_s(c)}(x, xi) g_c(xi) over e1 x e2.
-    subroutine pair_integrals(kernel, bx, bz, e1, e2, map, work, loc, err)
+    !> loc(r, c) = int int g_r(x) W(x) K_{comp_f(r), comp_s(c)}(x, xi) g_c(xi) over e1 x e2,
+    !! a touching or nearly touching pair.
+    subroutine near_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         integer, intent(in) :: e1, e2
@@ -327,80 +518,116 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), intent(out) :: loc(n_loc, n_loc)
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: a1, b1, a2, b2, gap
-        a1 = bx%x(e1 - 1)
-        b1 = bx%x(e1)
-        a2 = bx%x(e2 - 1)
-        b2 = bx%x(e2)
-        gap = max(a2 - b1, a1 - b2)
-        if (gap >= near_ratio*max(b1 - a1, b2 - a2)) then
-            call tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, &
-                             far_points(gap/(b1 - a1), &
-                                        field_degree(kernel, bx, bz, e1, gap/(b1 - a1))), &
-                             far_points(gap/(b2 - a2), max(bx%degree, bz%degree)), &
-                             map, work, loc, err)
-        else if (reducible(kernel)) then
+        real(dp) :: a1, a2
+        if (reducible(kernel)) then
             call reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
         else
-            call build_pair_rule(work%tab, a1, b1, a2, b2, kernel%log_length(max(a1, a2)), &
+            a1 = bx%x(e1 - 1)
+            a2 = bx%x(e2 - 1)
+            call build_pair_rule(work%tab, a1, bx%x(e1), a2, bx%x(e2), &
+                                 kernel%log_length(max(a1, a2)), &
                                  kernel%homogeneous .and. e1 == e2 .and. &
                                  .not. kernel%log_length(a1) > 0.0_dp, work%rule, work%line)
             call rule_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
         end if
-    end subroutine pair_integrals
+    end subroutine near_pair
 
-    !> Tensor GL rule n1 x n2 on a well separated pair: one kernel evaluation per point pair,
-    !! contracted with all basis products, loc = B_f diag(w_f W) K diag(w_s) B_s^T.
-    subroutine tensor_pair(kernel, bx, bz, e1, e2, a1, b1, a2, b2, n1, n2, map, work, loc, err)
+    !> The far pairs of column e2, work%far(:, 1:n_far), sorted by the source order n2 (a
+    !! counting sort: pairs of one n2 share the source nodes) and done in batches of at most
+    !! max_batch field nodes (far_batch).
+    subroutine far_pairs(kernel, bx, e2, n_far, work, loc, err)
         class(split_kernel_t), intent(in) :: kernel
-        type(basis_t), intent(in) :: bx, bz
-        integer, intent(in) :: e1, e2, n1, n2
-        real(dp), intent(in) :: a1, b1, a2, b2
-        type(pair_map_t), intent(in) :: map
+        type(basis_t), intent(in) :: bx
+        integer, intent(in) :: e2, n_far
         type(work_t), intent(inout) :: work
-        real(dp), intent(out) :: loc(n_loc, n_loc)
+        real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: xf(n1), xs(n2), bf(n_loc, n1), bs(n_loc, n2), tmp(2, n2)
-        integer :: i, j, k, r, c
-        call need_order(work%tab, n1)
-        call need_order(work%tab, n2)
-        if (.not. work%by_order(n1)%ready) call tabulate_order(bx, bz, n1, work)
-        if (.not. work%by_order(n2)%ready) call tabulate_order(bx, bz, n2, work)
-        xf = a1 + (b1 - a1)*work%tab%v(1:n1, n1)
-        xs = a2 + (b2 - a2)*work%tab%v(1:n2, n2)
-        field_weights: do i = 1, n1
-            bf(:, i) = work%by_order(n1)%b(:, i, e1)* &
-                       ((b1 - a1)*work%tab%w(i, n1)*kernel%field_weight(xf(i)))
-        end do field_weights
-        source_weights: do j = 1, n2
-            bs(:, j) = work%by_order(n2)%b(:, j, e2)*((b2 - a2)*work%tab%w(j, n2))
-        end do source_weights
-        call reserve(work, n1*n2)
-        field_points: do i = 1, n1
-            work%x((i - 1)*n2 + 1:i*n2) = xf(i)
-            work%xi((i - 1)*n2 + 1:i*n2) = xs
-        end do field_points
-        work%with_log(1:n1*n2) = .false.
-        call kernel%values(work%x(1:n1*n2), work%xi(1:n1*n2), work%with_log(1:n1*n2), &
-                           work%f(:, :, 1:n1*n2), work%p(:, :, 1:n1*n2), err)
+        integer :: n_with(n_max), first(n_max + 1), next(n_max), q, n2, start, points
+        n_with = 0
+        count_orders: do q = 1, n_far
+            n_with(work%far(3, q)) = n_with(work%far(3, q)) + 1
+        end do count_orders
+        first(1) = 1
+        offsets: do n2 = 1, n_max
+            first(n2 + 1) = first(n2) + n_with(n2)
+        end do offsets
+        next = first(1:n_max)
+        sort: do q = 1, n_far
+            n2 = work%far(3, q)
+            work%by_n2(:, next(n2)) = work%far(1:2, q)
+            next(n2) = next(n2) + 1
+        end do sort
+        orders: do n2 = 2, n_max
+            start = first(n2)
+            points = 0
+            pairs: do q = first(n2), first(n2 + 1) - 1
+                if (points + work%by_n2(2, q) > max_batch) then
+                    call far_batch(kernel, bx, e2, n2, start, q - 1, work, loc, err)
+                    if (allocated(err)) return
+                    start = q
+                    points = 0
+                end if
+                points = points + work%by_n2(2, q)
+            end do pairs
+            if (points == 0) cycle orders
+            call far_batch(kernel, bx, e2, n2, start, first(n2 + 1) - 1, work, loc, err)
+            if (allocated(err)) return
+        end do orders
+    end subroutine far_pairs
+
+    !> The far pairs (e1, e2) of source order n2 listed in work%by_n2(:, first:last): the kernel
+    !! on the grid of all their field nodes x the source nodes in one call, y = K diag(w_s)
+    !! B_s^T for all field nodes at once, then loc(:, :, e1) = B_f diag(w_f W) y per pair (the
+    !! tensor GL rule of far_points, contracted in this order).
+    subroutine far_batch(kernel, bx, e2, n2, first, last, work, loc, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        integer, intent(in) :: e2, n2, first, last
+        type(work_t), intent(inout) :: work
+        real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: q, e1, n1, k0, c, l, r, j
+        call need_tables(kernel, bx, n2, e2, work)
+        k0 = 0
+        field_nodes: do q = first, last
+            n1 = work%by_n2(2, q)
+            call need_tables(kernel, bx, n1, work%by_n2(1, q), work)
+            work%gx(k0 + 1:k0 + n1) = work%by_order(n1)%x(:, work%by_n2(1, q))
+            k0 = k0 + n1
+        end do field_nodes
+        if (size(work%g, 2) < n2) then
+            ! as large as needed only: below the allocator's mmap threshold it is reused
+            ! without fresh pages (page faults) at every assembly
+            deallocate (work%g)
+            allocate (work%g(max_batch, n2, 2, 2))
+        end if
+        call kernel%grid_values(work%gx(1:k0), work%by_order(n2)%x(:, e2), &
+                                work%g(1:k0, 1:n2, :, :), err)
         if (allocated(err)) return
-        work%n_kernel = work%n_kernel + int(n1*n2, int64)
-        loc = 0.0_dp
-        rows: do r = 1, map%nf
-            source_points: do j = 1, n2
-                contract_field: do c = 1, 2
-                    tmp(c, j) = 0.0_dp
-                    do i = 1, n1
-                        k = (i - 1)*n2 + j
-                        tmp(c, j) = tmp(c, j) + bf(r, i)*work%f(map%comp_f(r), c, k)
-                    end do
-                end do contract_field
-            end do source_points
-            columns: do c = 1, map%ns
-                loc(r, c) = dot_product(tmp(map%comp_s(c), 1:n2), bs(c, 1:n2))
+        work%n_kernel = work%n_kernel + int(k0*n2, int64)
+        source_functions: do c = 1, work%n_fun(e2)
+            j = work%comp(c, e2)
+            work%y(1:k0, :, c) = 0.0_dp
+            source_nodes: do l = 1, n2
+                work%y(1:k0, 1, c) = work%y(1:k0, 1, c) + &
+                                     work%g(1:k0, l, 1, j)*work%by_order(n2)%bs(l, c, e2)
+                work%y(1:k0, 2, c) = work%y(1:k0, 2, c) + &
+                                     work%g(1:k0, l, 2, j)*work%by_order(n2)%bs(l, c, e2)
+            end do source_nodes
+        end do source_functions
+        k0 = 0
+        pairs: do q = first, last
+            e1 = work%by_n2(1, q)
+            n1 = work%by_n2(2, q)
+            columns: do c = 1, work%n_fun(e2)
+                rows: do r = 1, work%n_fun(e1)
+                    loc(r, c, e1) = dot_product(work%by_order(n1)%bf(:, r, e1), &
+                                                work%y(k0 + 1:k0 + n1, work%comp(r, e1), c))
+                end do rows
             end do columns
-        end do rows
-    end subroutine tensor_pair
+            k0 = k0 + n1
+        end do pairs
+    end subroutine far_batch
 
     !> b(r, i) = g_r(x_i) w_i (times W(x_i) on the field side) for the local functions of e;
     !! the functions are evaluated at the local coordinates loc_xi (exact for the GL nodes of
@@ -549,26 +776,26 @@ contains
         type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: d, c(2, 2)
         real(dp), intent(inout) :: loc(n_loc, n_loc)
-        real(dp) :: a1, a2, h1, h2, t, lo, hi, len, y, off1, off2, wj, l1, l2
-        real(dp) :: bf(n_loc), bs(n_loc), cb(n_loc, n_loc)
-        integer :: j, col
+        real(dp) :: a1, a2, h1, h2, t, lo, hi, len, y, off1, off2, wj, l1, l2, inv_t, to_l1, to_l2
+        real(dp) :: bf(n_loc, n_across), bs(n_loc, n_across)
+        integer :: j, r, col
         a1 = bx%x(e1 - 1)
         a2 = bx%x(e2 - 1)
         h1 = bx%x(e1) - a1
         h2 = bx%x(e2) - a2
         t = 1.0_dp + d
         if (kernel%homogeneous) then
-            lo = max(0.0_dp, ((a1 - a2) - a2*d)/t)
-            hi = min(h2, ((bx%x(e1) - a2) - a2*d)/t)
+            inv_t = 1.0_dp/t
+            lo = max(0.0_dp, ((a1 - a2) - a2*d)*inv_t)
+            hi = min(h2, ((bx%x(e1) - a2) - a2*d)*inv_t)
         else
             lo = max(0.0_dp, (a2 - a1) + d)
             hi = min(h1, (bx%x(e2) - a1) + d)
         end if
         len = hi - lo
         if (len <= 0.0_dp) return
-        couplings: do col = 1, map%ns
-            cb(1:map%nf, col) = c(map%comp_f(1:map%nf), map%comp_s(col))
-        end do couplings
+        to_l1 = 2.0_dp/h1
+        to_l2 = 2.0_dp/h2
         across: do j = 1, n_across
             y = lo + len*tab%v(j, n_across)
             if (kernel%homogeneous) then
@@ -580,16 +807,20 @@ contains
                 off2 = y - (a2 - a1) - d
                 wj = len*tab%w(j, n_across)*kernel%field_weight(a1 + off1)
             end if
-            l1 = 2.0_dp*off1/h1 - 1.0_dp
-            l2 = 2.0_dp*off2/h2 - 1.0_dp
-            bf(1:map%nf) = wj*(poly(1, 1:map%nf, e1) + l1*(poly(2, 1:map%nf, e1) + &
-                                                           l1*poly(3, 1:map%nf, e1)))
-            bs(1:map%ns) = poly(1, 1:map%ns, e2) + l2*(poly(2, 1:map%ns, e2) + &
-                                                       l2*poly(3, 1:map%ns, e2))
-            columns: do col = 1, map%ns
-                loc(1:map%nf, col) = loc(1:map%nf, col) + bf(1:map%nf)*cb(1:map%nf, col)*bs(col)
-            end do columns
+            l1 = to_l1*off1 - 1.0_dp
+            l2 = to_l2*off2 - 1.0_dp
+            bf(1:map%nf, j) = wj*(poly(1, 1:map%nf, e1) + l1*(poly(2, 1:map%nf, e1) + &
+                                                              l1*poly(3, 1:map%nf, e1)))
+            bs(1:map%ns, j) = poly(1, 1:map%ns, e2) + l2*(poly(2, 1:map%ns, e2) + &
+                                                          l2*poly(3, 1:map%ns, e2))
         end do across
+        ! loc += c(comp_f, comp_s) times the across integral of each basis product
+        columns: do col = 1, map%ns
+            rows: do r = 1, map%nf
+                loc(r, col) = loc(r, col) + c(map%comp_f(r), map%comp_s(col))* &
+                              sum(bf(r, :)*bs(col, :))
+            end do rows
+        end do columns
     end subroutine add_across
 
     !> A general point rule (work%rule) on a touching pair: one kernel evaluation per point,
@@ -631,24 +862,25 @@ contains
     !> Accumulate A with T = A + A^T (add_transpose at the end): a pair e1 < e2 adds loc at
     !! (rows, columns), its mirror (e2, e1) being the transpose by reciprocity; a self pair adds
     !! half of its symmetric part (its rule is symmetric only up to rounding).
-    pure subroutine scatter(map, self_pair, loc, t_mat)
-        type(pair_map_t), intent(in) :: map
+    pure subroutine scatter(row, col, self_pair, loc, t_mat)
+        integer, intent(in) :: row(:)              !! global rows of the field element's functions
+        integer, intent(in) :: col(:)              !! global columns of the source element's
         logical, intent(in) :: self_pair
         real(dp), intent(in) :: loc(n_loc, n_loc)
         real(dp), intent(inout) :: t_mat(:, :)
         integer :: r, c
         if (self_pair) then
-            self_columns: do c = 1, map%ns
-                self_rows: do r = 1, map%nf
-                    t_mat(map%row(r), map%col(c)) = t_mat(map%row(r), map%col(c)) + &
-                                                    0.25_dp*(loc(r, c) + loc(c, r))
+            self_columns: do c = 1, size(col)
+                self_rows: do r = 1, size(row)
+                    t_mat(row(r), col(c)) = t_mat(row(r), col(c)) + &
+                                            0.25_dp*(loc(r, c) + loc(c, r))
                 end do self_rows
             end do self_columns
             return
         end if
-        columns: do c = 1, map%ns
-            rows: do r = 1, map%nf
-                t_mat(map%row(r), map%col(c)) = t_mat(map%row(r), map%col(c)) + loc(r, c)
+        columns: do c = 1, size(col)
+            rows: do r = 1, size(row)
+                t_mat(row(r), col(c)) = t_mat(row(r), col(c)) + loc(r, c)
             end do rows
         end do columns
     end subroutine scatter

@@ -55,6 +55,7 @@ module singular_quadrature
         logical :: translation_invariant = .false.  !! depends on x - xi only (strip kernels)
     contains
         procedure(kernel_values_i), deferred :: values
+        procedure :: grid_values => split_grid_values
         procedure(field_weight_i), deferred :: field_weight
         procedure(log_length_i), deferred :: log_length
     end type split_kernel_t
@@ -182,6 +183,37 @@ contains
             n = min(n_max, max(4, ceiling(target_digits/log10(rho))))
         end if
     end function points_for_ratio
+
+    !> Kernel values F (no log split) on the grid of field points x(k) and source points s(l)
+    !! of a well separated element pair (no x(k) = s(l)): f(k, l, i, j) = F_ij(x(k), s(l)).
+    !! This default calls `values` once per source point; a kernel overrides it where a grid
+    !! can be evaluated faster (the ring kernels: on vectors of field points).
+    subroutine split_grid_values(self, x, s, f, err)
+        class(split_kernel_t), intent(in) :: self
+        real(dp), intent(in) :: x(:)               !! field points
+        real(dp), intent(in) :: s(:)               !! source points
+        real(dp), intent(out) :: f(:, :, :, :)     !! f(k, l, i, j)
+        type(error_t), allocatable, intent(out) :: err
+        integer, parameter :: part = 32            ! fixed size: no heap arrays per call
+        real(dp) :: f_point(2, 2, part), p_point(2, 2, part), s_rep(part)
+        logical :: with_log(part)
+        integer :: l, i, j, k0, n
+        with_log = .false.
+        sources: do l = 1, size(s)
+            s_rep = s(l)
+            parts: do k0 = 1, size(x), part
+                n = min(size(x) - k0 + 1, part)
+                call self%values(x(k0:k0 + n - 1), s_rep(1:n), with_log(1:n), &
+                                 f_point(:, :, 1:n), p_point(:, :, 1:n), err)
+                if (allocated(err)) return
+                components: do j = 1, 2
+                    do i = 1, 2
+                        f(k0:k0 + n - 1, l, i, j) = f_point(i, j, 1:n)
+                    end do
+                end do components
+            end do parts
+        end do sources
+    end subroutine split_grid_values
 
     ! ---------------------------------------------------------------- one-dimensional rules
 
