@@ -54,6 +54,7 @@ module galerkin_assembly
                                          !! basis products (degree <= 6 with the ring measure)
     integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
     integer, parameter :: max_batch = 256  !! field nodes of one far batch (>= n_max)
+    integer, parameter :: part = 64      !! nodes of v added together (add_across)
     integer, parameter :: min_parallel = 100 !! fewer elements: one thread (below about 3 ms
                                              !! a thread start-up, or a colour's barrier
                                              !! waiting for a preempted thread on a busy
@@ -675,8 +676,8 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), intent(out) :: loc(n_loc, n_loc)
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: cuts(5), u0, c(2, 2)
-        integer :: n, k
+        real(dp) :: cuts(5), u0
+        integer :: n, k0
         call reduced_cuts(kernel, bx, e1, e2, cuts, u0)
         call reduced_nodes(work, cuts, u0, n)
         if (kernel%homogeneous) then
@@ -693,11 +694,9 @@ contains
         if (allocated(err)) return
         work%n_kernel = work%n_kernel + int(n, int64)
         loc = 0.0_dp
-        v_nodes: do k = 1, n
-            c = work%w(k)*work%f(:, :, k)
-            if (work%with_log(k)) c = c + work%wc(k)*work%p(:, :, k)
-            call add_across(kernel, bx, e1, e2, map, work%poly, work%tab, work%dv(k), c, loc)
-        end do v_nodes
+        parts: do k0 = 1, n, part
+            call add_across(kernel, bx, e1, e2, map, work, k0, min(part, n - k0 + 1), loc)
+        end do parts
         if (e1 == e2) loc = loc + transpose(loc)
     end subroutine reduced_pair
 
@@ -761,64 +760,88 @@ contains
         work%with_log(1:n) = work%wc(1:n) /= 0.0_dp
     end subroutine reduced_nodes
 
-    !> Add c(i, j) times the integral of the basis products across the reduced variable at one
-    !! node, given as its offset d from the singular point; all positions as offsets from the
-    !! element starts (full relative precision): translation, u = d, x - a1 in
-    !! [max(0, a2 - a1 + u), min(h1, b2 - a1 + u)], xi - a2 = (x - a1) - (a2 - a1) - u;
+    !> Add the nodes k0 .. k0 + m - 1 of v (work%dv, at most `part`), each its weighted kernel
+    !! w F + wc P times the integral of the basis products across v, the nodes together in
+    !! vector loops. All positions are offsets from the element starts (full relative
+    !! precision), the node given as its offset d from the singular point: translation, u = d,
+    !! x - a1 in [max(0, a2 - a1 + u), min(h1, b2 - a1 + u)], xi - a2 = (x - a1) - (a2 - a1) - u;
     !! homogeneous, t = 1 + d, xi - a2 in [max(0, (a1 - a2 - a2 d)/t), min(h2, (b1 - a2 -
     !! a2 d)/t)], x - a1 = (a2 - a1) + a2 d + t (xi - a2), dx = xi dt.
-    pure subroutine add_across(kernel, bx, e1, e2, map, poly, tab, d, c, loc)
+    pure subroutine add_across(kernel, bx, e1, e2, map, work, k0, m, loc)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! (mesh)
         integer, intent(in) :: e1, e2
         type(pair_map_t), intent(in) :: map
-        real(dp), intent(in) :: poly(:, :, :)      !! work%poly
-        type(gauss_tables_t), intent(in) :: tab
-        real(dp), intent(in) :: d, c(2, 2)
+        type(work_t), intent(in) :: work           !! nodes, weights, kernel values, poly, tab
+        integer, intent(in) :: k0, m
         real(dp), intent(inout) :: loc(n_loc, n_loc)
-        real(dp) :: a1, a2, h1, h2, t, lo, hi, len, y, off1, off2, wj, l1, l2, inv_t, to_l1, to_l2
-        real(dp) :: bf(n_loc, n_across), bs(n_loc, n_across)
-        integer :: j, r, col
+        ! fixed size: automatic arrays would be allocated on the heap at every call
+        real(dp), dimension(part) :: d, t, inv_t, lo, len, y, off1, off2, wj, l1, l2, prod
+        real(dp) :: c(part, 2, 2), bf(part, n_across, n_loc), bs(part, n_across, n_loc)
+        real(dp) :: a1, a2, h1, h2, to_l1, to_l2
+        integer :: i, j, k, r, col
         a1 = bx%x(e1 - 1)
         a2 = bx%x(e2 - 1)
         h1 = bx%x(e1) - a1
         h2 = bx%x(e2) - a2
-        t = 1.0_dp + d
+        d(1:m) = work%dv(k0:k0 + m - 1)
+        t(1:m) = 1.0_dp + d(1:m)
         if (kernel%homogeneous) then
-            inv_t = 1.0_dp/t
-            lo = max(0.0_dp, ((a1 - a2) - a2*d)*inv_t)
-            hi = min(h2, ((bx%x(e1) - a2) - a2*d)*inv_t)
+            inv_t(1:m) = 1.0_dp/t(1:m)
+            lo(1:m) = max(0.0_dp, ((a1 - a2) - a2*d(1:m))*inv_t(1:m))
+            len(1:m) = min(h2, ((bx%x(e1) - a2) - a2*d(1:m))*inv_t(1:m)) - lo(1:m)
         else
-            lo = max(0.0_dp, (a2 - a1) + d)
-            hi = min(h1, (bx%x(e2) - a1) + d)
+            lo(1:m) = max(0.0_dp, (a2 - a1) + d(1:m))
+            len(1:m) = min(h1, (bx%x(e2) - a1) + d(1:m)) - lo(1:m)
         end if
-        len = hi - lo
-        if (len <= 0.0_dp) return
+        ! the weighted kernel, none where the range across v is empty (ends of the range)
+        components: do j = 1, 2
+            do i = 1, 2
+                nodes: do k = 1, m
+                    c(k, i, j) = work%w(k0 + k - 1)*work%f(i, j, k0 + k - 1)
+                    if (work%with_log(k0 + k - 1)) c(k, i, j) = c(k, i, j) + &
+                        work%wc(k0 + k - 1)*work%p(i, j, k0 + k - 1)
+                    if (.not. len(k) > 0.0_dp) c(k, i, j) = 0.0_dp
+                end do nodes
+            end do
+        end do components
+        len(1:m) = max(len(1:m), 0.0_dp)
         to_l1 = 2.0_dp/h1
         to_l2 = 2.0_dp/h2
         across: do j = 1, n_across
-            y = lo + len*tab%v(j, n_across)
+            y(1:m) = lo(1:m) + len(1:m)*work%tab%v(j, n_across)
             if (kernel%homogeneous) then
-                off2 = y
-                off1 = (a2 - a1) + a2*d + t*y
-                wj = len*tab%w(j, n_across)*(a2 + y)*kernel%field_weight(a1 + off1)
+                off2(1:m) = y(1:m)
+                off1(1:m) = (a2 - a1) + a2*d(1:m) + t(1:m)*y(1:m)
+                wj(1:m) = len(1:m)*work%tab%w(j, n_across)*(a2 + y(1:m))
             else
-                off1 = y
-                off2 = y - (a2 - a1) - d
-                wj = len*tab%w(j, n_across)*kernel%field_weight(a1 + off1)
+                off1(1:m) = y(1:m)
+                off2(1:m) = y(1:m) - (a2 - a1) - d(1:m)
+                wj(1:m) = len(1:m)*work%tab%w(j, n_across)
             end if
-            l1 = to_l1*off1 - 1.0_dp
-            l2 = to_l2*off2 - 1.0_dp
-            bf(1:map%nf, j) = wj*(poly(1, 1:map%nf, e1) + l1*(poly(2, 1:map%nf, e1) + &
-                                                              l1*poly(3, 1:map%nf, e1)))
-            bs(1:map%ns, j) = poly(1, 1:map%ns, e2) + l2*(poly(2, 1:map%ns, e2) + &
-                                                          l2*poly(3, 1:map%ns, e2))
+            measure: do k = 1, m
+                wj(k) = wj(k)*kernel%field_weight(a1 + off1(k))
+            end do measure
+            l1(1:m) = to_l1*off1(1:m) - 1.0_dp
+            l2(1:m) = to_l2*off2(1:m) - 1.0_dp
+            field_functions: do r = 1, map%nf
+                bf(1:m, j, r) = wj(1:m)*(work%poly(1, r, e1) + l1(1:m)*(work%poly(2, r, e1) + &
+                                                              l1(1:m)*work%poly(3, r, e1)))
+            end do field_functions
+            source_functions: do col = 1, map%ns
+                bs(1:m, j, col) = work%poly(1, col, e2) + l2(1:m)*(work%poly(2, col, e2) + &
+                                                          l2(1:m)*work%poly(3, col, e2))
+            end do source_functions
         end do across
-        ! loc += c(comp_f, comp_s) times the across integral of each basis product
+        ! loc += the weighted kernel (comp_f, comp_s) times the across integral of each product
         columns: do col = 1, map%ns
             rows: do r = 1, map%nf
-                loc(r, col) = loc(r, col) + c(map%comp_f(r), map%comp_s(col))* &
-                              sum(bf(r, :)*bs(col, :))
+                prod(1:m) = bf(1:m, 1, r)*bs(1:m, 1, col)
+                sum_across: do j = 2, n_across
+                    prod(1:m) = prod(1:m) + bf(1:m, j, r)*bs(1:m, j, col)
+                end do sum_across
+                loc(r, col) = loc(r, col) + &
+                              sum(c(1:m, map%comp_f(r), map%comp_s(col))*prod(1:m))
             end do rows
         end do columns
     end subroutine add_across

@@ -94,6 +94,8 @@ module singular_quadrature
         real(dp) :: v(n_max, n_max) = 0.0_dp   !! v(i, n): node i of the n-point rule
         real(dp) :: w(n_max, n_max) = 0.0_dp   !! w(i, n): its weight
         real(dp) :: wl(n_log) = 0.0_dp         !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n_log))
+        real(dp) :: wq(n_log) = 0.0_dp         !! wl_i - w_i ln v_i (add_log_piece), tabulated
+                                               !! so that a log piece costs no logarithms
         logical :: ready(n_max) = .false.      !! rule n tabulated (lazy tables fill on demand)
         logical :: log_ready = .false.         !! wl tabulated
     end type gauss_tables_t
@@ -151,6 +153,7 @@ contains
                 tab%wl(i) = tab%wl(i) + real(2*j + 1, dp)*leg(j)*mom(j)
             end do
             tab%wl(i) = tab%wl(i)*tab%w(i, n_log)
+            tab%wq(i) = tab%wl(i) - tab%w(i, n_log)*log(tab%v(i, n_log))
         end do nodes
         tab%log_ready = .true.
     end subroutine need_order
@@ -266,7 +269,7 @@ contains
     end subroutine add_ray
 
     !> Product-log piece u in [0, len]:
-    !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i.
+    !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i (tab%wq).
     pure subroutine add_log_piece(tab, x0, dir, len, line)
         type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: x0, dir, len
@@ -274,8 +277,7 @@ contains
         integer :: i
         call need_order(tab, n_log)
         nodes: do i = 1, n_log
-            call push_line(line, x0, dir*len*tab%v(i, n_log), len*tab%w(i, n_log), &
-                           len*(tab%wl(i) - tab%w(i, n_log)*log(tab%v(i, n_log))))
+            call push_line(line, x0, dir*len*tab%v(i, n_log), len*tab%w(i, n_log), len*tab%wq(i))
         end do nodes
     end subroutine add_log_piece
 
