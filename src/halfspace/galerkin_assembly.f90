@@ -50,8 +50,8 @@ module galerkin_assembly
 
     integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
     real(dp), parameter :: far_digits = 15.0_dp  !! see far_points
-    integer, parameter :: n_across = 4   !! GL points across the reduced variable: exact for the
-                                         !! basis products (degree <= 6 with the ring measure)
+    integer, parameter :: max_across = 4 !! GL points across the reduced variable, at most
+                                         !! (across_points)
     integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
     integer, parameter :: max_batch = 256  !! field nodes of one far batch (>= n_max)
     integer, parameter :: part = 64      !! nodes of v added together (add_across)
@@ -97,6 +97,7 @@ module galerkin_assembly
         real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
         real(dp) :: far_limit(2:n_max, 0:max_degree) = 0.0_dp  !! see far_points
         real(dp), allocatable :: raise_ratio(:)    !! see field_degree
+        integer :: n_across = max_across           !! see across_points
         integer, allocatable :: far(:, :)          !! (e1, n1, n2) of the far pairs of a column
         integer, allocatable :: by_n2(:, :)        !! the same (e1, n1), sorted by n2
         real(dp), allocatable :: gx(:)             !! field nodes of a far batch
@@ -184,7 +185,8 @@ contains
         real(dp) :: q
         integer :: e
         call new_gauss_tables(work%tab, lazy=.true.)
-        call need_order(work%tab, n_across)
+        work%n_across = across_points(kernel, bx, bz)
+        call need_order(work%tab, work%n_across)
         call reserve(work, 1024)
         call number_elements(bx, bz, work)
         call far_limits(work%far_limit)
@@ -437,6 +439,19 @@ contains
         glob(bx%n_local + 1:n) = bx%n_dof + idx(1:bz%n_local)
     end subroutine element_numbers
 
+    !> GL points across the reduced variable that integrate the basis products exactly: a
+    !! product of a field and a source function has degree 2 max_degree in the offset across v,
+    !! times x W(x) for the rings (W = 2 pi x, and dx = xi dt): 2 more; n points are exact to
+    !! degree 2 n - 1 (4 for P2/S2 on the rings, 3 for P1; 2 and 3 for the strip).
+    pure integer function across_points(kernel, bx, bz) result(n)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx, bz
+        integer :: degree
+        degree = 2*max(bx%degree, bz%degree)
+        if (kernel%homogeneous) degree = degree + 2
+        n = min(max_across, degree/2 + 1)
+    end function across_points
+
     !> The kernel depends on one combination of (x, xi) only (reduced_pair applies).
     pure logical function reducible(kernel)
         class(split_kernel_t), intent(in) :: kernel
@@ -666,8 +681,8 @@ contains
     !! (translation invariant, strip) or v = x/xi (homogeneous of degree 0, rings; then
     !! ln|x - xi| = ln xi + ln|v - 1|). Product-log rule in v cut at the kinks of the range
     !! across it, ONE kernel evaluation per node of v, and the integral across v of the basis
-    !! products exact by n_across GL points. A self pair integrates the triangle x < xi and
-    !! adds the transpose (the other triangle, by reciprocity).
+    !! products exact by work%n_across GL points. A self pair integrates the triangle x < xi
+    !! and adds the transpose (the other triangle, by reciprocity).
     subroutine reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
@@ -676,10 +691,10 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), intent(out) :: loc(n_loc, n_loc)
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: cuts(5), u0
+        real(dp) :: cuts(5), u0, pole
         integer :: n, k0
-        call reduced_cuts(kernel, bx, e1, e2, cuts, u0)
-        call reduced_nodes(work, cuts, u0, n)
+        call reduced_cuts(kernel, bx, e1, e2, cuts, u0, pole)
+        call reduced_nodes(work, cuts, u0, pole, n)
         if (kernel%homogeneous) then
             ! G(t xi, xi) = G(t, 1) = G(S t, S) with S = 1/|t - 1|: S t - S = +-1 exactly, so
             ! ln|r - s| keeps full relative precision next to t = 1 (1 - t itself rounds)
@@ -703,19 +718,23 @@ contains
     !> Range of v, its kinks and the log length, all as OFFSETS from the singular point (v - 1
     !! for v = x/xi, v - 0 for v = x - xi), formed from differences of node coordinates so that
     !! the range of an element pair keeps full relative precision; over e1 x e2 (e2 > e1) or
-    !! over the triangle x < xi of a self pair; sorted, and clipped to [cuts(1), cuts(5)].
-    pure subroutine reduced_cuts(kernel, bx, e1, e2, cuts, u0)
+    !! over the triangle x < xi of a self pair; sorted, and clipped to [cuts(1), cuts(5)]. The
+    !! range across v = x/xi has a pole at v = 0 (offset -1: xi in [a1/v, b1/v]).
+    pure subroutine reduced_cuts(kernel, bx, e1, e2, cuts, u0, pole)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
         integer, intent(in) :: e1, e2
         real(dp), intent(out) :: cuts(5), u0
+        real(dp), intent(out) :: pole          !! offset of the pole, -huge if none
         real(dp) :: a1, b1, a2, b2
         integer :: i
         a1 = bx%x(e1 - 1)
         b1 = bx%x(e1)
         a2 = bx%x(e2 - 1)
         b2 = bx%x(e2)
+        pole = -huge(1.0_dp)
         if (kernel%homogeneous) then
+            pole = -1.0_dp
             u0 = kernel%log_length(1.0_dp)
             if (e1 == e2) then
                 cuts = [-(b1 - a1)/b1, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
@@ -737,10 +756,13 @@ contains
     end subroutine reduced_cuts
 
     !> Offsets of the nodes of v from the singular point (work%dv) with weights work%w,
-    !! work%wc, and with_log, piece by piece.
-    pure subroutine reduced_nodes(work, cuts, u0, n)
+    !! work%wc, and with_log, piece by piece; a piece's points also from its distance to the
+    !! pole of the range across v, except for a piece that starts at the pole: it starts at
+    !! the axis (a1 = 0), where the branch b1/v - a2 of the range is not taken (that range
+    !! is [a2, b2] for v <= b1/b2) and the branch a1/v - a2 is negative.
+    pure subroutine reduced_nodes(work, cuts, u0, pole, n)
         type(work_t), intent(inout) :: work
-        real(dp), intent(in) :: cuts(5), u0
+        real(dp), intent(in) :: cuts(5), u0, pole
         integer, intent(out) :: n
         type(line_rule_t) :: piece
         real(dp) :: tiny_len
@@ -749,7 +771,8 @@ contains
         n = 0
         pieces: do i = 1, 4
             if (cuts(i + 1) - cuts(i) <= tiny_len) cycle pieces
-            call build_line_rule(work%tab, cuts(i), cuts(i + 1), 0.0_dp, u0, piece)
+            call build_line_rule(work%tab, cuts(i), cuts(i + 1), 0.0_dp, u0, piece, &
+                                 merge(pole, -huge(1.0_dp), cuts(i) > pole))
             m = piece%n
             call reserve(work, n + m)
             work%w(n + 1:n + m) = piece%w(1:m)
@@ -777,9 +800,10 @@ contains
         real(dp), intent(inout) :: loc(n_loc, n_loc)
         ! fixed size: automatic arrays would be allocated on the heap at every call
         real(dp), dimension(part) :: d, t, inv_t, lo, len, y, off1, off2, wj, l1, l2, prod
-        real(dp) :: c(part, 2, 2), bf(part, n_across, n_loc), bs(part, n_across, n_loc)
+        real(dp) :: c(part, 2, 2), bf(part, max_across, n_loc), bs(part, max_across, n_loc)
         real(dp) :: a1, a2, h1, h2, to_l1, to_l2
-        integer :: i, j, k, r, col
+        integer :: i, j, k, r, col, n_across
+        n_across = work%n_across
         a1 = bx%x(e1 - 1)
         a2 = bx%x(e2 - 1)
         h1 = bx%x(e1) - a1

@@ -221,39 +221,53 @@ contains
     ! ---------------------------------------------------------------- one-dimensional rules
 
     !> Rule for int_a^b F(s) ds with F = P ln|s - x0| + Q: log pieces of length <= u0 next to
-    !! x0 (u0 <= 0: F regular at x0), GL pieces graded geometrically away from x0 elsewhere.
-    pure subroutine build_line_rule(tab, a, b, x0, u0, line)
+    !! x0 (u0 <= 0: F regular at x0), GL pieces graded geometrically away from x0 elsewhere,
+    !! each with the points its distance from x0 asks, or from x_pole if that is nearer (a
+    !! pole of F outside [a, b]).
+    pure subroutine build_line_rule(tab, a, b, x0, u0, line, x_pole)
         type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: a, b          !! interval, a < b
         real(dp), intent(in) :: x0            !! singular point (anywhere)
         real(dp), intent(in) :: u0            !! longest log piece
         type(line_rule_t), intent(inout) :: line
+        real(dp), intent(in), optional :: x_pole  !! another singular point, outside [a, b]
+        real(dp) :: pole
+        pole = huge(1.0_dp)
+        if (present(x_pole)) pole = x_pole
         line%n = 0
         if (x0 <= a) then
-            call add_ray(tab, x0, 1.0_dp, a - x0, b - x0, u0, line)
+            call add_ray(tab, x0, 1.0_dp, a - x0, b - x0, u0, line, pole - x0)
         else if (x0 >= b) then
-            call add_ray(tab, x0, -1.0_dp, x0 - b, x0 - a, u0, line)
+            call add_ray(tab, x0, -1.0_dp, x0 - b, x0 - a, u0, line, x0 - pole)
         else
-            call add_ray(tab, x0, -1.0_dp, 0.0_dp, x0 - a, u0, line)
-            call add_ray(tab, x0, 1.0_dp, 0.0_dp, b - x0, u0, line)
+            call add_ray(tab, x0, -1.0_dp, 0.0_dp, x0 - a, u0, line, x0 - pole)
+            call add_ray(tab, x0, 1.0_dp, 0.0_dp, b - x0, u0, line, pole - x0)
         end if
     end subroutine build_line_rule
 
-    !> Append the rule for s = x0 + dir u, u in [d_start, d_end], singular at u = 0.
-    pure subroutine add_ray(tab, x0, dir, d_start, d_end, u0, line)
+    !> Append the rule for s = x0 + dir u, u in [d_start, d_end], singular at u = 0 and, if
+    !! given, at u = u_pole (outside the ray).
+    pure subroutine add_ray(tab, x0, dir, d_start, d_end, u0, line, u_pole)
         type(gauss_tables_t), intent(inout) :: tab
         real(dp), intent(in) :: x0, dir, d_start, d_end, u0
         type(line_rule_t), intent(inout) :: line
-        real(dp) :: lo, hi
+        real(dp), intent(in), optional :: u_pole
+        real(dp) :: lo, hi, pole
         if (.not. d_end > d_start) return
         ! a ray shorter than the rounding of x0 holds no point distinct from x0; its share of
         ! the integral, O(d_end ln d_end), is below the rounding of the result
         if (d_end <= 8.0_dp*epsilon(1.0_dp)*abs(x0)) return
+        ! a pole on the other side of x0 is farther than x0 from every piece
+        pole = huge(1.0_dp)
+        if (present(u_pole)) then
+            if (u_pole > 0.0_dp) pole = u_pole
+        end if
         lo = d_start
         if (lo <= 8.0_dp*epsilon(1.0_dp)*max(abs(x0), d_end)) then
             ! the piece touches the singular point (up to rounding of the node coordinates)
             if (u0 <= 0.0_dp) then
-                call add_gauss_piece(tab, x0, dir, 0.0_dp, d_end, points_for_ratio(1.0_dp), line)
+                call add_gauss_piece(tab, x0, dir, 0.0_dp, d_end, &
+                                     points_for_ratio(min(1.0_dp, (pole - d_end)/d_end)), line)
                 return
             end if
             hi = min(u0, d_end)
@@ -263,7 +277,8 @@ contains
         geometric: do while (lo < d_end)
             hi = 2.0_dp*lo
             if (d_end <= 2.5_dp*lo) hi = d_end
-            call add_gauss_piece(tab, x0, dir, lo, hi, points_for_ratio(lo/(hi - lo)), line)
+            call add_gauss_piece(tab, x0, dir, lo, hi, &
+                                 points_for_ratio(min(lo, pole - hi)/(hi - lo)), line)
             lo = hi
         end do geometric
     end subroutine add_ray
