@@ -764,20 +764,20 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), intent(in) :: cuts(5), u0, pole
         integer, intent(out) :: n
-        type(line_rule_t) :: piece
         real(dp) :: tiny_len
         integer :: i, m
         tiny_len = 1.0e-14_dp*(cuts(5) - cuts(1))
         n = 0
         pieces: do i = 1, 4
             if (cuts(i + 1) - cuts(i) <= tiny_len) cycle pieces
-            call build_line_rule(work%tab, cuts(i), cuts(i + 1), 0.0_dp, u0, piece, &
+            ! work%line: its arrays are kept from pair to pair (no allocation per piece)
+            call build_line_rule(work%tab, cuts(i), cuts(i + 1), 0.0_dp, u0, work%line, &
                                  merge(pole, -huge(1.0_dp), cuts(i) > pole))
-            m = piece%n
+            m = work%line%n
             call reserve(work, n + m)
-            work%w(n + 1:n + m) = piece%w(1:m)
-            work%wc(n + 1:n + m) = piece%wc(1:m)
-            work%dv(n + 1:n + m) = piece%d(1:m)
+            work%w(n + 1:n + m) = work%line%w(1:m)
+            work%wc(n + 1:n + m) = work%line%wc(1:m)
+            work%dv(n + 1:n + m) = work%line%d(1:m)
             n = n + m
         end do pieces
         work%with_log(1:n) = work%wc(1:n) /= 0.0_dp
