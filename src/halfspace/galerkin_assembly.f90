@@ -17,7 +17,9 @@
 !!    the logarithm is integrated analytically by the product-log rule of `singular_quadrature`
 !!    (Legendre moments of ln, i.e. a log-weighted rule, the remainder P, Q analytic), pieces cut
 !!    at the kinks of the range across v and at the steps, the kernel evaluated once per node of
-!!    v, and the integral across v of the basis products done exactly (polynomial, 4-point GL);
+!!    v, and the integral across v of the basis products done exactly (polynomial, GL of
+!!    `across_points`), up to 64 nodes at once in vector loops (`add_across`); GL pieces of v
+!!    graded by their distance to v = 1 and to the pole of the range across v at v = 0.
 !!    All positions there are offsets from the singular point and from the element starts,
 !!    formed from differences of node coordinates (1 - t or x - a rounded from absolute
 !!    positions would cost eps |x|/h, 1e-13 at N_e = 1000);
