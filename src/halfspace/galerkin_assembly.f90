@@ -189,7 +189,6 @@ contains
         call new_gauss_tables(work%tab, lazy=.true.)
         work%n_across = across_points(kernel, bx, bz)
         call need_order(work%tab, work%n_across)
-        call reserve(work, 1024)
         call number_elements(bx, bz, work)
         call far_limits(work%far_limit)
         allocate (work%raise_ratio(bx%ne), source=huge(1.0_dp))
@@ -201,10 +200,12 @@ contains
         end if
     end subroutine new_work
 
-    !> The far-batch arrays of one thread's work (not in the work copied to every thread).
+    !> The far-batch and point-pair arrays of one thread's work (not in the work copied to
+    !! every thread: about 100 kB that every assembly would copy).
     pure subroutine new_batch_arrays(bx, work)
         type(basis_t), intent(in) :: bx
         type(work_t), intent(inout) :: work
+        call reserve(work, 1024)
         allocate (work%far(3, bx%ne), work%by_n2(2, bx%ne), work%gx(max_batch), &
                   work%g(max_batch, 4, 2, 2), work%y(max_batch, 2, n_loc))
     end subroutine new_batch_arrays
