@@ -26,10 +26,11 @@
 !!  * other kernels: the two-dimensional pair rules of `singular_quadrature`.
 !! A translation-invariant kernel on a (piecewise) uniform mesh repeats the pair integrals of
 !! the translated pair (`translates`): O(N_e) pairs are integrated, the rest copied, column
-!! after column. Otherwise the columns (source elements) are integrated in parallel (OpenMP, one work per
-!! thread), in colours of columns that share no function (`column_stride`), each column added
-!! to T by the thread that integrated it: T does not depend on the number of threads, bit for
-!! bit.
+!! after column. Otherwise the columns (source elements) are integrated in parallel (OpenMP,
+!! one work per thread), in colours of columns that share no function (`column_stride`), each
+!! column added to T by the thread that integrated it: T does not depend on the number of
+!! threads, bit for bit. No reuse by homogeneity: a pair integral scales by lambda^3 with both
+!! elements, but on a uniform mesh no two element pairs are similar.
 !! Only pairs e2 >= e1 are integrated; the pair (e2, e1) is the transpose by reciprocity
 !! (W(x) K_ij(x, xi) = W(xi) K_ji(xi, x): r G_ij(r, s) = s G_ji(s, r) for the rings, k_ij(X) =
 !! k_ji(-X) for the strip); a self pair is one triangle plus its transpose, so T is exactly
