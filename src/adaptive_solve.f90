@@ -38,7 +38,7 @@ module adaptive_solve
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries
-    use error_estimate, only: case_entries, attach_estimates, is_estimated
+    use error_estimate, only: case_entries, attach_estimates, is_estimated, centre_pressure_order
     implicit none
     private
 
@@ -227,7 +227,7 @@ contains
         if (.not. ok) return
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
         floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
-        call attach_estimates(a%e, e2, e4, ratio, floor)
+        call attach_estimates(a%e, e2, e4, ratio, floor, centre_pressure_order(m))
     end subroutine coarse_estimates
 
     !> Pinned nodes: the ends, the load positions and the node nearest each boundary.
@@ -262,7 +262,8 @@ contains
 
     !> Each estimated result's estimate relative to its scale (-1 where there is none):
     !! settlements to the largest |settlement|, moments to the largest |moment|, pressures
-    !! at d from an edge to the mean contact pressure, the contact extent t as it is (a
+    !! at d from an edge to the mean contact pressure, the pressure at the centre to the
+    !! larger of itself and the mean contact pressure, the contact extent t as it is (a
     !! fraction of l or a).
     pure function relative_errors(e) result(rel)
         type(entry_t), intent(in) :: e(:)
@@ -279,6 +280,8 @@ contains
                 scale = max(abs(value_of(e, 'moment_sagging')), abs(value_of(e, 'moment_hogging')))
             case ('contact_extent_t')
                 scale = 1.0_dp
+            case ('pressure_centre')
+                scale = max(abs(e(i)%value), abs(value_of(e, 'pressure_mean')))
             case default
                 scale = abs(value_of(e, 'pressure_mean'))
             end select
@@ -400,7 +403,8 @@ contains
     end function interpolated
 
     !> Where the key results whose estimate is above tol are measured: the largest
-    !! settlement and moments, the pressure at d from an edge, the contact boundaries.
+    !! settlement and moments, the pressure at d from an edge and at the centre, the contact
+    !! boundaries.
     pure function target_positions(m, d, s, a) result(x)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -427,6 +431,8 @@ contains
                 x = [x, d%msh%x(d%msh%ne) - s%edge_distance]
             case ('contact_extent_t')
                 x = [x, pack(a%boundary, a%liftoff)]
+            case ('pressure_centre')
+                x = [x, 0.0_dp]
             end select
         end do
     end function target_positions
