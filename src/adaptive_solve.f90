@@ -78,6 +78,12 @@ module adaptive_solve
     !! element's share of the error of W(0) is already O(h_min))
     real(dp), parameter :: h_min = 1.0e-4_dp
     real(dp), parameter :: theta_feature = 0.05_dp  !! features: eta_e >= this max eta
+    !> a cycle skips the estimate while the last one, reduced like ne^-2, is above this
+    !! times tol (estimate_due)
+    real(dp), parameter :: skip_factor = 3.0_dp
+    !> at least this fraction of the elements (the largest indicators) is cut in each
+    !! cycle, so that the mesh grows geometrically and the cycles stay few
+    real(dp), parameter :: min_fraction = 0.2_dp
 
     public :: solve_adaptive, relative_errors, adaptation_lines
 
@@ -94,13 +100,17 @@ contains
         type(discretization_t) :: d_try
         type(solution_t) :: sol_try
         type(error_t), allocatable :: err_try
-        type(assessment_t) :: a
+        type(assessment_t) :: a, a_prev
         type(mesh_t) :: next
+        type(station_table_t) :: prev_nodes
         character(len=200) :: text
-        integer :: k
+        integer :: k, ne_estimated
+        real(dp) :: last_estimate
         logical :: short
         call start_record(m, info)
         d_try = d
+        ne_estimated = 0
+        last_estimate = huge(1.0_dp)
         cycles: do k = 1, max_cycles
             call solve_contact(m, d_try, sol_try, err_try)
             if (allocated(err_try) .and. k == 1) then
@@ -115,7 +125,14 @@ contains
             end if
             d = d_try
             sol = sol_try
-            call assess(m, d, sol, a)
+            if (estimate_due(m, d%msh%ne, ne_estimated, last_estimate)) then
+                call assess(m, d, sol, a, prev_nodes)
+                ne_estimated = d%msh%ne
+                last_estimate = a%estimate
+            else
+                a_prev = a
+                call assess(m, d, sol, a, prev_nodes, a_prev)
+            end if
             call record_cycle(info, d%msh%ne, a)
             if (info%reached) exit cycles
             call next_mesh(m, d, a, next, short)
@@ -130,7 +147,28 @@ contains
             call discretise_mesh(m, next, d_try)
         end do cycles
         if (k > max_cycles) info%note = 'the largest number of cycles was reached'
+        ! the result's mesh must carry an estimate: the last cycle may have skipped it
+        if (ne_estimated /= d%msh%ne) then
+            call assess(m, d, sol, a, prev_nodes)
+            call record_final(info, a)
+        end if
     end subroutine solve_adaptive
+
+    !> Whether this cycle's mesh (ne elements) gets the estimate's two coarse solves: the
+    !! first mesh, a mesh at least twice the last estimated one (ne_last), or one on which
+    !! the last estimate (est_last), reduced as if the error fell like ne^-2 (faster than
+    !! any key result falls here), could be within tol. The other cycles take their
+    !! indicators from the difference to the previous cycle's solution and cost one solve.
+    pure logical function estimate_due(m, ne, ne_last, est_last)
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: ne, ne_last
+        real(dp), intent(in) :: est_last
+        real(dp) :: predicted
+        estimate_due = .true.
+        if (ne_last <= 0 .or. ne >= 2*ne_last .or. est_last >= huge(1.0_dp)) return
+        predicted = est_last*(real(ne_last, dp)/real(ne, dp))**2
+        estimate_due = predicted <= skip_factor*m%adapt_tol
+    end function estimate_due
 
     pure logical function same_mesh(a, b)
         type(mesh_t), intent(in) :: a, b
@@ -170,13 +208,31 @@ contains
         end if
     end subroutine record_cycle
 
+    !> The estimate of the final mesh when its cycle skipped it (the history keeps -1 for
+    !! that cycle).
+    subroutine record_final(info, a)
+        type(adaptation_t), intent(inout) :: info
+        type(assessment_t), intent(in) :: a
+        integer :: n
+        n = size(info%history_ne)
+        call record_cycle(info, info%ne, a)
+        info%cycles = info%cycles - 1
+        info%history_ne = info%history_ne(:n)
+        info%history_estimate = [info%history_estimate(:n - 1), info%estimate]
+        if (.not. info%reached .and. len(info%note) == 0) info%note = 'no further refinement possible'
+    end subroutine record_final
+
     !> Key results, their estimates on the coarsened meshes, the located boundaries and the
-    !! element indicators of one solution.
-    subroutine assess(m, d, sol, a)
+    !! element indicators of one solution; without the coarse solves when prev is given
+    !! (the indicators then compare with prev_nodes, the previous cycle's solution, and the
+    !! keys above tol are prev's). prev_nodes: out, this solution at its nodes.
+    subroutine assess(m, d, sol, a, prev_nodes, prev)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
-        type(assessment_t), intent(out) :: a
+        type(assessment_t), intent(inout) :: a
+        type(station_table_t), intent(inout) :: prev_nodes
+        type(assessment_t), intent(in), optional :: prev   !! (not a itself)
         type(station_table_t) :: tab, tab_nodes, tab2
         type(summary_t) :: s
         type(entry_t), allocatable :: e2(:), e4(:)
@@ -191,15 +247,23 @@ contains
         s = summarise(m, sol, tab)
         a%e = summary_entries(m, s, contact_extent(tab, m%length))
         call locate_boundaries(sol, a%boundary, a%liftoff)
-        call coarse_estimates(m, d, a, e2, e4, tab2, ok)
+        if (allocated(a%eta)) deallocate (a%eta)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere
-        if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
-        a%rel = relative_errors(a%e)
-        a%estimate = huge(1.0_dp)
-        if (ok .and. all(a%rel >= 0.0_dp .or. .not. estimated_and_defined(a%e))) &
-            a%estimate = maxval(a%rel)
+        if (present(prev)) then
+            a%eta = indicators(m, d, s, tab_nodes, prev_nodes)
+            a%rel = prev%rel                        ! the same keys, in the same order
+            a%estimate = huge(1.0_dp)
+        else
+            call coarse_estimates(m, d, a, e2, e4, tab2, ok)
+            if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
+            a%rel = relative_errors(a%e)
+            a%estimate = huge(1.0_dp)
+            if (ok .and. all(a%rel >= 0.0_dp .or. .not. estimated_and_defined(a%e))) &
+                a%estimate = maxval(a%rel)
+        end if
         a%targets = target_positions(m, d, s, a)
         a%rough = feature_elements(m, d, tab_nodes, a%boundary)
+        prev_nodes = tab_nodes
     end subroutine assess
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
@@ -499,7 +563,8 @@ contains
         allowed = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1)) >= &
                   2.0_dp*h_min*(d%msh%x(d%msh%ne) - d%msh%x(0))
         eta_max = maxval(a%eta, mask=allowed)
-        marked = a%eta >= theta*eta_max
+        marked = a%eta >= min(theta*eta_max, &
+                              kth_largest(pack(a%eta, allowed), ceiling(min_fraction*d%msh%ne)))
         marked = marked .or. (a%rough .and. a%eta >= theta_feature*eta_max)
         do k = 1, size(a%targets)
             e = min(d%msh%ne, max(1, count(d%msh%x(1:d%msh%ne - 1) < a%targets(k)) + 1))
@@ -573,8 +638,13 @@ contains
             lines = [character(len=400) :: lines, 'TOLERANCE NOT REACHED: '//info%note]
         end if
         do k = 1, size(info%history_ne)
-            write (buf, '(a,i3,a,i6,a,es9.2)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
-                ', estimate ', info%history_estimate(k)
+            if (info%history_estimate(k) >= 0.0_dp) then
+                write (buf, '(a,i3,a,i6,a,es9.2)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
+                    ', estimate ', info%history_estimate(k)
+            else
+                write (buf, '(a,i3,a,i6,a)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
+                    ', not estimated (indicators from the previous cycle)'
+            end if
             lines = [lines, buf]
         end do
     end function adaptation_lines
