@@ -5,14 +5,17 @@
 !!     on the mesh coarsened twice by removing every other node (mesh_refinement: the ends,
 !!     the load positions and the nodes on the located boundaries are kept), with the
 !!     observed order; the largest estimate relative to its scale (relative_errors) is the
-!!     cycle's estimate. At or below tol the case is done.
+!!     cycle's estimate. At or below tol the case is done. The two coarse solves are skipped
+!!     while the last estimate cannot be near tol yet (estimate_due); the final mesh always
+!!     gets its estimate.
 !!  2. The contact (lift-off) and stick/slip boundaries are located between the Gauss points
 !!     where the state changes: the zero of the pressure (or of the friction reserve
 !!     tau0 - |sigma_x|) extrapolated from the side where it is positive, with the square-root
 !!     law of a smooth contact edge (q^2 linear in x).
-!!  3. Elements are marked where the solution moved most between the coarse and the fine
-!!     mesh (eta_e = h_e/L max of |dW|/W_s, |dSigma_z|/p_s, |dM|/M_s at its nodes; marked
-!!     when eta_e >= theta max eta), where a key result that has not reached tol is
+!!  3. Elements are marked where the solution moved most between the coarse (or, without
+!!     the estimate, the previous cycle's) and the fine mesh (eta_e = h_e/L max of
+!!     |dW|/W_s, |dSigma_z|/p_s, |dM|/M_s at its nodes; marked when eta_e >= theta max eta,
+!!     and at least the min_fraction largest), where a key result that has not reached tol is
 !!     measured (its position and the elements next to it), and next to the features where
 !!     the solution is not smooth (boundaries, loads, the singular ends in contact) when
 !!     their eta is not negligible.
@@ -83,7 +86,7 @@ module adaptive_solve
     real(dp), parameter :: skip_factor = 3.0_dp
     !> at least this fraction of the elements (the largest indicators) is cut in each
     !! cycle, so that the mesh grows geometrically and the cycles stay few
-    real(dp), parameter :: min_fraction = 0.2_dp
+    real(dp), parameter :: min_fraction = 0.4_dp
 
     public :: solve_adaptive, relative_errors, adaptation_lines
 
