@@ -41,7 +41,7 @@ module adaptive_solve
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries
-    use error_estimate, only: case_entries, attach_estimates, is_estimated, centre_pressure_order
+    use error_estimate, only: case_entries, attach_estimates, is_estimated
     implicit none
     private
 
@@ -294,7 +294,7 @@ contains
         if (.not. ok) return
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
         floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
-        call attach_estimates(a%e, e2, e4, ratio, floor, centre_pressure_order(m))
+        call attach_estimates(m, a%e, e2, e4, ratio, floor)
     end subroutine coarse_estimates
 
     !> Pinned nodes: the ends, the load positions and the node nearest each boundary.

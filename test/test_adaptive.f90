@@ -16,12 +16,15 @@
 module test_adaptive
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_PLATE, LOAD_PATCH, complete_model
+    use model, only: model_t, load_t, MODEL_PLATE, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, &
+                     complete_model
     use mesh, only: mesh_t, new_mesh
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
+    use error_estimate, only: formal_order
+    use shape_functions, only: INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck
     implicit none
     private
@@ -35,7 +38,8 @@ contains
                  new_unittest('frictionless_punch_to_tolerance', test_frictionless_punch), &
                  new_unittest('bonded_punch_to_tolerance', test_bonded_punch), &
                  new_unittest('max_elements_stops_short', test_max_elements), &
-                 new_unittest('adapt_card_read', test_card)]
+                 new_unittest('adapt_card_read', test_card), &
+                 new_unittest('formal_orders', test_formal_orders)]
     end subroutine collect_adaptive
 
     !> Bisection, the 2:1 balance, snapping and coarsening on small meshes whose answers are
@@ -270,4 +274,27 @@ contains
                    info%estimate > 1.0e-8_dp .and. index(info%note, 'max_elements') > 0, &
                    'max_elements: not reported as such ('//info%note//')')
     end subroutine test_max_elements
+
+    !> The orders an estimate may credit (error_estimate, formal_order): the centre pressure
+    !! 1 with P1 and 2 with S2 displacements; every key 1 with S2 under a point load (the
+    !! slope jump); no limit (4) otherwise.
+    subroutine test_formal_orders(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        m = punch(0.0_dp, 1.0e-2_dp, 400)
+        call check(err, formal_order(m, 'pressure_centre') == 1.0_dp .and. &
+                   formal_order(m, 'settlement_max') == 4.0_dp, 'P1 plate, disk load')
+        if (allocated(err)) return
+        m%interp(2:3) = INTERP_S2
+        call check(err, formal_order(m, 'pressure_centre') == 2.0_dp .and. &
+                   formal_order(m, 'settlement_max') == 4.0_dp, 'S2 plate, disk load')
+        if (allocated(err)) return
+        m%kind = MODEL_BEAM
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+        call check(err, formal_order(m, 'settlement_max') == 1.0_dp .and. &
+                   formal_order(m, 'moment_sagging') == 1.0_dp, 'S2 beam, point load')
+        if (allocated(err)) return
+        m%interp(2:3) = 1
+        call check(err, formal_order(m, 'settlement_max') == 4.0_dp, 'P1 beam, point load')
+    end subroutine test_formal_orders
 end module test_adaptive
