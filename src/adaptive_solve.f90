@@ -222,7 +222,8 @@ contains
         info%cycles = info%cycles - 1
         info%history_ne = info%history_ne(:n)
         info%history_estimate = [info%history_estimate(:n - 1), info%estimate]
-        if (.not. info%reached .and. len(info%note) == 0) info%note = 'no further refinement possible'
+        if (.not. info%reached .and. len(info%note) == 0) &
+            info%note = 'no further refinement possible'
     end subroutine record_final
 
     !> Key results, their estimates on the coarsened meshes, the located boundaries and the
