@@ -35,7 +35,7 @@ module adaptive_solve
     use mesh, only: mesh_t
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes, &
                                nearest_node
-    use discretization, only: discretization_t, discretise_mesh, load_positions
+    use discretization, only: discretization_t, discretise_mesh, load_positions, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
     use station_results, only: station_table_t, tabulate, contact_extent
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
@@ -295,7 +295,8 @@ contains
         if (.not. ok) return
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
         floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
-        call attach_estimates(m, a%e, e2, e4, ratio, floor)
+        call attach_estimates(m, a%e, e2, e4, ratio, floor, loads_on_nodes(m, d%msh) .and. &
+                              loads_on_nodes(m, c2) .and. loads_on_nodes(m, c4))
     end subroutine coarse_estimates
 
     !> Pinned nodes: the ends, the load positions and the node nearest each boundary.

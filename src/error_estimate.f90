@@ -16,7 +16,7 @@ module error_estimate
     use errors, only: error_t
     use model, only: model_t, LOAD_PATCH
     use shape_functions, only: INTERP_P1, INTERP_S2
-    use discretization, only: discretization_t, new_discretization
+    use discretization, only: discretization_t, new_discretization, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact
     use station_results, only: station_table_t, tabulate, contact_extent
     use design_summary, only: summary_t, summarise
@@ -43,15 +43,16 @@ contains
         type(entry_t), intent(inout) :: e(:)
         type(entry_t), allocatable :: e2(:), e4(:)
         real(dp) :: h_edge
-        logical :: ok2, ok4
+        logical :: ok2, ok4, nodes2, nodes4
         if (m%ne/4 < min_coarse_elements) return
-        call coarse_entries(m, m%ne/2, e2, ok2)
+        call coarse_entries(m, m%ne/2, e2, ok2, nodes2)
         if (.not. ok2) return
-        call coarse_entries(m, m%ne/4, e4, ok4)
+        call coarse_entries(m, m%ne/4, e4, ok4, nodes4)
         if (.not. ok4) return
         ! the contact extent moves by whole stations: at least half the largest element (as t)
         h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%length
-        call attach_estimates(m, e, e2, e4, 2.0_dp, 0.5_dp*h_edge)
+        call attach_estimates(m, e, e2, e4, 2.0_dp, 0.5_dp*h_edge, &
+                              loads_on_nodes(m, d%msh) .and. nodes2 .and. nodes4)
     end subroutine estimate_errors
 
     !> Estimates of the estimated keys of e from the same keys on two coarser meshes of a
@@ -59,18 +60,19 @@ contains
     !! extent's estimate is at least extent_floor (t). Each key is credited with at most the
     !! order of convergence the method has for it (formal_order): three coarse meshes are
     !! often short of the asymptotic range and show a higher order than that.
-    pure subroutine attach_estimates(m, e, e2, e4, ratio, extent_floor)
+    pure subroutine attach_estimates(m, e, e2, e4, ratio, extent_floor, kinks_on_nodes)
         type(model_t), intent(in) :: m
         type(entry_t), intent(inout) :: e(:)
         type(entry_t), intent(in) :: e2(:), e4(:)
         real(dp), intent(in) :: ratio              !! refinement ratio between the meshes
         real(dp), intent(in) :: extent_floor
+        logical, intent(in) :: kinks_on_nodes      !! see formal_order
         integer :: i
         do i = 1, size(e)
             if (.not. is_estimated(e(i)%key)) cycle
             if (.not. (e(i)%defined .and. e2(i)%defined .and. e4(i)%defined)) cycle
             call richardson(e(i)%value, e2(i)%value, e4(i)%value, ratio, &
-                            formal_order(m, e(i)%key), e(i)%error, e(i)%order)
+                            formal_order(m, e(i)%key, kinks_on_nodes), e(i)%error, e(i)%order)
             if (trim(e(i)%key) == 'contact_extent_t') e(i)%error = max(e(i)%error, extent_floor)
             e(i)%has_error = .true.
         end do
@@ -79,24 +81,27 @@ contains
     !> The largest order of convergence an estimate may credit to a key (Roache: p =
     !! min(observed, formal)); 4, the observed order's upper limit, where no lower one is
     !! known:
-    !!  * S2 (C1) deflection or rotation under a concentrated load (POINT, MOMENT, RING): 1
-    !!    for every key. The Mindlin structure's slope jumps there and C1 shape functions
-    !!    smear the jump over the elements at the load (work_precision beam: S2 displacements
-    !!    converge at order 1.00 in W(0) on uniform meshes; adapted to 1e-4, three coarsened
-    !!    meshes showed 2.5 and an estimate 10 times low).
+    !!  * S2 (C1) deflection or rotation under a concentrated load (POINT, MOMENT, RING) that
+    !!    is not on a node of all three meshes: 1 for every key. The Mindlin structure's slope
+    !!    jumps there; an S2 basis is made C0 at a node with such a load (shape_functions),
+    !!    but between nodes C1 shape functions smear the jump over the elements at the load
+    !!    (work_precision beam before the C0 knots: order 1.00 in W(0) on uniform meshes;
+    !!    adapted to 1e-4, three coarsened meshes showed 2.5 and an estimate 10 times low).
     !!  * the pressure at the centre: 1 with P1 deflection or rotation, 2 with P2 or S2 (a
     !!    pointwise traction converges one order below the slope; measured 1.0 for P1 and 2.0
     !!    for S2 on the work-precision plate, 1.0 for P1 on the frictionless punch, where the
     !!    coarse meshes of an adaptation showed 2.6 and an estimate 3.5 times low).
-    pure real(dp) function formal_order(m, key) result(p)
+    pure real(dp) function formal_order(m, key, kinks_on_nodes) result(p)
         type(model_t), intent(in) :: m
         character(len=*), intent(in) :: key
+        logical, intent(in) :: kinks_on_nodes  !! every concentrated load on a node of the
+                                               !! three meshes (discretization, loads_on_nodes)
         logical :: p1, c1
         p = 4.0_dp
         p1 = m%interp(2) == INTERP_P1 .or. m%interp(3) == INTERP_P1
         c1 = m%interp(2) == INTERP_S2 .or. m%interp(3) == INTERP_S2
         if (trim(key) == 'pressure_centre') p = merge(1.0_dp, 2.0_dp, p1)
-        if (c1 .and. any(m%loads%kind /= LOAD_PATCH)) p = 1.0_dp
+        if (c1 .and. .not. kinks_on_nodes .and. any(m%loads%kind /= LOAD_PATCH)) p = 1.0_dp
     end function formal_order
 
     !> Whether a key of summary_table gets an error estimate.
@@ -106,11 +111,12 @@ contains
     end function is_estimated
 
     !> The key results of the case on ne elements (ok false when the solve fails).
-    subroutine coarse_entries(m, ne, e, ok)
+    subroutine coarse_entries(m, ne, e, ok, on_nodes)
         type(model_t), intent(in) :: m
         integer, intent(in) :: ne
         type(entry_t), allocatable, intent(out) :: e(:)
         logical, intent(out) :: ok
+        logical, intent(out) :: on_nodes    !! every concentrated load on a node of this mesh
         type(model_t) :: mc
         type(discretization_t) :: d
         type(station_table_t) :: tab
@@ -118,8 +124,10 @@ contains
         mc = m
         mc%ne = ne
         ok = .false.
+        on_nodes = .false.
         call new_discretization(mc, d, err)
         if (allocated(err)) return
+        on_nodes = loads_on_nodes(m, d%msh)
         call case_entries(mc, d, e, tab, ok)
     end subroutine coarse_entries
 
