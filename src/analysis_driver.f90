@@ -332,7 +332,7 @@ contains
             if (result%adaptation%adapted) then
                 call take_adapted_estimates(result)
             else if (estimates) then
-                call estimate_errors(m, d, result%entries)
+                call estimate_errors(m, d, result%entries, sol%coarse)
             end if
             result%mean_pressure = s%mean_pressure
         end if

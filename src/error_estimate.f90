@@ -17,7 +17,7 @@ module error_estimate
     use model, only: model_t, LOAD_PATCH
     use shape_functions, only: INTERP_P1, INTERP_S2
     use discretization, only: discretization_t, new_discretization, loads_on_nodes
-    use contact_solver, only: solution_t, solve_contact
+    use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use station_results, only: station_table_t, tabulate, contact_extent
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries
@@ -37,17 +37,24 @@ module error_estimate
 contains
 
     !> Fill e(:)%error (and %has_error, %order) for the estimated keys of a solved case.
-    subroutine estimate_errors(m, d, e)
+    !! known: the solutions on the nested coarser meshes of the Newton start
+    !! (solution_t%coarse); one whose mesh is that of N_e/2 or N_e/4 elements is not solved
+    !! again.
+    subroutine estimate_errors(m, d, e, known)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         type(entry_t), intent(inout) :: e(:)
+        type(coarse_solution_t), intent(in), optional :: known(:)
+        type(coarse_solution_t), allocatable :: reuse(:)
         type(entry_t), allocatable :: e2(:), e4(:)
         real(dp) :: h_edge
         logical :: ok2, ok4, nodes2, nodes4
         if (m%ne/4 < min_coarse_elements) return
-        call coarse_entries(m, m%ne/2, e2, ok2, nodes2)
+        allocate (reuse(0))
+        if (present(known)) reuse = known
+        call coarse_entries(m, m%ne/2, reuse, e2, ok2, nodes2)
         if (.not. ok2) return
-        call coarse_entries(m, m%ne/4, e4, ok4, nodes4)
+        call coarse_entries(m, m%ne/4, reuse, e4, ok4, nodes4)
         if (.not. ok4) return
         ! the contact extent moves by whole stations: at least half the largest element (as t)
         h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%length
@@ -110,10 +117,12 @@ contains
         is_estimated = any(estimated_keys == key)
     end function is_estimated
 
-    !> The key results of the case on ne elements (ok false when the solve fails).
-    subroutine coarse_entries(m, ne, e, ok, on_nodes)
+    !> The key results of the case on ne elements (ok false when the solve fails), from a
+    !! known solution on that mesh if there is one.
+    subroutine coarse_entries(m, ne, known, e, ok, on_nodes)
         type(model_t), intent(in) :: m
         integer, intent(in) :: ne
+        type(coarse_solution_t), intent(in) :: known(:)
         type(entry_t), allocatable, intent(out) :: e(:)
         logical, intent(out) :: ok
         logical, intent(out) :: on_nodes    !! every concentrated load on a node of this mesh
@@ -121,6 +130,7 @@ contains
         type(discretization_t) :: d
         type(station_table_t) :: tab
         type(error_t), allocatable :: err
+        integer :: k
         mc = m
         mc%ne = ne
         ok = .false.
@@ -128,24 +138,46 @@ contains
         call new_discretization(mc, d, err)
         if (allocated(err)) return
         on_nodes = loads_on_nodes(m, d%msh)
+        do k = 1, size(known)
+            if (same_nodes(known(k)%x, d%msh%x)) then
+                call case_entries(mc, d, e, tab, ok, known=known(k))
+                return
+            end if
+        end do
         call case_entries(mc, d, e, tab, ok)
     end subroutine coarse_entries
 
+    !> Whether two meshes have the same nodes (to 1e-12 of the length).
+    pure logical function same_nodes(x1, x2)
+        real(dp), intent(in) :: x1(:), x2(:)
+        same_nodes = size(x1) == size(x2)
+        if (same_nodes) same_nodes = all(abs(x1 - x2) <= 1.0e-12_dp*(x2(size(x2)) - x2(1)))
+    end function same_nodes
+
     !> The key results of the case solved on the discretisation d, and its station table
     !! (and, if asked, the table at the nodes); ok false when the solve fails.
-    subroutine case_entries(m, d, e, tab, ok, node_tab)
+    subroutine case_entries(m, d, e, tab, ok, node_tab, known)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(entry_t), allocatable, intent(out) :: e(:)
         type(station_table_t), intent(out) :: tab
         logical, intent(out) :: ok
         type(station_table_t), intent(out), optional :: node_tab
+        type(coarse_solution_t), intent(in), optional :: known   !! the solution on d
         type(solution_t) :: sol
         type(summary_t) :: s
         type(error_t), allocatable :: err
         type(model_t) :: mn
         ok = .false.
-        call solve_contact(m, d, sol, err)
+        if (present(known)) then
+            sol%z = known%z
+            sol%admissibility = known%admissibility
+            sol%reaction = known%reaction
+            sol%applied = known%applied
+            sol%n_solves = known%n_solves
+        else
+            call solve_contact(m, d, sol, err)
+        end if
         if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
         if (present(node_tab) .and. .not. allocated(err)) then
             mn = m

@@ -526,7 +526,7 @@ contains
                 if (allocated(err)) return
                 e = summary_entries(c%m, summarise(c%m, c%sol, c%tab), &
                                     contact_extent(c%tab, c%m%length))
-                call estimate_errors(c%m, c%d, e)
+                call estimate_errors(c%m, c%d, e, c%sol%coarse)
                 i = 0
                 do j = 1, size(e)
                     if (trim(e(j)%key) == 'settlement_max') i = j
