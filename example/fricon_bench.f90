@@ -192,7 +192,7 @@ contains
             '   solves   nested   time_s  outcome'//repeat(' ', 60)// &
             '  factorisations  T_s  K_M_setup_s  nested_s  iterations_s  checks_s  output_s'
         do i = 1, size(runs)
-            write (u, '(a5,2x,a48,i5,2x,a7,2i9,f9.3,2x,a90,i16,6es11.3)') runs(i)%set, &
+            write (u, '(a5,2x,a48,i5,2x,a7,2i9,es10.3,2x,a90,i16,6es11.3)') runs(i)%set, &
                 runs(i)%label, runs(i)%ne, method_name(runs(i)%method), runs(i)%solves, &
                 runs(i)%nested, runs(i)%seconds, runs(i)%outcome, runs(i)%factorisations, &
                 runs(i)%phase

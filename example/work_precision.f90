@@ -1,12 +1,13 @@
-!> Work-precision benchmark (issue 8 item 1): for a PLATE and a BEAM case with lift-off and
-!! friction, each discretisation (interpolation x mesh family) over N_e = 10 ... 160, the error
-!! of W(0), the centre and peak pressure, max |M| and the contact extent against a reference,
-!! versus in-process solve time and versus unknowns.
+!> Work-precision benchmark (issue 8 items 1 and 3): for a PLATE and a BEAM case with lift-off
+!! and friction, each discretisation (interpolation x mesh family) over N_e = 10 ... 160 (uniform
+!! P1 on to 1280), and the two ADAPT families (P1, and S2 displacements with P1 tractions, from
+!! 16 elements, tol 1e-2 ... 1e-4), the error of W(0), the centre and peak pressure, max |M|
+!! and the contact extent against a reference, versus in-process time and versus unknowns.
 !!
-!! Reference: Richardson extrapolation of P1 / LOADS meshes at N_e = 320 and 640, with the
-!! order observed from 160, 320, 640; its uncertainty (the extrapolation's change to the
-!! finest value) is printed with it. Errors are relative to the reference value (the contact
-!! extent: absolute, in t).
+!! Reference (subroutine reference): per quantity the better of two Richardson extrapolations,
+!! both P1 (a) on LOADS meshes, (b) on a P1-adapted mesh bisected uniformly; its uncertainty
+!! (the extrapolation's change to the finest value) is printed with it. Errors are relative
+!! to the reference value (the contact extent: absolute, in t).
 !!
 !! Usage: fpm run --profile release --example work_precision [-- OUTDIR]   (default output/bench)
 !! Writes OUTDIR/work_precision_{plate,beam}.txt and .png (gnuplot: log error against log time,
@@ -31,15 +32,25 @@ program work_precision
     integer, parameter :: n_q = 5               !! W(0), Sigma_z(0), max Sigma_z, max |M|, extent
     character(len=*), parameter :: q_names(n_q) = [character(len=12) :: 'W(0)', 'Sigma_z(0)', &
                                                    'max_Sigma_z', 'max|M|', 'extent']
-    integer, parameter :: n_disc = 7
-    character(len=*), parameter :: disc_names(n_disc) = [character(len=14) :: 'P1-UNIFORM', &
-        'P1-EDGES', 'P1-LOADS', 'P2-UNIFORM', 'S2-UNIFORM', 'S2w-P1tr-LOADS', 'P1-ADAPT']
+    integer, parameter :: n_disc = 9
+    character(len=*), parameter :: disc_names(n_disc) = [character(len=16) :: 'P1-UNIFORM', &
+        'P1-EDGES', 'P1-LOADS', 'P2-UNIFORM', 'S2-UNIFORM', 'S2w-P1tr-LOADS', &
+        'S2w-P1tr-UNIFORM', 'P1-ADAPT', 'S2w-P1tr-ADAPT']
+    integer, parameter :: adapt_families(2) = [8, 9]   !! the ADAPT discretisations
+    integer, parameter :: long_families(2) = [1, 7]    !! continued over ne_long
+    !> the error level of the issue's target, in both W(0) and Sigma_z(0)
+    real(dp), parameter :: target_error = 1.0e-4_dp
     integer, parameter :: ne_list(5) = [10, 20, 40, 80, 160]
-    !> the adaptive family: ADAPT tolerances, from a 16-element uniform mesh
+    !> the adaptive families: ADAPT tolerances, from a 16-element uniform mesh
     real(dp), parameter :: tol_list(5) = [1.0e-2_dp, 3.0e-3_dp, 1.0e-3_dp, 3.0e-4_dp, 1.0e-4_dp]
     integer, parameter :: adapt_start = 16, adapt_max = 2000
+    !> the mesh of reference (b): P1-ADAPT to 1e-4, at most this many elements (it is bisected
+    !! twice; with the centre pressure among ADAPT's key results, P1 at 1e-4 would go on to
+    !! adapt_max, and 4 adapt_max elements cannot be solved here)
+    integer, parameter :: reference_max = 700
     !> uniform P1 continued to where it reaches 1e-4 (the issue's comparison)
     integer, parameter :: ne_long(3) = [320, 640, 1280]
+    integer, parameter :: all_ne(size(ne_list) + size(ne_long)) = [ne_list, ne_long]
     character(len=256) :: out_dir
     integer :: k
 
@@ -93,9 +104,12 @@ contains
             m%grading = 'LOADS'
             m%interp(2:3) = INTERP_S2
         case (7)
+            m%interp(2:3) = INTERP_S2
+        case (8, 9)
             m%ne = adapt_start
             m%adapt_tol = tol_list(ne)      ! ne: the index into tol_list
             m%adapt_max_ne = adapt_max
+            if (k == 9) m%interp(2:3) = INTERP_S2
         end select
         call complete_model(m)
     end function discretised
@@ -154,15 +168,17 @@ contains
     end subroutine measure
 
     !> Reference, two ways, each quantity taken from the one with the smaller uncertainty:
-    !! (a) Richardson from P1 LOADS at 160, 320, 640; (b) the mesh adapted to 1e-4, then
-    !! bisected uniformly once and twice (nested; its contact, slip and load nodes stay nodes),
-    !! Richardson with the observed order. Uncertainty: |reference - finest value|.
+    !! (a) Richardson from P1 LOADS at 160, 320, 640; (b) the P1 mesh adapted to 1e-4 (at
+    !! most reference_max elements), then bisected uniformly once and twice (nested; its
+    !! contact, slip and load nodes stay nodes), solved with P1, Richardson with the observed
+    !! order. Uncertainty: |reference - finest value|.
     subroutine reference(plate, q_ref, uncertainty, source)
         logical, intent(in) :: plate
         real(dp), intent(out) :: q_ref(n_q), uncertainty(n_q)
         character(len=1), intent(out) :: source(n_q)     !! 'a' or 'b'
         real(dp) :: q(n_q, 3), seconds, ref_b(n_q), unc_b(n_q)
         type(mesh_t) :: msh
+        type(model_t) :: m
         integer :: j, unknowns
         logical :: ok
         do j = 1, 3
@@ -171,8 +187,9 @@ contains
         end do
         call extrapolate(q, q_ref, uncertainty)
         source = 'a'
-        call measure(discretised(plate, 7, size(tol_list)), q(:, 1), seconds, unknowns, ok, &
-                     final_mesh=msh)
+        m = discretised(plate, 8, size(tol_list))
+        m%adapt_max_ne = reference_max
+        call measure(m, q(:, 1), seconds, unknowns, ok, final_mesh=msh)
         if (.not. ok) return
         do j = 2, 3
             msh = bisected(msh, spread(.true., 1, msh%ne))
@@ -211,63 +228,114 @@ contains
     subroutine study(plate, out_dir)
         logical, intent(in) :: plate
         character(len=*), intent(in) :: out_dir
+        integer, parameter :: max_rows = size(ne_list) + size(ne_long)
         character(len=:), allocatable :: stem
-        real(dp) :: q_ref(n_q), unc(n_q), q(n_q), seconds
+        real(dp) :: q_ref(n_q), unc(n_q), q(n_q)
+        real(dp) :: seconds(max_rows, n_disc), errors(n_q, max_rows, n_disc)
+        integer :: ne(max_rows, n_disc), unknowns(max_rows, n_disc), rows(n_disc)
+        logical :: ok(max_rows, n_disc)
         character(len=1) :: source(n_q)
-        integer :: u, k, j, i, unknowns, ne_final
-        logical :: ok
+        integer :: u, k, j, i
         stem = out_dir//'/work_precision_'//trim(merge('plate', 'beam ', plate))
         call reference(plate, q_ref, unc, source)
+        rows = 0
+        discretisations: do k = 1, n_disc
+            do j = 1, size(ne_list) + merge(size(ne_long), 0, any(long_families == k))
+                i = j
+                if (.not. any(adapt_families == k)) i = all_ne(j)
+                call measure(discretised(plate, k, i), q, seconds(j, k), unknowns(j, k), &
+                             ok(j, k), ne(j, k))
+                errors(1:4, j, k) = abs(q(1:4) - q_ref(1:4))/max(abs(q_ref(1:4)), tiny(1.0_dp))
+                errors(5, j, k) = abs(q(5) - q_ref(5))
+                rows(k) = j
+            end do
+        end do discretisations
         open (newunit=u, file=stem//'.txt', status='replace', action='write')
         write (u, '(a)') '# work-precision, '//trim(merge('PLATE rho 0.001 zeta 0.1 f 0.6, disk load r <= 0.1 a           ', &
             'BEAM rho 0.001 zeta 0.1 beta 0.05 f 0.6, central load H = 0.1 V', plate))
         write (u, '(a)') '# reference (a): Richardson of P1/LOADS N_e 320, 640 (order from 160/320/640)'
-        write (u, '(a)') '# reference (b): the P1-ADAPT mesh of tol 1e-4 bisected once and twice, '// &
-            'Richardson (observed order)'
+        write (u, '(a,i0,a)') '# reference (b): the P1-ADAPT mesh of tol 1e-4 (at most ', &
+            reference_max, ' elements) bisected once and twice, Richardson (observed order)'
         write (u, '(a)') '# each quantity from the one with the smaller uncertainty |ref - finest|'
         do i = 1, n_q
             write (u, '(a,es14.6,a,es9.2,a)') '#   '//q_names(i), q_ref(i), '  uncertainty ', &
                 unc(i), '  ('//source(i)//')'
         end do
+        call write_costs(u, plate, rows, unknowns, seconds, errors, ok)
         write (u, '(a)') '# errors relative to the reference (extent: absolute, t); time: discretise + solve [s]'
-        write (u, '(a)') '# disc            N_e  unknowns   time_s      err_W0      err_Sz0     err_Szmax   err_Mmax    err_extent'
-        discretisations: do k = 1, n_disc
-            do j = 1, size(ne_list)
-                if (k == n_disc) then
-                    call measure(discretised(plate, k, j), q, seconds, unknowns, ok, ne_final)
-                else
-                    call measure(discretised(plate, k, ne_list(j)), q, seconds, unknowns, ok, ne_final)
-                end if
-                call write_row(u, disc_names(k), ne_final, unknowns, seconds, q, q_ref, ok)
+        write (u, '(a)') '# disc              N_e  unknowns   time_s      err_W0      err_Sz0     '// &
+            'err_Szmax   err_Mmax    err_extent'
+        do k = 1, n_disc
+            do j = 1, rows(k)
+                call write_row(u, disc_names(k), ne(j, k), unknowns(j, k), seconds(j, k), &
+                               errors(:, j, k), ok(j, k))
             end do
-            if (k == 1) then
-                do j = 1, size(ne_long)
-                    call measure(discretised(plate, k, ne_long(j)), q, seconds, unknowns, ok, ne_final)
-                    call write_row(u, disc_names(k), ne_final, unknowns, seconds, q, q_ref, ok)
-                end do
-            end if
             write (u, '(a)') ''
             write (u, '(a)') ''
-        end do discretisations
+        end do
         close (u)
         write (output_unit, '(a)') 'work_precision: wrote '//stem//'.txt'
         call plot(stem, plate)
     end subroutine study
 
+    !> For each family, the unknowns and time at which the error (plate: max(err W(0), err
+    !! Sigma_z(0)); beam: err W(0), its Sigma_z(0) under the point load being singular) first
+    !! reaches target_error: log-log interpolation between the two rows around the first row
+    !! at or below it; when no row reaches it, extrapolated from the last two rows (marked),
+    !! unless that needs more than 10 times the last row's unknowns.
+    subroutine write_costs(u, plate, rows, unknowns, seconds, errors, ok)
+        integer, intent(in) :: u, rows(:), unknowns(:, :)
+        logical, intent(in) :: plate
+        real(dp), intent(in) :: seconds(:, :), errors(:, :, :)
+        logical, intent(in) :: ok(:, :)
+        real(dp) :: e(size(seconds, 1)), s, n_at, t_at
+        integer :: k, j, a
+        character(len=14) :: how
+        write (u, '(a,es8.1,a)') '# cost at '//trim(merge('max(err W(0), err Sigma_z(0))', &
+            'err W(0)                     ', plate))//' = ', target_error, &
+            ' (log-log interpolation along the rows, first crossing; '// &
+            'extrapolated: beyond the last row)'
+        families: do k = 1, size(rows)
+            e(:rows(k)) = errors(1, :rows(k), k)
+            if (plate) e(:rows(k)) = max(e(:rows(k)), errors(2, :rows(k), k))
+            where (.not. ok(:rows(k), k)) e(:rows(k)) = huge(1.0_dp)
+            j = findloc(e(:rows(k)) <= target_error, .true., dim=1)
+            how = ''
+            if (j == 1) then
+                write (u, '(a,a18,a,i7,a,es9.2,a)') '#   ', disc_names(k), ' unknowns <=', &
+                    unknowns(1, k), '   time <=', seconds(1, k), ' s (first row)'
+                cycle families
+            else if (j == 0) then
+                j = rows(k)
+                how = ' extrapolated'
+            end if
+            a = j - 1
+            s = -1.0_dp
+            if (e(j) < e(a)) s = log(target_error/e(a))/log(e(j)/e(a))
+            n_at = -1.0_dp
+            if (s >= 0.0_dp) n_at = exp(log(real(unknowns(a, k), dp)) + &
+                                        s*log(real(unknowns(j, k), dp)/unknowns(a, k)))
+            if (n_at < 0.0_dp .or. n_at > 10.0_dp*unknowns(rows(k), k)) then
+                write (u, '(a,a18,a)') '#   ', disc_names(k), ' not reached'
+                cycle families
+            end if
+            t_at = exp(log(seconds(a, k)) + s*log(seconds(j, k)/seconds(a, k)))
+            write (u, '(a,a18,a,i7,a,es9.2,a)') '#   ', disc_names(k), ' unknowns ', nint(n_at), &
+                '   time ', t_at, ' s'//how
+        end do families
+    end subroutine write_costs
+
     !> One row of the table: errors relative to the reference (the extent: absolute).
-    subroutine write_row(u, name, ne, unknowns, seconds, q, q_ref, ok)
+    subroutine write_row(u, name, ne, unknowns, seconds, err_q, ok)
         integer, intent(in) :: u, ne, unknowns
         character(len=*), intent(in) :: name
-        real(dp), intent(in) :: seconds, q(n_q), q_ref(n_q)
+        real(dp), intent(in) :: seconds, err_q(n_q)
         logical, intent(in) :: ok
-        real(dp) :: err_q(n_q)
         if (.not. ok) then
-            write (u, '(a16,i5,i9,a)') name, ne, unknowns, '   failed'
+            write (u, '(a18,i5,i9,a)') name, ne, unknowns, '   failed'
             return
         end if
-        err_q(1:4) = abs(q(1:4) - q_ref(1:4))/max(abs(q_ref(1:4)), tiny(1.0_dp))
-        err_q(5) = abs(q(5) - q_ref(5))
-        write (u, '(a16,i5,i9,es11.3,5es12.3)') name, ne, unknowns, seconds, err_q
+        write (u, '(a18,i5,i9,es11.3,5es12.3)') name, ne, unknowns, seconds, err_q
     end subroutine write_row
 
     !> stem.png: log error against log time, one curve per discretisation (gnuplot index
@@ -277,12 +345,13 @@ contains
         logical, intent(in) :: plate
         integer :: u, i
         open (newunit=u, file=stem//'.gp', status='replace', action='write')
-        write (u, '(a)') "set terminal pngcairo size 1600,1000 font 'Sans,11' noenhanced"
+        write (u, '(a)') "set terminal pngcairo size 2100,1000 font 'Sans,11' noenhanced"
         write (u, '(a)') "set output '"//stem//".png'"
-        write (u, '(a)') "set multiplot layout 2,3 title 'Work-precision, "// &
+        write (u, '(a)') "set multiplot layout 2,4 title 'Work-precision, "// &
             trim(merge('PLATE (rho 0.001, f 0.6, disk load) ', 'BEAM (rho 0.001, f 0.6, H = 0.1 V)  ', &
                        plate))//": error against solve time' font 'Sans,14'"
         write (u, '(a)') 'set logscale xy; set grid; set format y "%.0e"; set format x "%.0e"'
+        write (u, '(a)') "set linetype 9 lc rgb '#e0007a' lw 3    # the ninth family: magenta (8 is black)"
         write (u, '(a)') "set xlabel 'discretise + solve time [s]'; set key bottom left font ',9'"
         write (u, '(a)') "names = '"//join(disc_names)//"'"
         do i = 1, n_q
@@ -293,6 +362,9 @@ contains
         write (u, '(a)') "unset logscale x; set logscale x; set xlabel 'unknowns'"
         write (u, '(a)') "set title 'error of W(0) against unknowns'; plot for [k=0:"//itoa(n_disc - 1)// &
             "] '"//stem//".txt' index k u 3:(($5>0)?$5:1/0) w lp pt 7 lw 2 t word(names, k+1)"
+        write (u, '(a)') "set title 'error of Sigma_z(0) against unknowns'; plot for [k=0:"// &
+            itoa(n_disc - 1)//"] '"//stem//".txt' index k u 3:(($6>0)?$6:1/0) w lp pt 7 lw 2 "// &
+            "t word(names, k+1)"
         write (u, '(a)') 'unset multiplot'
         close (u)
         call execute_command_line('gnuplot '//stem//'.gp')

@@ -5,14 +5,17 @@
 !!     on the mesh coarsened twice by removing every other node (mesh_refinement: the ends,
 !!     the load positions and the nodes on the located boundaries are kept), with the
 !!     observed order; the largest estimate relative to its scale (relative_errors) is the
-!!     cycle's estimate. At or below tol the case is done.
+!!     cycle's estimate. At or below tol the case is done. The two coarse solves are skipped
+!!     while the last estimate cannot be near tol yet (estimate_due); the final mesh always
+!!     gets its estimate.
 !!  2. The contact (lift-off) and stick/slip boundaries are located between the Gauss points
 !!     where the state changes: the zero of the pressure (or of the friction reserve
 !!     tau0 - |sigma_x|) extrapolated from the side where it is positive, with the square-root
 !!     law of a smooth contact edge (q^2 linear in x).
-!!  3. Elements are marked where the solution moved most between the coarse and the fine
-!!     mesh (eta_e = h_e/L max of |dW|/W_s, |dSigma_z|/p_s, |dM|/M_s at its nodes; marked
-!!     when eta_e >= theta max eta), where a key result that has not reached tol is
+!!  3. Elements are marked where the solution moved most between the coarse (or, without
+!!     the estimate, the previous cycle's) and the fine mesh (eta_e = h_e/L max of
+!!     |dW|/W_s, |dSigma_z|/p_s, |dM|/M_s at its nodes; marked when eta_e >= theta max eta,
+!!     and at least the min_fraction largest), where a key result that has not reached tol is
 !!     measured (its position and the elements next to it), and next to the features where
 !!     the solution is not smooth (boundaries, loads, the singular ends in contact) when
 !!     their eta is not negligible.
@@ -32,7 +35,7 @@ module adaptive_solve
     use mesh, only: mesh_t
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes, &
                                nearest_node
-    use discretization, only: discretization_t, discretise_mesh, load_positions
+    use discretization, only: discretization_t, discretise_mesh, load_positions, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
     use station_results, only: station_table_t, tabulate, contact_extent
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
@@ -78,6 +81,12 @@ module adaptive_solve
     !! element's share of the error of W(0) is already O(h_min))
     real(dp), parameter :: h_min = 1.0e-4_dp
     real(dp), parameter :: theta_feature = 0.05_dp  !! features: eta_e >= this max eta
+    !> a cycle skips the estimate while the last one, reduced like ne^-2, is above this
+    !! times tol (estimate_due)
+    real(dp), parameter :: skip_factor = 3.0_dp
+    !> at least this fraction of the elements (the largest indicators) is cut in each
+    !! cycle, so that the mesh grows geometrically and the cycles stay few
+    real(dp), parameter :: min_fraction = 0.4_dp
 
     public :: solve_adaptive, relative_errors, adaptation_lines
 
@@ -94,13 +103,17 @@ contains
         type(discretization_t) :: d_try
         type(solution_t) :: sol_try
         type(error_t), allocatable :: err_try
-        type(assessment_t) :: a
+        type(assessment_t) :: a, a_prev
         type(mesh_t) :: next
+        type(station_table_t) :: prev_nodes
         character(len=200) :: text
-        integer :: k
+        integer :: k, ne_estimated
+        real(dp) :: last_estimate
         logical :: short
         call start_record(m, info)
         d_try = d
+        ne_estimated = 0
+        last_estimate = huge(1.0_dp)
         cycles: do k = 1, max_cycles
             call solve_contact(m, d_try, sol_try, err_try)
             if (allocated(err_try) .and. k == 1) then
@@ -115,7 +128,14 @@ contains
             end if
             d = d_try
             sol = sol_try
-            call assess(m, d, sol, a)
+            if (estimate_due(m, d%msh%ne, ne_estimated, last_estimate)) then
+                call assess(m, d, sol, a, prev_nodes)
+                ne_estimated = d%msh%ne
+                last_estimate = a%estimate
+            else
+                a_prev = a
+                call assess(m, d, sol, a, prev_nodes, a_prev)
+            end if
             call record_cycle(info, d%msh%ne, a)
             if (info%reached) exit cycles
             call next_mesh(m, d, a, next, short)
@@ -130,7 +150,28 @@ contains
             call discretise_mesh(m, next, d_try)
         end do cycles
         if (k > max_cycles) info%note = 'the largest number of cycles was reached'
+        ! the result's mesh must carry an estimate: the last cycle may have skipped it
+        if (ne_estimated /= d%msh%ne) then
+            call assess(m, d, sol, a, prev_nodes)
+            call record_final(info, a)
+        end if
     end subroutine solve_adaptive
+
+    !> Whether this cycle's mesh (ne elements) gets the estimate's two coarse solves: the
+    !! first mesh, a mesh at least twice the last estimated one (ne_last), or one on which
+    !! the last estimate (est_last), reduced as if the error fell like ne^-2 (faster than
+    !! any key result falls here), could be within tol. The other cycles take their
+    !! indicators from the difference to the previous cycle's solution and cost one solve.
+    pure logical function estimate_due(m, ne, ne_last, est_last)
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: ne, ne_last
+        real(dp), intent(in) :: est_last
+        real(dp) :: predicted
+        estimate_due = .true.
+        if (ne_last <= 0 .or. ne >= 2*ne_last .or. est_last >= huge(1.0_dp)) return
+        predicted = est_last*(real(ne_last, dp)/real(ne, dp))**2
+        estimate_due = predicted <= skip_factor*m%adapt_tol
+    end function estimate_due
 
     pure logical function same_mesh(a, b)
         type(mesh_t), intent(in) :: a, b
@@ -170,13 +211,32 @@ contains
         end if
     end subroutine record_cycle
 
+    !> The estimate of the final mesh when its cycle skipped it (the history keeps -1 for
+    !! that cycle).
+    subroutine record_final(info, a)
+        type(adaptation_t), intent(inout) :: info
+        type(assessment_t), intent(in) :: a
+        integer :: n
+        n = size(info%history_ne)
+        call record_cycle(info, info%ne, a)
+        info%cycles = info%cycles - 1
+        info%history_ne = info%history_ne(:n)
+        info%history_estimate = [info%history_estimate(:n - 1), info%estimate]
+        if (.not. info%reached .and. len(info%note) == 0) &
+            info%note = 'no further refinement possible'
+    end subroutine record_final
+
     !> Key results, their estimates on the coarsened meshes, the located boundaries and the
-    !! element indicators of one solution.
-    subroutine assess(m, d, sol, a)
+    !! element indicators of one solution; without the coarse solves when prev is given
+    !! (the indicators then compare with prev_nodes, the previous cycle's solution, and the
+    !! keys above tol are prev's). prev_nodes: out, this solution at its nodes.
+    subroutine assess(m, d, sol, a, prev_nodes, prev)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
-        type(assessment_t), intent(out) :: a
+        type(assessment_t), intent(inout) :: a
+        type(station_table_t), intent(inout) :: prev_nodes
+        type(assessment_t), intent(in), optional :: prev   !! (not a itself)
         type(station_table_t) :: tab, tab_nodes, tab2
         type(summary_t) :: s
         type(entry_t), allocatable :: e2(:), e4(:)
@@ -191,15 +251,23 @@ contains
         s = summarise(m, sol, tab)
         a%e = summary_entries(m, s, contact_extent(tab, m%length))
         call locate_boundaries(sol, a%boundary, a%liftoff)
-        call coarse_estimates(m, d, a, e2, e4, tab2, ok)
+        if (allocated(a%eta)) deallocate (a%eta)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere
-        if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
-        a%rel = relative_errors(a%e)
-        a%estimate = huge(1.0_dp)
-        if (ok .and. all(a%rel >= 0.0_dp .or. .not. estimated_and_defined(a%e))) &
-            a%estimate = maxval(a%rel)
+        if (present(prev)) then
+            a%eta = indicators(m, d, s, tab_nodes, prev_nodes)
+            a%rel = prev%rel                        ! the same keys, in the same order
+            a%estimate = huge(1.0_dp)
+        else
+            call coarse_estimates(m, d, a, e2, e4, tab2, ok)
+            if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
+            a%rel = relative_errors(a%e)
+            a%estimate = huge(1.0_dp)
+            if (ok .and. all(a%rel >= 0.0_dp .or. .not. estimated_and_defined(a%e))) &
+                a%estimate = maxval(a%rel)
+        end if
         a%targets = target_positions(m, d, s, a)
         a%rough = feature_elements(m, d, tab_nodes, a%boundary)
+        prev_nodes = tab_nodes
     end subroutine assess
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
@@ -227,7 +295,8 @@ contains
         if (.not. ok) return
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
         floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
-        call attach_estimates(a%e, e2, e4, ratio, floor)
+        call attach_estimates(m, a%e, e2, e4, ratio, floor, loads_on_nodes(m, d%msh) .and. &
+                              loads_on_nodes(m, c2) .and. loads_on_nodes(m, c4))
     end subroutine coarse_estimates
 
     !> Pinned nodes: the ends, the load positions and the node nearest each boundary.
@@ -262,7 +331,8 @@ contains
 
     !> Each estimated result's estimate relative to its scale (-1 where there is none):
     !! settlements to the largest |settlement|, moments to the largest |moment|, pressures
-    !! at d from an edge to the mean contact pressure, the contact extent t as it is (a
+    !! at d from an edge to the mean contact pressure, the pressure at the centre to the
+    !! larger of itself and the mean contact pressure, the contact extent t as it is (a
     !! fraction of l or a).
     pure function relative_errors(e) result(rel)
         type(entry_t), intent(in) :: e(:)
@@ -279,6 +349,8 @@ contains
                 scale = max(abs(value_of(e, 'moment_sagging')), abs(value_of(e, 'moment_hogging')))
             case ('contact_extent_t')
                 scale = 1.0_dp
+            case ('pressure_centre')
+                scale = max(abs(e(i)%value), abs(value_of(e, 'pressure_mean')))
             case default
                 scale = abs(value_of(e, 'pressure_mean'))
             end select
@@ -400,7 +472,8 @@ contains
     end function interpolated
 
     !> Where the key results whose estimate is above tol are measured: the largest
-    !! settlement and moments, the pressure at d from an edge, the contact boundaries.
+    !! settlement and moments, the pressure at d from an edge and at the centre, the contact
+    !! boundaries.
     pure function target_positions(m, d, s, a) result(x)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -427,6 +500,8 @@ contains
                 x = [x, d%msh%x(d%msh%ne) - s%edge_distance]
             case ('contact_extent_t')
                 x = [x, pack(a%boundary, a%liftoff)]
+            case ('pressure_centre')
+                x = [x, 0.0_dp]
             end select
         end do
     end function target_positions
@@ -493,7 +568,8 @@ contains
         allowed = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1)) >= &
                   2.0_dp*h_min*(d%msh%x(d%msh%ne) - d%msh%x(0))
         eta_max = maxval(a%eta, mask=allowed)
-        marked = a%eta >= theta*eta_max
+        marked = a%eta >= min(theta*eta_max, &
+                              kth_largest(pack(a%eta, allowed), ceiling(min_fraction*d%msh%ne)))
         marked = marked .or. (a%rough .and. a%eta >= theta_feature*eta_max)
         do k = 1, size(a%targets)
             e = min(d%msh%ne, max(1, count(d%msh%x(1:d%msh%ne - 1) < a%targets(k)) + 1))
@@ -567,8 +643,13 @@ contains
             lines = [character(len=400) :: lines, 'TOLERANCE NOT REACHED: '//info%note]
         end if
         do k = 1, size(info%history_ne)
-            write (buf, '(a,i3,a,i6,a,es9.2)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
-                ', estimate ', info%history_estimate(k)
+            if (info%history_estimate(k) >= 0.0_dp) then
+                write (buf, '(a,i3,a,i6,a,es9.2)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
+                    ', estimate ', info%history_estimate(k)
+            else
+                write (buf, '(a,i3,a,i6,a)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
+                    ', not estimated (indicators from the previous cycle)'
+            end if
             lines = [lines, buf]
         end do
     end function adaptation_lines

@@ -4,7 +4,7 @@ module analysis_driver
     use iso_fortran_env, only: int64
     use kinds, only: dp
     use errors, only: error_t, new_error, add_context, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
-    use model, only: model_t, MODEL_BEAM, relative_stiffness
+    use model, only: model_t, MODEL_BEAM, relative_stiffness, METHOD_TWOLOOP
     use deck_reader, only: deck_t, case_count, case_model
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
@@ -160,7 +160,8 @@ contains
                 call add_context(err, 'case '//case_number(i, size(cases)))
                 return
             end if
-            largest = max(largest, memory_needed(case_unknowns(cases(i))))
+            largest = max(largest, memory_needed(case_unknowns(cases(i)), &
+                                                 cases(i)%method == METHOD_TWOLOOP))
         end do
         threads = max(1, min(threads, int(0.8_dp*available/max(largest, 1.0_dp))))
     end subroutine fit_memory
@@ -174,7 +175,8 @@ contains
         n = case_unknowns(m)
         if (time_needed(n) < 2.0_dp) return
         write (unit, '(a,i0,a,f0.1,a)') 'fricon: '//name//': ', n, ' unknowns, about '// &
-            seconds(time_needed(n))//' and ', memory_needed(n)/1.0e9_dp, ' GB (rough estimates)'
+            seconds(time_needed(n))//' and ', &
+            memory_needed(n, m%method == METHOD_TWOLOOP)/1.0e9_dp, ' GB (rough estimates)'
         flush (unit)
     end subroutine announce_size
 
@@ -332,7 +334,7 @@ contains
             if (result%adaptation%adapted) then
                 call take_adapted_estimates(result)
             else if (estimates) then
-                call estimate_errors(m, d, result%entries)
+                call estimate_errors(m, d, result%entries, sol%coarse)
             end if
             result%mean_pressure = s%mean_pressure
         end if

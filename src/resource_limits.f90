@@ -2,28 +2,29 @@
 !! case the machine cannot hold (exit status 1 with the need and the limit) instead of an
 !! allocation failure or a swap storm in the middle of a run.
 !!
-!! Memory: the solver keeps a few dense copies of the system of n = displacement + traction
-!! unknowns (the matrix, its factors, the Jacobian); measured peaks on a plate (P1, Newton):
-!! 37 MB at n = 1005, 111 MB at n = 2005, 400 MB at n = 4005, i.e. about 3.1 n^2 doubles;
-!! the estimate takes 4 n^2 doubles + 20 MB (the two-loop method still factorises the dense
-!! system; Newton with the Schur complement needs about 1.5: 292 MB at n = 5005). Time: the
-!! Newton solve of the frictional plate takes 2.1 s at n = 5005 on the 2-core development
-!! machine (output/bench/linalg_before_after.md), i.e. about 1.1 s at n = 4000, scaling as
-!! n^3 (a rough guide, printed with the progress, never used to refuse). The limit is 80 % of the memory the system reports
-!! available (MemAvailable of /proc/meminfo; 8 GB when it cannot be read), shared by the cases a
-!! sweep solves at once.
+!! Memory: the two-loop method keeps a few dense copies of the system of n = displacement +
+!! traction unknowns (measured about 3.1 n^2 doubles; the estimate takes 4 n^2 doubles +
+!! 20 MB). The Newton method (the default) keeps the base matrix by blocks (contact_system):
+!! measured at n = 5005 (N_e = 1000), above the process's own 27 MB, 70 MB for the frictional
+!! plate (2.8 n^2 bytes) and 120 MB for a symmetric beam (4.8 n^2 bytes: its half-beam
+!! reduction is solved dense); the estimate takes 8 n^2 bytes + 20 MB. Time: the Newton
+!! solve of the frictional plate takes 0.9 s at n = 5005 on the 2-core development machine
+!! (output/bench/phases_run.md), i.e. about 0.5 s at n = 4000, scaling as n^3 (a rough
+!! guide, printed with the progress, never used to refuse). The limit is 80 % of the memory
+!! the system reports available (MemAvailable of /proc/meminfo; 8 GB when it cannot be
+!! read), shared by the cases a sweep solves at once.
 module resource_limits
     use iso_fortran_env, only: int64
     use kinds, only: dp
     use errors, only: error_t, new_error, EXIT_INPUT
-    use model, only: model_t
+    use model, only: model_t, METHOD_TWOLOOP
     use discretization, only: discretization_t, new_discretization
     implicit none
     private
 
-    real(dp), parameter :: bytes_per_n2 = 32.0_dp          !! 4 doubles per n^2
+    real(dp), parameter :: bytes_per_n2(2) = [8.0_dp, 32.0_dp]  !! Newton (blocks), two-loop
     real(dp), parameter :: base_bytes = 20.0e6_dp
-    real(dp), parameter :: seconds_at_4000 = 1.1_dp
+    real(dp), parameter :: seconds_at_4000 = 0.5_dp
     real(dp), parameter :: usable_fraction = 0.8_dp
     real(dp), parameter :: fallback_available = 8.0e9_dp
 
@@ -45,9 +46,10 @@ contains
         if (.not. allocated(err)) n = d%n
     end function case_unknowns
 
-    pure real(dp) function memory_needed(n) result(bytes)
+    pure real(dp) function memory_needed(n, dense) result(bytes)
         integer, intent(in) :: n
-        bytes = bytes_per_n2*real(n, dp)**2 + base_bytes
+        logical, intent(in) :: dense             !! the two-loop method (dense system)
+        bytes = bytes_per_n2(merge(2, 1, dense))*real(n, dp)**2 + base_bytes
     end function memory_needed
 
     pure real(dp) function time_needed(n) result(seconds)
@@ -85,12 +87,12 @@ contains
         character(len=400) :: text
         integer :: n
         n = case_unknowns(m)
-        need = memory_needed(n)*real(max(at_once, 1), dp)
+        need = memory_needed(n, m%method == METHOD_TWOLOOP)*real(max(at_once, 1), dp)
         limit = usable_fraction*available
         if (need <= limit) return
         write (text, '(a,i0,a,i0,a,f0.1,a,i0,a,f0.1,a)') 'N_e = ', &
             merge(max(m%ne, m%adapt_max_ne), m%ne, m%adapt_tol > 0.0_dp), ' gives ', n, &
-            ' unknowns and needs about ', need/1.0e9_dp, ' GB (dense system; ', max(at_once, 1), &
+            ' unknowns and needs about ', need/1.0e9_dp, ' GB (', max(at_once, 1), &
             ' case(s) at once), more than the ', limit/1.0e9_dp, ' GB usable on this machine '// &
             '(80 % of the memory available): use fewer elements, a graded mesh (MESH EDGES or '// &
             'LOADS) or fewer --jobs'

@@ -329,9 +329,10 @@ contains
         end do
     end subroutine test_iteration_cap
 
-    !> A case whose dense system does not fit is refused with its need and the limit: N_e =
-    !! 20000 on a plate gives n = 100005 unknowns, 32 n^2 bytes = 320 GB > 0.8 x 16 GB; N_e =
-    !! 20 (n = 105) fits; and two cases at once need twice one.
+    !> A case that does not fit is refused with its need and the limit: N_e = 20000 on a
+    !! plate gives n = 100005 unknowns, 8 n^2 bytes = 80 GB (Newton, blocks) > 0.8 x 16 GB;
+    !! N_e = 20 (n = 105) fits; the estimate is 8 n^2 + 20 MB (Newton) and 32 n^2 + 20 MB
+    !! (two-loop, dense), the constants of resource_limits' measured peaks.
     subroutine test_memory_limit(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m
@@ -340,7 +341,7 @@ contains
         call check(err, case_unknowns(m) == 100005, 'unknowns of a P1 plate: 5 (N_e + 1)')
         if (allocated(err)) return
         call check_memory(m, 1, 16.0e9_dp, refusal)
-        call check(err, allocated(refusal), 'a 320 GB case was not refused')
+        call check(err, allocated(refusal), 'an 80 GB case was not refused')
         if (allocated(err)) return
         call check(err, refusal%code == EXIT_INPUT .and. index(refusal%message, 'GB') > 0 .and. &
                    index(refusal%message, '12.8 GB usable') > 0, 'refusal lacks need or limit: '// &
@@ -350,8 +351,8 @@ contains
         call check_memory(m, 1, 16.0e9_dp, refusal)
         call check(err, .not. allocated(refusal), 'a small case was refused')
         if (allocated(err)) return
-        call check(err, memory_needed(200) > 0.0_dp .and. &
-                   abs(memory_needed(2000) - 4.0_dp*memory_needed(1000) + 3.0_dp*20.0e6_dp) < 1.0_dp, &
-                   'memory estimate not 32 n^2 + 20 MB')
+        call check(err, abs(memory_needed(1000, .false.) - (8.0e6_dp + 20.0e6_dp)) < 1.0_dp .and. &
+                   abs(memory_needed(1000, .true.) - (32.0e6_dp + 20.0e6_dp)) < 1.0_dp, &
+                   'memory estimate not 8 n^2 + 20 MB (Newton), 32 n^2 + 20 MB (two-loop)')
     end subroutine test_memory_limit
 end module test_contact_solver

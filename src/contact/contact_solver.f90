@@ -28,6 +28,7 @@ module contact_solver
     use mesh_refinement, only: coarsened, pinned_nodes
     use mindlin_structure, only: traction_at
     use contact_system, only: contact_points_t, iteration_record_t, solution_t, system_t, &
+                              coarse_solution_t, &
                               build_system, contact_points, point_tractions, &
                               use_rigid_coordinates
     use rigid_body, only: to_absolute
@@ -42,7 +43,7 @@ module contact_solver
     private
 
     public :: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
-    public :: contact_points_t, iteration_record_t, solution_t
+    public :: contact_points_t, iteration_record_t, solution_t, coarse_solution_t
     public :: solve_contact, check_load_admissible, contact_points, nested_prediction
 
     integer, parameter :: nested_from = 48   !! larger meshes start from the nested coarser one
@@ -152,6 +153,10 @@ contains
         call solve_contact(m, dc, sol_c, err_c)
         sol%n_nested_solves = sol_c%n_solves + sol_c%n_nested_solves
         if (allocated(err_c)) return
+        if (.not. allocated(sol_c%coarse)) allocate (sol_c%coarse(0))
+        sol%coarse = [coarse_solution_t(x=dc%msh%x, z=sol_c%z, admissibility=sol_c%admissibility, &
+                                        reaction=sol_c%reaction, applied=sol_c%applied, &
+                                        n_solves=sol_c%n_solves), sol_c%coarse]
         allocate (sigma(2, sol%pts%n))
         do p = 1, sol%pts%n
             call locate_element(dc%msh, sol%pts%x(p), e, xi)

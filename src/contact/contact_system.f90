@@ -52,6 +52,17 @@ module contact_system
         character(len=40) :: note = ''
     end type iteration_record_t
 
+    !> The solution of the case on a nested coarser mesh (the Newton start, contact_solver):
+    !! kept so that the error estimate need not solve that mesh again.
+    type, public :: coarse_solution_t
+        real(dp), allocatable :: x(:)        !! the mesh nodes x(0:ne)
+        real(dp), allocatable :: z(:)        !! [v; r], physical units
+        real(dp) :: admissibility = 0.0_dp   !! as in solution_t
+        real(dp) :: reaction(3) = 0.0_dp
+        real(dp) :: applied(3) = 0.0_dp
+        integer :: n_solves = 0
+    end type coarse_solution_t
+
     !> The converged state of one case and how it was reached.
     type, public :: solution_t
         real(dp), allocatable :: z(:)        !! [v; r], physical units
@@ -67,6 +78,8 @@ module contact_system
         integer :: n_solves = 0              !! linear solves of the case
         integer :: n_nested_solves = 0       !! linear solves on the nested coarser meshes
                                              !! that gave the Newton start (contact_solver)
+        type(coarse_solution_t), allocatable :: coarse(:)  !! the nested coarser meshes'
+                                             !! solutions, finest first (none: not nested)
         real(dp) :: seconds(5) = 0.0_dp      !! wall time [s] of: T assembly; the rest of the
                                              !! system (K, M, B0, loads); the nested start;
                                              !! the iterations; the final checks

@@ -16,8 +16,9 @@
 !!   |sigma_x| = f sigma_z), so the merit is minimised exactly piece by piece. A step to a set
 !!   pattern met in the last 16 iterates (a cycle) is replaced by the exact line search along
 !!   it; a full step that keeps the set pattern is always taken (it solves F = 0);
-!! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once, or a
-!!   damped step no longer moves), from the same start: eps_bar scaled by 10^s from
+!! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once - its
+!!   line search from the best point does not halve the best merit -, or a damped step no
+!!   longer moves), from the same start: eps_bar scaled by 10^s from
 !!   max(10^3 eps_bar, 1e-3) (at most 0.5) down to the deck's, eta_bar by 10^min(s, 3), each
 !!   stage started from the previous solution, one decade per stage (doubled, up to 4, after
 !!   a stage of at most 3 steps while s > 3: eps_bar = 1e-12 spans 9 decades). A failed stage
@@ -372,12 +373,13 @@ contains
             call line_search(d, sys, law, sol%pts, s, s%z_best, s%dz_best, s%phi_best, t)
             sol%z = s%z_best + t*s%dz_best
             searched = .true.
-            s%exhausted = .true.
         end if
-        if (t < 1.0_dp) then
+        if (t < 1.0_dp .or. searched) then
             call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
             s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
         end if
+        ! the watchdog has run out unless its line search at least halved the best merit
+        if (searched .and. s%phi > 0.5_dp*s%phi_best) s%exhausted = .true.
         s%phi_now = s%phi
         s%n_seen = s%n_seen + 1
         s%seen(:, modulo(s%n_seen - 1, size(s%seen, 2)) + 1) = &

@@ -22,7 +22,7 @@ module discretization
         integer, allocatable :: fixed(:)   !! constrained unknowns (plate: u_s(0), psi(0), sigma_x(0))
     end type discretization_t
 
-    public :: new_discretization, discretise_mesh, load_positions, locate_element
+    public :: new_discretization, discretise_mesh, load_positions, locate_element, loads_on_nodes
 
 contains
 
@@ -93,6 +93,24 @@ contains
                 .not. any(nodes == k)) nodes = [nodes, k]
         end do
     end function concentrated_nodes
+
+    !> Whether every concentrated load (point, ring, moment) inside the interface sits on a
+    !! node of msh, so that an S2 displacement basis has its slope jump there.
+    pure logical function loads_on_nodes(m, msh)
+        type(model_t), intent(in) :: m
+        type(mesh_t), intent(in) :: msh
+        real(dp) :: tol
+        integer :: i
+        tol = 1.0e-9_dp*(msh%x(msh%ne) - msh%x(0))
+        loads_on_nodes = .true.
+        do i = 1, size(m%loads)
+            associate (x => m%loads(i)%x1)
+                if (m%loads(i)%kind == LOAD_PATCH .or. x <= msh%x(0) + tol .or. &
+                    x >= msh%x(msh%ne) - tol) cycle
+                if (abs(msh%x(nearest_node(msh, x)) - x) > tol) loads_on_nodes = .false.
+            end associate
+        end do
+    end function loads_on_nodes
 
     !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading).
     pure function load_positions(m) result(x)

@@ -11,7 +11,7 @@
 !! each edge, where the plate/beam model itself starts to hold.
 module design_summary
     use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, total_vertical_load, friction_compliance
+    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, total_vertical_load, friction_compliance
     use contact_solver, only: solution_t
     use interface_law, only: STATE_LIFTOFF, admissible_excess
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q, Q_SLIP
@@ -48,6 +48,8 @@ module design_summary
         real(dp) :: edge_distance = 0.0_dp            !! h [L]
         real(dp) :: edge_pressure(2) = 0.0_dp         !! at h from the left end / the rim [F/L^2]
         logical :: edge_in_contact(2) = .false.
+        real(dp) :: centre_pressure = 0.0_dp          !! at x = 0 (plate: the axis) [F/L^2]
+        logical :: centre_defined = .false.           !! x = 0 on the base, no concentrated load
         type(located_t) :: m_sag, m_hog               !! beam M, plate M_r [F L or F L / L]
         type(located_t) :: mt_sag, mt_hog             !! plate M_theta
         type(located_t) :: q_abs_max                  !! largest |Q| (signed value) [F or F/L]
@@ -157,7 +159,31 @@ contains
                 s%edge_in_contact(1) = tab%state(1) /= STATE_LIFTOFF
             end if
         end if
+        call centre_value(m, tab, width, s)
     end subroutine contact_values
+
+    !> The pressure at the centre x = 0 (the plate's axis, the middle of a beam), under the
+    !! load of most footings. Not defined when x = 0 is off the base, or when a concentrated
+    !! load (beam POINT or MOMENT, plate RING at r = 0) acts there: the Mindlin plate's or
+    !! beam's pressure is singular under it (1/r, log), and no mesh converges to a value.
+    pure subroutine centre_value(m, tab, width, s)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: width              !! line load -> pressure
+        type(summary_t), intent(inout) :: s
+        real(dp) :: x0, x1, tol
+        integer :: k
+        x0 = tab%val(Q_X, 1)
+        x1 = tab%val(Q_X, tab%n)
+        tol = 1.0e-9_dp*(x1 - x0)
+        s%centre_defined = x0 <= tol .and. x1 >= -tol
+        do k = 1, size(m%loads)
+            if (m%loads(k)%kind /= LOAD_PATCH .and. abs(m%loads(k)%x1) <= tol) &
+                s%centre_defined = .false.
+        end do
+        s%centre_pressure = 0.0_dp
+        if (s%centre_defined) s%centre_pressure = interpolate(tab, tab%val(Q_SZ, :), 0.0_dp)/width
+    end subroutine centre_value
 
     !> Maximal runs of equal contact status; boundaries midway between differing stations.
     pure function contact_intervals(tab) result(iv)

@@ -80,6 +80,9 @@ contains
                     choose(beam, 'pressure at d from the right end', 'pressure at d from the rim'), &
                     k%u_pressure, s%edge_pressure(2)*k%pressure, &
                     s%edge_in_contact(2))]
+        e = [e, ent('pressure_centre', choose(beam, 'pressure at the centre x = 0', &
+                    'pressure at the centre r = 0'), k%u_pressure, s%centre_pressure*k%pressure, &
+                    s%centre_defined)]
         e = [e, moment_entries(m, s, k), &
              ent('shear_force_max', choose(beam, 'max |Q| (signed)', 'max |Q_r| (signed)'), &
                  k%u_shear, s%q_abs_max%value*k%shear), &
