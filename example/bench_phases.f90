@@ -17,6 +17,7 @@
 !! the whole solve_contact is also timed in the same repetition and its answer compared with
 !! the replica's. No source under src/ is instrumented.
 program bench_phases
+    use deck_fields, only: int_text
     use iso_fortran_env, only: output_unit, compiler_version, compiler_options
     use kinds, only: dp
     use errors, only: error_t
@@ -24,10 +25,10 @@ program bench_phases
     use model, only: model_t, METHOD_NEWTON
     use deck_reader, only: deck_t, read_deck, case_model
     use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact, check_load_admissible, nested_prediction
+    use contact_solver, only: solution_t, solve_contact, check_load_admissible, nested_prediction, &
+                              classify_complete
     use contact_system, only: system_t, build_system, contact_points, point_tractions, &
                               use_rigid_coordinates, set_terms_t, set_terms
-    use interface_law, only: friction_threshold, contact_state, is_slipping, in_tension
     use rigid_body, only: to_absolute
     use newton_method, only: solve_newton
     use solution_checks, only: final_checks
@@ -283,23 +284,12 @@ contains
         t_newton = now() - t0
         if (allocated(err)) error stop 'bench_phases: the Newton solve failed'
         t0 = now()
-        call classify(m, sol)
+        call classify_complete(m, sol)
         call final_checks(m, d, sys, sol, err)
         sol%z = to_absolute(sys%rigid, sol%z)
         t_checks = now() - t0
         if (allocated(err)) error stop 'bench_phases: the final checks failed'
     end subroutine time_solve
-
-    !> contact_solver's classify_complete (private there): tractions, threshold, sets.
-    subroutine classify(m, sol)
-        type(model_t), intent(in) :: m
-        type(solution_t), intent(inout) :: sol
-        sol%sigma = point_tractions(sol%pts, sol%z)
-        sol%tau0 = friction_threshold(m%f, sol%sigma(2, :))
-        sol%state = contact_state(sol%sigma(1, :), sol%sigma(2, :), sol%tau0)
-        sol%slip = is_slipping(sol%sigma(1, :), sol%tau0)
-        sol%tension = in_tension(sol%sigma(2, :))
-    end subroutine classify
 
     !> Two parts of the Newton iterations timed again on their own (they are inside
     !! solve_newton, which has no hook): the Schur set-up (banded Cholesky of K_ii, S0 on the
@@ -451,7 +441,7 @@ contains
         call put(u, '# Time per phase against N_e (bench_phases)')
         call put(u, '')
         call put(u, 'Run started '//trim(start_time)//'. Machine: '//cpu_model()// &
-                 '; logical CPUs (/proc/cpuinfo): '//itoa(cpu_count())//'.')
+                 '; logical CPUs (/proc/cpuinfo): '//int_text(cpu_count())//'.')
         call put(u, 'Load average (/proc/loadavg: 1, 5, 15 min) before: '//trim(load_start)// &
                  '; after: '//trim(load_end)//'.')
         call put(u, 'Compiler: '//compiler_version()//'; options: '//compiler_options())
@@ -476,7 +466,7 @@ contains
         call put(u, '## '//trim(case_title(k))//' ('//trim(decks(k))//', N_e changed)')
         call put(u, '')
         call put(u, '| phase |'//join_ne(r%ne, ' ms |')//' fitted p | fitted on N_e | local p | '// &
-                 'p, all meshes | expected p | share at N_e = '//itoa(r%ne(nm))//' |')
+                 'p, all meshes | expected p | share at N_e = '//int_text(r%ne(nm))//' |')
         call put(u, '|---|'//repeat('---:|', nm)//'---:|---|---:|---:|---|---:|')
         do ip = 1, n_phase
             call put(u, phase_row(phase_name(ip), r%t(ip, :), r%ne, expected(ip), &
@@ -524,8 +514,8 @@ contains
         real(dp) :: replica
         replica = sum(r%t(P_DISC:P_CHECKS, i))
         write (buf, '(es9.1)') r%z_diff(i)
-        line = '| '//itoa(r%ne(i))//' | '//itoa(r%n(i))//' | '//itoa(r%nr(i))//' | '// &
-               itoa(r%reps(i))//' | '//itoa(r%solves(i))//' | '//itoa(r%factorisations(i))// &
+        line = '| '//int_text(r%ne(i))//' | '//int_text(r%n(i))//' | '//int_text(r%nr(i))//' | '// &
+               int_text(r%reps(i))//' | '//int_text(r%solves(i))//' | '//int_text(r%factorisations(i))// &
                ' | '//ms(r%info(I_SCHUR_SETUP, i))//' | '//ms(r%info(I_SCHUR_FACT, i))//' | '// &
                ms(r%info(I_WHOLE, i))//' | '//ms(replica)//' | '//trim(adjustl(buf))//' |'
     end function count_row
@@ -636,7 +626,7 @@ contains
         write (u, '(a)') "set multiplot title 'fricon: processor time per phase against "// &
             "N_e (P1, least of repetitions, 1 thread)' font 'Sans,14'"
         write (u, '(a)') 'set logscale xy; set grid; set format y "%.0e"'
-        write (u, '(a)') 'set xrange [15:'//itoa(nint(1.3*ne_max))//']; set yrange [1e-6:30]'
+        write (u, '(a)') 'set xrange [15:'//int_text(nint(1.3*ne_max))//']; set yrange [1e-6:30]'
         write (u, '(a)') "set xtics (20, 50, 100, 200, 500, 1000, 2000)"
         write (u, '(a)') "set xlabel 'N_e (elements; n = 5 N_e + 5 unknowns)'"
         write (u, '(a)') "set ylabel 'processor time [s]'"
@@ -650,12 +640,12 @@ contains
             write (u, '(a)', advance='no') 'plot '
             do ip = 1, n_phase
                 write (u, '(a)', advance='no') "'"//out_dir//"/phases.dat' index "// &
-                    itoa(k - 1)//' using 1:'//itoa(ip + 1)//" with linespoints lw 2 pt "// &
-                    itoa(ip + 3)//" lc rgb '"//colour(ip)//"' title '"// &
+                    int_text(k - 1)//' using 1:'//int_text(ip + 1)//" with linespoints lw 2 pt "// &
+                    int_text(ip + 3)//" lc rgb '"//colour(ip)//"' title '"// &
                     trim(phase_name(ip))//"', "
             end do
-            write (u, '(a)') "'"//out_dir//"/phases.dat' index "//itoa(k - 1)//' using 1:'// &
-                itoa(n_phase + 2)//" with linespoints lw 3 pt 7 lc rgb 'black' title 'total', "// &
+            write (u, '(a)') "'"//out_dir//"/phases.dat' index "//int_text(k - 1)//' using 1:'// &
+                int_text(n_phase + 2)//" with linespoints lw 3 pt 7 lc rgb 'black' title 'total', "// &
                 "1e-3 with lines dt 2 lc rgb 'gray40' title '1 ms (fit floor)'"
         end do
         write (u, '(a)') 'unset multiplot'
@@ -703,12 +693,12 @@ contains
         first = findloc(used, .true., dim=1)
         last = findloc(used, .true., dim=1, back=.true.)
         if (all(used(first:last))) then
-            text = itoa(ne(first))//'-'//itoa(ne(last))
+            text = int_text(ne(first))//'-'//int_text(ne(last))
             return
         end if
         text = ''
         do i = 1, size(ne)
-            if (used(i)) text = text//','//itoa(ne(i))
+            if (used(i)) text = text//','//int_text(ne(i))
         end do
         text = text(2:)
     end function used_list
@@ -720,17 +710,10 @@ contains
         integer :: i
         text = ''
         do i = 1, size(ne)
-            text = text//' N_e '//itoa(ne(i))//suffix
+            text = text//' N_e '//int_text(ne(i))//suffix
         end do
     end function join_ne
 
-    pure function itoa(i) result(text)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        text = trim(buf)
-    end function itoa
 
     !> A line to the file and to standard output.
     subroutine put(u, line)

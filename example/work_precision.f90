@@ -13,6 +13,7 @@
 !! Writes OUTDIR/work_precision_{plate,beam}.txt and .png (gnuplot: log error against log time,
 !! one curve per discretisation, one panel per quantity).
 program work_precision
+    use deck_fields, only: int_text
     use iso_fortran_env, only: int64, output_unit
     use kinds, only: dp
     use errors, only: error_t
@@ -356,14 +357,14 @@ contains
         write (u, '(a)') "names = '"//join(disc_names)//"'"
         do i = 1, n_q
             write (u, '(a,i0,a)') "set title 'error of "//trim(q_names(i))//"'; plot for [k=0:", &
-                n_disc - 1, "] '"//stem//".txt' index k u 4:(($"//itoa(4 + i)// &
-                ">0)?$"//itoa(4 + i)//":1/0) w lp pt 7 lw 2 t word(names, k+1)"
+                n_disc - 1, "] '"//stem//".txt' index k u 4:(($"//int_text(4 + i)// &
+                ">0)?$"//int_text(4 + i)//":1/0) w lp pt 7 lw 2 t word(names, k+1)"
         end do
         write (u, '(a)') "unset logscale x; set logscale x; set xlabel 'unknowns'"
-        write (u, '(a)') "set title 'error of W(0) against unknowns'; plot for [k=0:"//itoa(n_disc - 1)// &
+        write (u, '(a)') "set title 'error of W(0) against unknowns'; plot for [k=0:"//int_text(n_disc - 1)// &
             "] '"//stem//".txt' index k u 3:(($5>0)?$5:1/0) w lp pt 7 lw 2 t word(names, k+1)"
         write (u, '(a)') "set title 'error of Sigma_z(0) against unknowns'; plot for [k=0:"// &
-            itoa(n_disc - 1)//"] '"//stem//".txt' index k u 3:(($6>0)?$6:1/0) w lp pt 7 lw 2 "// &
+            int_text(n_disc - 1)//"] '"//stem//".txt' index k u 3:(($6>0)?$6:1/0) w lp pt 7 lw 2 "// &
             "t word(names, k+1)"
         write (u, '(a)') 'unset multiplot'
         close (u)
@@ -380,11 +381,4 @@ contains
         end do
     end function join
 
-    pure function itoa(i) result(text)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        text = trim(buf)
-    end function itoa
 end program work_precision

@@ -2,6 +2,7 @@
 !! and what was expected), defaults, case-insensitivity, comments, E-notation, SWEEP expansion,
 !! NONDIM completion, the example decks under input/, and fuzzing with odd lines.
 module test_deck_reader
+    use deck_fields, only: int_text
     use iso_fortran_env, only: int64
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
@@ -244,7 +245,7 @@ contains
         if (allocated(err)) return
         do i = 1, size(lines)
             call check(err, deck%lines(i) == lines(i), 'input/default.dat differs at line '// &
-                       itoa(i)//': "'//trim(deck%lines(i))//'"')
+                       int_text(i)//': "'//trim(deck%lines(i))//'"')
             if (allocated(err)) return
         end do
         call check(err, deck%stem == 'default', 'stem of input/default.dat')
@@ -520,12 +521,12 @@ contains
         cases: do i = 1, 6
             call case_model(deck, i, m, label, err)
             if (allocated(err)) return
-            call check(err, label == trim(expected(i)), 'label of case '//itoa(i)//': '//label)
+            call check(err, label == trim(expected(i)), 'label of case '//int_text(i)//': '//label)
             if (allocated(err)) return
             call check_close(err, relative_stiffness(m), rho(1 + (i - 1)/size(f)), 1.0e-13_dp, &
-                             0.0_dp, 'rho of case '//itoa(i))
+                             0.0_dp, 'rho of case '//int_text(i))
             if (allocated(err)) return
-            call check_close(err, m%f, f(mod(i - 1, 2) + 1), 0.0_dp, 0.0_dp, 'f of case '//itoa(i))
+            call check_close(err, m%f, f(mod(i - 1, 2) + 1), 0.0_dp, 0.0_dp, 'f of case '//int_text(i))
             if (allocated(err)) return
         end do cases
         call case_model(deck, 7, m, label, cerr)
@@ -1259,11 +1260,11 @@ contains
         lines: do k = 1, size(odd)
             call parse_deck(bad, [base(1:6), odd(k), base(7)], deck, perr)
             if (k == 22 .or. k == 26) cycle lines   ! valid: TITLE, comment
-            call check(err, allocated(perr), 'odd line '//itoa(k)//' accepted: '// &
+            call check(err, allocated(perr), 'odd line '//int_text(k)//' accepted: '// &
                        trim(odd(k)(1:80)))
             if (allocated(err)) return
             call check(err, perr%code == EXIT_INPUT .and. index(perr%message, bad//':') > 0, &
-                       'odd line '//itoa(k)//': no deck-named input error')
+                       'odd line '//int_text(k)//': no deck-named input error')
             if (allocated(err)) return
         end do lines
         call parse_deck(bad, [base(1:6), repeat(' ', w), base(7)], deck, perr)
@@ -1319,11 +1320,4 @@ contains
         next_int = mod(seed, n) + 1
     end function next_int
 
-    pure function itoa(i) result(text)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        text = trim(buf)
-    end function itoa
 end module test_deck_reader

@@ -1,6 +1,7 @@
 !> Reports and files: data columns read back numerically, nothing written on input errors,
 !! a failed analysis leaves only its report (under a banner), atomic writes leave no .tmp.
 module test_report_writer
+    use deck_fields, only: int_text
     use iso_fortran_env, only: output_unit, error_unit
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
@@ -291,12 +292,7 @@ contains
         end do lines_loop
         close (u)
         call check(err, ios /= 0 .and. n == size(lines), path//' differs from the embedded '// &
-                   'template at line '//trim(itoa(n))//': run scripts/embed_templates.sh')
+                   'template at line '//trim(int_text(n))//': run scripts/embed_templates.sh')
     end subroutine compare_file
 
-    pure function itoa(i) result(text)
-        integer, intent(in) :: i
-        character(len=12) :: text
-        write (text, '(i0)') i
-    end function itoa
 end module test_report_writer

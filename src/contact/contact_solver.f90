@@ -45,6 +45,7 @@ module contact_solver
     public :: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
     public :: contact_points_t, iteration_record_t, solution_t, coarse_solution_t
     public :: solve_contact, check_load_admissible, contact_points, nested_prediction
+    public :: classify_complete
 
     integer, parameter :: nested_from = 48   !! larger meshes start from the nested coarser one
 

@@ -1,5 +1,6 @@
 !> The tabulated report, the whitespace data file and the gnuplot script of one case (SPEC §9).
 module report_writer
+    use deck_fields, only: int_text
     use kinds, only: dp, pi
     use errors, only: error_t
     use atomic_files, only: open_temporary, commit_file
@@ -440,7 +441,7 @@ contains
                      pressure_scale(m, cols)
         end if
         write (u, '(a)') "model = '"//trim(merge('BEAM ', 'PLATE', beam))//"'"
-        write (u, '(a)') 'csv = '//itoa(merge(1, 0, phys))
+        write (u, '(a)') 'csv = '//int_text(merge(1, 0, phys))
         write (u, '(a)') '# columns of the data file (station column table)'
         call put_col('c_x', pick('x', 'r', 't'))
         call put_col('c_w', pick('w', 'w', 'W'))
@@ -563,7 +564,7 @@ contains
             integer :: i
             i = 0
             if (len(key) > 0) i = column_index(cols, key)
-            write (u, '(a)') name//' = '//itoa(i)
+            write (u, '(a)') name//' = '//int_text(i)
         end subroutine put_col
 
         subroutine put_text(name, text)
@@ -592,9 +593,9 @@ contains
         write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
         n = 0
         if (allocated(m%loads)) n = size(m%loads)
-        write (u, '(a)') 'n_loads = '//itoa(n)
+        write (u, '(a)') 'n_loads = '//int_text(n)
         if (n == 0) return
-        write (u, '(a)', advance='no') 'array load_kind['//itoa(n)//'] = ['
+        write (u, '(a)', advance='no') 'array load_kind['//int_text(n)//'] = ['
         do k = 1, n
             select case (m%loads(k)%kind)
             case (LOAD_PATCH)
@@ -609,12 +610,12 @@ contains
             write (u, '(a)', advance='no') "'"//kind_letter//"'"//after(k)
         end do
         write (u, '(a)') ''
-        write (u, '(a)', advance='no') 'array load_x1['//itoa(n)//'] = ['
+        write (u, '(a)', advance='no') 'array load_x1['//int_text(n)//'] = ['
         do k = 1, n
             write (u, '(a)', advance='no') num(m%loads(k)%x1*xs)//after(k)
         end do
         write (u, '(a)') ''
-        write (u, '(a)', advance='no') 'array load_x2['//itoa(n)//'] = ['
+        write (u, '(a)', advance='no') 'array load_x2['//int_text(n)//'] = ['
         do k = 1, n
             write (u, '(a)', advance='no') num(merge(m%loads(k)%x2, m%loads(k)%x1, &
                 m%loads(k)%kind == LOAD_PATCH)*xs)//after(k)
@@ -962,8 +963,8 @@ contains
             s%admissibility, '  (tolerance ', s%admissibility_tol, &
             merge(': ok)      ', ': EXCEEDED)', s%admissibility <= s%admissibility_tol)
         write (u, '(3x,a,i0,a)') 'state counts at the stations: ', count(tab%state == STATE_STICK), &
-            ' stick, '//itoa(count(tab%state == STATE_SLIP))//' slip, '// &
-            itoa(count(tab%state == STATE_LIFTOFF))//' lift-off'
+            ' stick, '//int_text(count(tab%state == STATE_SLIP))//' slip, '// &
+            int_text(count(tab%state == STATE_LIFTOFF))//' lift-off'
     end subroutine write_checks
 
     !> Sigma = l sigma / F (beam) or pi a^2 sigma / F (plate).
@@ -982,11 +983,4 @@ contains
         rel_diff = abs(a - b)/max(abs(scale), tiny(1.0_dp))
     end function rel_diff
 
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
-    end function itoa
 end module report_writer
