@@ -205,7 +205,8 @@ contains
         type(system_t), intent(in) :: sys
         type(schur_t), intent(inout) :: sc
         real(dp), allocatable :: w(:, :), col(:)
-        integer :: j1, j2, j, k, info
+        type(error_t), allocatable :: err
+        integer :: j1, j2, j, k
         allocate (w(sc%ni, block_columns), sc%s0(sc%nk*(sc%nk + 1)/2))
         blocks: do j1 = 1, sc%nk, block_columns
             j2 = min(sc%nk, j1 + block_columns - 1)
@@ -215,8 +216,8 @@ contains
                 sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%nk, j)) = &
                     col(sc%kept(j:))
             end do
-            call dpbtrs('L', sc%ni, sc%kd, j2 - j1 + 1, sc%kband, sc%kd + 1, w, sc%ni, info)
-            if (info /= 0) then      ! an illegal argument: keep the dense path
+            call inner_solve(sc, w(:, 1:j2 - j1 + 1), err)
+            if (allocated(err)) then      ! an illegal argument: keep the dense path
                 sc%ready = .false.
                 return
             end if
@@ -523,12 +524,8 @@ contains
         integer :: k, info
         character(len=80) :: text
         y = reshape(b(sc%inner), [sc%ni, 1])
-        call dpbtrs('L', sc%ni, sc%kd, 1, sc%kband, sc%kd + 1, y, sc%ni, info)
-        if (info /= 0) then
-            write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
-            call new_error(err, EXIT_INTERNAL, trim(text))
-            return
-        end if
+        call inner_solve(sc, y, err)
+        if (allocated(err)) return
         g = reshape(b(sc%kept), [sc%nk, 1])
         do k = 1, size(sc%c_val)
             g(sc%c_col(k), 1) = g(sc%c_col(k), 1) - sc%c_val(k)*y(sc%c_row(k), 1)
@@ -549,16 +546,25 @@ contains
         do k = 1, size(sc%c_val)
             y(sc%c_row(k), 1) = y(sc%c_row(k), 1) - sc%c_val(k)*g(sc%c_col(k), 1)
         end do
-        call dpbtrs('L', sc%ni, sc%kd, 1, sc%kband, sc%kd + 1, y, sc%ni, info)
-        if (info /= 0) then
-            write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
-            call new_error(err, EXIT_INTERNAL, trim(text))
-            return
-        end if
+        call inner_solve(sc, y, err)
+        if (allocated(err)) return
         x = b
         x(sc%inner) = y(:, 1)
         x(sc%kept) = g(:, 1)
     end subroutine apply_inverse
+
+    !> y <- K_ii^-1 y by the banded Cholesky factor (dpbtrs; info /= 0 is an illegal argument).
+    subroutine inner_solve(sc, y, err)
+        type(schur_t), intent(in) :: sc
+        real(dp), intent(inout) :: y(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: info
+        character(len=80) :: text
+        call dpbtrs('L', sc%ni, sc%kd, size(y, 2), sc%kband, sc%kd + 1, y, sc%ni, info)
+        if (info == 0) return
+        write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
+        call new_error(err, EXIT_INTERNAL, trim(text))
+    end subroutine inner_solve
 
     !> J x: A0 x with the fixed unknowns' rows and columns replaced by the identity, plus
     !! the set terms.
