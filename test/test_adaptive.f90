@@ -162,27 +162,34 @@ contains
                                                           0.5_dp*(1.0_dp + 8.9e-5_dp)])
     end subroutine test_frictionless_punch
 
-    !> Bonded punch: tol reached, W(0) within tol of the closed form. Its W(0) estimate is
-    !! not compared: the true error is at the level where the plate's own bending and the
-    !! oscillating bonded singularity at the rim (unresolvable, test_convergence) are not
-    !! separable from the discretisation error, which alone the estimate sees (measured:
-    !! 1.31e-4 against 1.19e-4 on the 112 elements of today's adaptation, but 1.3e-4 against
-    !! 8.5e-4 on the 29 elements of an earlier one; doc/OUTPUT.md, "On an adapted mesh").
+    !> Bonded punch: tol reached, W(0) within tol of the closed form, and the estimates of W(0)
+    !! and of the centre pressure bound their discretisation errors within about 3x. The
+    !! closed form is that of a rigid punch; the discretisation error is measured against the
+    !! converged values of this flexible plate: Richardson from uniform P1 meshes of N_e = 160,
+    !! 320, 640, 1280 (fricon, f = 1e3, eps_bar = 1e-6), whose differences halve (observed
+    !! orders 0.999 and 1.000 for W(0), 1.007 and 1.004 for the centre pressure):
+    !! W(0) = 232.649780, 232.611035, 232.591644, 232.581946 -> 232.57224 (order-1 and
+    !! observed-order extrapolations agree to 5e-8 relative), 1.45e-5 above the rigid
+    !! 250/c = 232.56888; centre pressure 0.5585720, 0.5583838, 0.5582902, 0.5582435 ->
+    !! 0.558197 (to 1e-6 relative). The bonded punch has no closed-form centre pressure
+    !! (its rim singularity oscillates), so only its discretisation error is checked.
     subroutine test_bonded_punch(err)
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: c
         c = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
-        call punch_case(1.0e3_dp, 250.0_dp/c, err, bound=.false.)
+        call punch_case(1.0e3_dp, 250.0_dp/c, err, converged=[232.57224_dp, 0.558197_dp], &
+                        centre_exact=.false.)
     end subroutine test_bonded_punch
 
-    subroutine punch_case(f, exact, err, bound, converged)
+    subroutine punch_case(f, exact, err, converged, centre_exact)
         real(dp), intent(in) :: f, exact
         type(error_t), allocatable, intent(out) :: err
-        logical, intent(in), optional :: bound    !! check estimate against true error (default)
         real(dp), intent(in), optional :: converged(2)  !! the model's W(0), centre pressure
+        logical, intent(in), optional :: centre_exact   !! the centre pressure is 1/2 (default)
         type(adaptation_t) :: info
         real(dp) :: est, true_err, discretisation
         integer :: n
+        logical :: closed_form
         character(len=200) :: text
         real(dp), parameter :: tol = 1.0e-2_dp
         call adapt(punch(f, tol, 400), info, est, true_err, exact, err)
@@ -197,9 +204,6 @@ contains
         if (allocated(err)) return
         call check(err, true_err <= tol, 'true error above tol: '//text)
         if (allocated(err)) return
-        if (present(bound)) then
-            if (.not. bound) return
-        end if
         if (.not. present(converged)) return
         ! cycles far from tol skip the two estimate solves (-1 in the history), the final
         ! mesh always carries its estimate
@@ -217,10 +221,14 @@ contains
         if (allocated(err)) return
         ! the pressure at the centre of the frictionless punch: F/(2 pi a^2) (Boussinesq
         ! 1885; Johnson 1985 eq. 3.35 at r = 0), nondimensional pi a^2 sigma/F = 1/2
-        call key_errors(info, 'pressure_centre', 0.5_dp, est, true_err)
+        closed_form = .true.
+        if (present(centre_exact)) closed_form = centre_exact
+        true_err = 0.0_dp
+        if (closed_form) call key_errors(info, 'pressure_centre', 0.5_dp, est, true_err)
         call key_errors(info, 'pressure_centre', converged(2), est, discretisation)
         write (text, '(a,es9.2,a,es9.2,a,es9.2)') 'pressure_centre: estimate ', est, &
             ', discretisation error ', discretisation, ', error against 1/2 ', true_err
+        if (.not. closed_form) text = text(:index(text, ', error against') - 1)
         write (*, '(4x,a)') trim(text)
         ! measured 1.1 (3.7 when a fifth, not 0.4, of the elements was cut per cycle):
         ! credited with the formal order 1 (error_estimate), the estimate is conservative
