@@ -917,7 +917,8 @@ contains
 
     !> Issue 9's plausible slips: FRICTION 30.0 (an angle: tan 30 degrees = 0.577), E in GPa
     !! with E_f in MPa (30 and 30: E/E_f = 1), a settlement beyond the thickness (0.6 m on a
-    !! 0.5 m beam): warnings, and none for the sound example deck.
+    !! 0.5 m beam): warnings, and none for the sound example deck; f = 1000 (no angle) is named
+    !! a bonded base.
     subroutine test_plausibility(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
@@ -942,6 +943,17 @@ contains
         if (allocated(err)) return
         warn = settlement_warnings(deck%base, 0.6_dp)
         call check(err, size(warn) == 1, 'a settlement of 0.6 m on a 0.5 m beam: no warning')
+        if (allocated(err)) return
+        ! f = 1000 is no angle (tan of 1000 degrees means nothing): a bonded base is named
+        lines = beam_physical()
+        lines(5) = card('FRICTION', '1000.0')
+        call parse_ok('t.dat', lines, deck, err)
+        if (allocated(err)) return
+        warn = input_warnings(deck%base)
+        call check(err, size(warn) == 1, 'f = 1000: expected one warning')
+        if (allocated(err)) return
+        call check(err, index(warn(1), 'bonded') > 0 .and. index(warn(1), 'degrees') == 0, &
+                   'warning text: '//trim(warn(1)))
     end subroutine test_plausibility
 
     !> The decks the fuzzing campaign kept (test/data/fuzz, fuzz/CAMPAIGN.md) are valid decks

@@ -28,10 +28,15 @@ contains
         character(len=warning_length) :: text
         real(dp) :: ratio
         allocate (w(0))
-        if (m%f > f_max) then
+        if (m%f > f_max .and. m%f < 90.0_dp) then
             write (text, '(a,g0.3,a,g0.3,a)') 'FRICTION f = ', m%f, ' is large: f is a '// &
                 'coefficient, tan(phi) (an angle of ', m%f, ' degrees would be f = '// &
                 trim(degrees_to_coefficient(m%f))//')'
+            w = [character(len=warning_length) :: w, text]
+        else if (m%f >= 90.0_dp) then
+            ! no angle is meant: such an f makes the interface bonded (stick everywhere)
+            write (text, '(a,es9.2,a)') 'FRICTION f = ', m%f, ' is large: the interface '// &
+                'sticks wherever it is in contact (a bonded base)'
             w = [character(len=warning_length) :: w, text]
         end if
         if (m%nondim .or. m%e_f <= 0.0_dp) return
