@@ -427,11 +427,15 @@ contains
     subroutine require_admissible(s, err)
         type(summary_t), intent(in) :: s
         type(error_t), allocatable, intent(out) :: err
-        character(len=240) :: text
+        character(len=400) :: text
         if (s%admissibility <= s%admissibility_tol) return
+        ! the solver holds the law in the Galerkin sense (its residual is checked before); a
+        ! pointwise excess beyond the allowance is then a mesh too coarse for the slip
+        ! (doc/CHOICES.md, very soft beams at eps_bar = 1e-12)
         write (text, '(a,es10.3,a,es10.3,a)') 'the friction admissibility check failed: max(|Sigma_x| '// &
             '- f Sigma_z) = ', s%admissibility, ' exceeds the ', s%admissibility_tol, &
-            ' the regularised law allows at the largest slip: no solution'
+            ' the regularised law allows at the largest slip: no solution (the law holds '// &
+            'on average over each traction function, not at every point: refine the mesh)'
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine require_admissible
 
