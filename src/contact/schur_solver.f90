@@ -85,9 +85,6 @@ contains
         integer :: i
         allocate (sc%fixed(d%n))
         sc%fixed = .false.
-        ! the node ordering needs the displacement bases to number the displacement unknowns
-        ! one to one; a reduced model (model_reduction: half a beam) numbers fewer: dense path
-        if (sum(d%basis(FIELD_U:FIELD_PSI)%n_dof) /= d%nv) return
         sc%fixed(d%fixed) = .true.
         pinned = sys%rigid%pinned
         if (any(sc%fixed(pinned))) return
@@ -108,23 +105,26 @@ contains
 
     !> The free, unpinned displacement unknowns node by node: the fields u_s, w, psi merged
     !! by relative position in their own numbering (each field's coefficients are ordered
-    !! along the mesh), which makes K_ii banded.
+    !! along the mesh), which makes K_ii banded. A field's unknowns are counted from the
+    !! offsets, not its basis: a reduced model (model_reduction: half a beam) numbers only
+    !! the right half's coefficients, still in mesh order.
     pure function inner_order(d, fixed, pinned) result(order)
         type(discretization_t), intent(in) :: d
         logical, intent(in) :: fixed(:)
         integer, intent(in) :: pinned(:)
         integer, allocatable :: order(:)
-        integer :: next(FIELD_U:FIELD_PSI), f, pick, k
+        integer :: next(FIELD_U:FIELD_PSI), n_field(FIELD_U:FIELD_PSI), f, pick, k
         real(dp) :: key, best
         allocate (order(d%nv))
+        n_field = d%offset(FIELD_U + 1:FIELD_PSI + 1) - d%offset(FIELD_U:FIELD_PSI)
         next = 1
         k = 0
         merge_fields: do
             pick = 0
             best = huge(1.0_dp)
             do f = FIELD_U, FIELD_PSI
-                if (next(f) > d%basis(f)%n_dof) cycle
-                key = real(next(f) - 1, dp)/real(max(d%basis(f)%n_dof - 1, 1), dp)
+                if (next(f) > n_field(f)) cycle
+                key = real(next(f) - 1, dp)/real(max(n_field(f) - 1, 1), dp)
                 if (key < best) then
                     best = key
                     pick = f
