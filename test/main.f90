@@ -19,13 +19,15 @@ program tester
     use test_malformed_decks, only: collect_malformed_decks
     use test_simplifications, only: collect_simplifications
     use test_adaptive, only: collect_adaptive
+    use test_nested_spaces, only: collect_nested_spaces
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
     integer :: n_pass, n_fail
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
-        'design_values paper malformed_decks newton properties simplifications adaptive '
+        'design_values paper malformed_decks newton properties simplifications adaptive '// &
+        'nested_spaces '
 
     want_suite = ''
     want_test = ''
@@ -55,6 +57,10 @@ program tester
     if (wanted('halfspace_beam')) then
         call collect_halfspace_beam(tests)
         call run_suite('halfspace_beam', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('nested_spaces')) then
+        call collect_nested_spaces(tests)
+        call run_suite('nested_spaces', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('structure')) then
         call collect_structure(tests)

@@ -1,0 +1,107 @@
+!> Nested spaces (src/fe/nested_spaces.f90): the Galerkin restriction P^T T_f P of the fine
+!! half-space flexibility equals the flexibility assembled directly on the nested coarse mesh.
+!! The reference is that direct assembly (galerkin_assembly, itself checked entry by entry
+!! against independent nested quadrature and the closed forms in test_halfspace_plate and
+!! test_halfspace_beam); the two agree to round-off because every coarse traction function is
+!! a combination of fine ones, so both compute the same integrals.
+module test_nested_spaces
+    use kinds, only: dp
+    use harness, only: unittest_t, new_unittest, error_t, check
+    use model, only: model_t, load_t, MODEL_PLATE, MODEL_BEAM, LOAD_POINT, FIELD_SX, FIELD_SZ, &
+                     complete_model
+    use discretization, only: discretization_t, new_discretization, discretise_mesh, &
+                              load_positions
+    use mesh, only: mesh_t
+    use mesh_refinement, only: coarsened, pinned_nodes
+    use halfspace_operator, only: assemble_flexibility
+    use nested_spaces, only: restricted_tractions
+    use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2, interp_name
+    implicit none
+    private
+    public :: collect_nested_spaces
+
+contains
+
+    subroutine collect_nested_spaces(tests)
+        type(unittest_t), allocatable, intent(out) :: tests(:)
+        tests = [new_unittest('restricted_t_equals_assembled_plate', test_plate), &
+                 new_unittest('restricted_t_equals_assembled_beam', test_beam)]
+    end subroutine collect_nested_spaces
+
+    !> Plate: P1, P2, S2 tractions on uniform and edge-graded meshes, a load off the nodes of
+    !! the coarse mesh pinned (so coarse elements of one and of two fine elements mix).
+    subroutine test_plate(err)
+        type(error_t), allocatable, intent(out) :: err
+        call each_basis(MODEL_PLATE, err)
+    end subroutine test_plate
+
+    !> Beam (b/l = 0.05): the same bases and meshes.
+    subroutine test_beam(err)
+        type(error_t), allocatable, intent(out) :: err
+        call each_basis(MODEL_BEAM, err)
+    end subroutine test_beam
+
+    subroutine each_basis(kind, err)
+        integer, intent(in) :: kind
+        type(error_t), allocatable, intent(out) :: err
+        integer, parameter :: families(3) = [INTERP_P1, INTERP_P2, INTERP_S2]
+        character(len=*), parameter :: gradings(2) = [character(len=8) :: 'UNIFORM', 'EDGES']
+        integer :: i, g
+        do g = 1, size(gradings)
+            do i = 1, size(families)
+                call compare(case_model(kind, families(i), gradings(g)), err)
+                if (allocated(err)) return
+            end do
+        end do
+    end subroutine each_basis
+
+    function case_model(kind, family, grading) result(m)
+        integer, intent(in) :: kind, family
+        character(len=*), intent(in) :: grading
+        type(model_t) :: m
+        m%kind = kind
+        m%nondim = .true.
+        m%rho_in = 0.01_dp
+        m%zeta_in = 0.1_dp
+        m%beta_in = 0.05_dp
+        m%nu_f = 0.1_dp
+        m%ne = 41
+        m%grading = grading
+        m%interp(FIELD_SX) = family
+        m%interp(FIELD_SZ) = family
+        if (kind == MODEL_PLATE) then
+            m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+        else
+            m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.137_dp)]
+        end if
+        call complete_model(m)
+    end function case_model
+
+    subroutine compare(m, err)
+        type(model_t), intent(in) :: m
+        type(error_t), allocatable, intent(out) :: err
+        type(discretization_t) :: d, dc
+        type(mesh_t) :: coarse
+        logical, allocatable :: pinned_c(:)
+        real(dp), allocatable :: t_f(:, :), t_direct(:, :), t_c(:, :)
+        type(error_t), allocatable :: run_err
+        real(dp) :: diff
+        character(len=160) :: text
+        call new_discretization(m, d, run_err)
+        if (.not. allocated(run_err)) call assemble_flexibility(m, d, t_f, run_err)
+        if (.not. allocated(run_err)) then
+            call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m)), coarse, pinned_c)
+            call discretise_mesh(m, coarse, dc)
+            call assemble_flexibility(m, dc, t_direct, run_err)
+        end if
+        if (.not. allocated(run_err)) call restricted_tractions(t_f, d, dc, t_c, run_err)
+        call check(err, .not. allocated(run_err), 'assembly or restriction failed')
+        if (allocated(err)) return
+        diff = maxval(abs(t_c - t_direct))/maxval(abs(t_direct))
+        write (text, '(a,a,i0,a,i0,a,es9.2)') trim(merge('PLATE', 'BEAM ', m%kind == MODEL_PLATE))// &
+            ' '//trim(interp_name(m%interp(FIELD_SZ)))//' '//trim(m%grading), ', N_e ', d%msh%ne, &
+            ' -> ', dc%msh%ne, ': max |P^T T P - T_c| / max |T_c| = ', diff
+        write (*, '(4x,a)') trim(text)
+        call check(err, size(t_c, 1) == dc%nr .and. diff <= 1.0e-13_dp, trim(text))
+    end subroutine compare
+end module test_nested_spaces
