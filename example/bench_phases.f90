@@ -26,7 +26,7 @@ program bench_phases
     use deck_reader, only: deck_t, read_deck, case_model
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact, check_load_admissible, nested_prediction, &
-                              classify_complete
+                              classify_complete, nested_discretisation
     use contact_system, only: system_t, build_system, contact_points, point_tractions, &
                               use_rigid_coordinates, set_terms_t, set_terms
     use rigid_body, only: to_absolute
@@ -266,20 +266,27 @@ contains
         type(solution_t), intent(inout) :: sol
         real(dp), intent(out) :: t_build, t_newton, t_checks
         type(error_t), allocatable :: err
-        real(dp), allocatable :: sigma_start(:, :)
+        real(dp), allocatable :: sigma_start(:, :), t_c(:, :)
+        type(discretization_t) :: dc
+        logical :: nest
         real(dp) :: t0
         if (m%method /= METHOD_NEWTON .or. is_active(plan_reduction(m, d))) &
             error stop 'bench_phases: the replica covers Newton without model reduction only'
         t0 = now()
         allocate (sol%history(0))
-        call build_system(m, d, sol%pts, sys, err)
+        nest = nested_discretisation(m, d, dc)
+        if (nest) then
+            call build_system(m, d, sol%pts, sys, err, nested=dc, t_nested=t_c)
+        else
+            call build_system(m, d, sol%pts, sys, err)
+        end if
         if (allocated(err)) error stop 'bench_phases: build_system failed'
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
         call use_rigid_coordinates(sys)
         t_build = now() - t0
         t0 = now()
-        call nested_prediction(m, d, sol, sigma_start)
+        if (nest) call nested_prediction(m, d, dc, t_c, sol, sigma_start)
         call solve_newton(m, d, sys, sol, err, sigma_start)
         t_newton = now() - t0
         if (allocated(err)) error stop 'bench_phases: the Newton solve failed'
@@ -545,10 +552,12 @@ contains
             '- rest of system set-up (*): build_system + use_rigid_coordinates, less the T and', &
             '  K, M times measured on their own (build_system assembles T, K and M inside it);', &
             '  the stick terms on T, the packing of B0 = -(T + c eps S0) into its lower', &
-            '  triangle, M^T, loads, the row scaling, the rigid-coordinate change of K and M.', &
-            '  Expected 2 (the packing of the dense block).', &
+            '  triangle, M^T, loads, the row scaling, the rigid-coordinate change of K and M;', &
+            '  N_e > 48: the restriction P^T T P of T to the nested coarser mesh (nested_spaces).', &
+            '  Expected 2 (the packing of the dense block, the restriction).', &
             '- Newton iterations: nested_prediction (N_e > 48: the case on the nested coarser', &
-            '  mesh, recursively, for the start) and solve_newton. The Schur set-up (banded Cholesky of K_ii,', &
+            '  mesh, recursively, its T restricted, not assembled, for the start) and', &
+            '  solve_newton. The Schur set-up (banded Cholesky of K_ii,', &
             '  O(N_e); S0 = J_kk - C^T K_ii^-1 C: nk band solves, O(N_e^2)), the adhesive start,', &
             '  each step: set terms, a dense LDL^T/LU of the nk x nk kept block (nk ~ 2 N_e,', &
             '  O(N_e^3)) or a Woodbury update, solves and refinement with the dense T block', &

@@ -11,7 +11,8 @@
 !!
 !! Nested start (Newton): a mesh of more than nested_from elements is first solved on its
 !! nested coarser mesh (every other node, the ends and the load positions kept: mesh_refinement),
-!! itself solved the same way; the coarse tractions at the fine contact points predict the
+!! itself solved the same way, with its T restricted from the fine one (nested_spaces: the
+!! same Galerkin matrix to round-off, without the kernel integrals); the coarse tractions at the fine contact points predict the
 !! sets, and the Newton method starts from the solution for those sets. The lift-off and
 !! stick/slip boundaries then start within an element or two of their place, where the
 !! adhesive start leaves them to move one front of Gauss points per step: on fine meshes of
@@ -45,6 +46,7 @@ module contact_solver
     public :: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
     public :: contact_points_t, iteration_record_t, solution_t, coarse_solution_t
     public :: solve_contact, check_load_admissible, contact_points, nested_prediction
+    public :: nested_discretisation
     public :: classify_complete
 
     integer, parameter :: nested_from = 48   !! larger meshes start from the nested coarser one
@@ -52,29 +54,38 @@ module contact_solver
 contains
 
     !> Solve one case. Fails with EXIT_ANALYSIS when there is no equilibrium or no convergence.
-    recursive subroutine solve_contact(m, d, sol, err, progress_unit)
+    recursive subroutine solve_contact(m, d, sol, err, progress_unit, t_given)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(out) :: sol
         type(error_t), allocatable, intent(out) :: err
         integer, intent(in), optional :: progress_unit   !! a unit for one line per Newton step
+        !> T of d when it is known (the restriction of a finer mesh's): moved in
+        real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(system_t) :: sys
-        real(dp), allocatable :: sigma_start(:, :)
+        type(discretization_t) :: dc
+        real(dp), allocatable :: sigma_start(:, :), t_c(:, :)
         real(dp) :: t0
+        logical :: nest
 
         allocate (sol%history(0))
         if (present(progress_unit)) sol%progress_unit = progress_unit
         call check_load_admissible(m, err)
         if (allocated(err)) return
         sol%pts = contact_points(m, d)
+        nest = nested_discretisation(m, d, dc)
         t0 = wall_seconds()
-        call nested_prediction(m, d, sol, sigma_start)
-        sol%seconds(3) = wall_seconds() - t0
-        t0 = wall_seconds()
-        call build_system(m, d, sol%pts, sys, err)
+        if (nest) then
+            call build_system(m, d, sol%pts, sys, err, t_given, dc, t_c)
+        else
+            call build_system(m, d, sol%pts, sys, err, t_given)
+        end if
         sol%seconds(1) = sys%t_seconds
         sol%seconds(2) = wall_seconds() - t0 - sys%t_seconds
         if (allocated(err)) return
+        t0 = wall_seconds()
+        if (nest) call nested_prediction(m, d, dc, t_c, sol, sigma_start)
+        sol%seconds(3) = wall_seconds() - t0
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
         t0 = wall_seconds()
@@ -131,27 +142,39 @@ contains
         sol%pts = pts
     end subroutine solve_reduced
 
-    !> The tractions at the contact points of sol predicted by the solution on the nested
-    !! coarser mesh, for the Newton method on more than nested_from elements (not allocated
-    !! otherwise, or when the coarse case could not be solved: the Newton method then starts
-    !! from the adhesive solution). Its linear solves are counted in sol%n_nested_solves.
-    recursive subroutine nested_prediction(m, d, sol, sigma)
+    !> The nested coarser mesh of d (every other node, the ends and the load positions kept),
+    !! discretised as d: true for the Newton method on more than nested_from elements.
+    function nested_discretisation(m, d, dc) result(nest)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
-        type(solution_t), intent(inout) :: sol
-        real(dp), allocatable, intent(out) :: sigma(:, :)
+        type(discretization_t), intent(out) :: dc
+        logical :: nest
         type(mesh_t) :: coarse
-        type(discretization_t) :: dc
-        type(solution_t) :: sol_c
-        type(error_t), allocatable :: err_c
         logical, allocatable :: pinned_c(:)
-        integer :: p, e
-        real(dp) :: xi
+        nest = .false.
         if (m%method == METHOD_TWOLOOP .or. d%msh%ne <= nested_from) return
         call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m)), coarse, pinned_c)
         if (coarse%ne >= d%msh%ne) return
         call discretise_mesh(m, coarse, dc)
-        call solve_contact(m, dc, sol_c, err_c)
+        nest = .true.
+    end function nested_discretisation
+
+    !> The tractions at the contact points of sol predicted by the solution on the nested
+    !! coarser mesh dc, whose T (t_c, the Galerkin restriction of the fine one) is moved in
+    !! (sigma not allocated when the coarse case could not be solved: the Newton method then
+    !! starts from the adhesive solution). Its linear solves are counted in
+    !! sol%n_nested_solves.
+    recursive subroutine nested_prediction(m, d, dc, t_c, sol, sigma)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d, dc
+        real(dp), allocatable, intent(inout) :: t_c(:, :)
+        type(solution_t), intent(inout) :: sol
+        real(dp), allocatable, intent(out) :: sigma(:, :)
+        type(solution_t) :: sol_c
+        type(error_t), allocatable :: err_c
+        integer :: p, e
+        real(dp) :: xi
+        call solve_contact(m, dc, sol_c, err_c, t_given=t_c)
         sol%n_nested_solves = sol_c%n_solves + sol_c%n_nested_solves
         if (allocated(err_c)) return
         if (.not. allocated(sol_c%coarse)) allocate (sol_c%coarse(0))

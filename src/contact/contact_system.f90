@@ -22,6 +22,7 @@ module contact_system
     use mindlin_structure, only: section_of, stiffness_entries, assemble_loads, &
                                  coupling_entries
     use halfspace_operator, only: assemble_flexibility
+    use nested_spaces, only: restricted_tractions
     use interface_law, only: friction_threshold, slip_excess, tensile_part, threshold_slope, &
                              is_slipping, in_tension
     use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
@@ -121,7 +122,8 @@ module contact_system
                                                 !! coordinates (rigid_body), else absolute
         integer :: nv = 0                    !! displacement unknowns
         integer :: nr = 0                    !! traction unknowns
-        real(dp) :: t_seconds = 0.0_dp       !! wall time of the assembly of T [s]
+        real(dp) :: t_seconds = 0.0_dp       !! wall time of T: its assembly (or none when
+                                             !! given), and its restriction to a nested mesh [s]
     end type system_t
 
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
@@ -142,17 +144,27 @@ module contact_system
 contains
 
     !> K, M, T, S0 and q assembled once per case into the base matrix.
-    subroutine build_system(m, d, pts, sys, err)
+    subroutine build_system(m, d, pts, sys, err, t_given, nested, t_nested)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(contact_points_t), intent(in) :: pts
         type(system_t), intent(out) :: sys
         type(error_t), allocatable, intent(out) :: err
+        !> T of d, restricted from a finer mesh (nested_spaces): moved in, not assembled
+        real(dp), allocatable, intent(inout), optional :: t_given(:, :)
+        type(discretization_t), intent(in), optional :: nested   !! a mesh nested in d, and
+        real(dp), allocatable, intent(out), optional :: t_nested(:, :)  !! its T (P^T T P)
         real(dp), allocatable :: t_mat(:, :), b0(:)
         integer :: i
         integer(int64) :: t0, t1, rate
         call system_clock(t0, rate)
-        call assemble_flexibility(m, d, t_mat, err)
+        if (present(t_given)) then
+            call move_alloc(t_given, t_mat)
+        else
+            call assemble_flexibility(m, d, t_mat, err)
+        end if
+        if (.not. allocated(err) .and. present(nested) .and. present(t_nested)) &
+            call restricted_tractions(t_mat, d, nested, t_nested, err)
         call system_clock(t1)
         sys%t_seconds = real(t1 - t0, dp)/real(rate, dp)
         if (allocated(err)) then
