@@ -153,7 +153,9 @@ contains
         !> T of d, restricted from a finer mesh (nested_spaces): moved in, not assembled
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(discretization_t), intent(in), optional :: nested   !! a mesh nested in d, and
-        real(dp), allocatable, intent(out), optional :: t_nested(:, :)  !! its T (P^T T P)
+        !> its T (P^T T P); inout, not out: declared intent(out), the -O3 build of gfortran 12
+        !! crashed in build_system whenever it was absent
+        real(dp), allocatable, intent(inout), optional :: t_nested(:, :)
         real(dp), allocatable :: t_mat(:, :), b0(:)
         integer :: i
         integer(int64) :: t0, t1, rate
