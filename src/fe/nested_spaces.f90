@@ -68,16 +68,16 @@ contains
                 w(:, j) = w(:, j) + p%val(k)*t_f(:, p%row(k))
             end do
         end do
+        ! T is symmetric, and so is P^T T P: the lower triangle, mirrored
         do j = 1, nc
-            do i = 1, nc
+            do i = j, nc
                 t_c(i, j) = 0.0_dp
                 do k = p%first(i), p%first(i + 1) - 1
                     t_c(i, j) = t_c(i, j) + p%val(k)*w(p%row(k), j)
                 end do
+                t_c(j, i) = t_c(i, j)
             end do
         end do
-        ! T is symmetric; the two products round differently
-        t_c = 0.5_dp*(t_c + transpose(t_c))
     end subroutine galerkin_product
 
     !> P of one field: bf on the fine mesh, bc (same family) on a coarse mesh whose nodes are
