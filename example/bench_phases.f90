@@ -483,7 +483,8 @@ contains
         call put(u, '')
         call put(u, '| N_e | n | nr | reps | linear solves | factorisations | '// &
                  'Schur set-up ms | one Schur factorisation ms | whole solve_contact ms | '// &
-                 'replica (set-up to checks) ms | max rel. diff. of z | solve / one linear solve | '// &
+                 'replica (set-up to checks) ms | max rel. diff. of z | '// &
+                 'solve / one linear solve | '// &
                  'solve / one factorisation |')
         call put(u, '|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
         do ip = 1, nm
@@ -526,8 +527,8 @@ contains
         ! solve of the final system from scratch is the Schur set-up plus one factorisation
         solve = sum(r%t(P_KM:P_CHECKS, i))
         write (buf, '(es9.1)') r%z_diff(i)
-        write (ratios, '(f5.1," | ",f5.1)') solve/(r%info(I_SCHUR_SETUP, i) + r%info(I_SCHUR_FACT, i)), &
-            solve/r%info(I_SCHUR_FACT, i)
+        write (ratios, '(f5.1," | ",f5.1)') &
+            solve/(r%info(I_SCHUR_SETUP, i) + r%info(I_SCHUR_FACT, i)), solve/r%info(I_SCHUR_FACT, i)
         line = '| '//int_text(r%ne(i))//' | '//int_text(r%n(i))//' | '//int_text(r%nr(i))//' | '// &
                int_text(r%reps(i))//' | '//int_text(r%solves(i))//' | '//int_text(r%factorisations(i))// &
                ' | '//ms(r%info(I_SCHUR_SETUP, i))//' | '//ms(r%info(I_SCHUR_FACT, i))//' | '// &
@@ -553,7 +554,8 @@ contains
             '  K, M times measured on their own (build_system assembles T, K and M inside it);', &
             '  the stick terms on T, the packing of B0 = -(T + c eps S0) into its lower', &
             '  triangle, M^T, loads, the row scaling, the rigid-coordinate change of K and M;', &
-            '  N_e > 48: the restriction P^T T P of T to the nested coarser mesh (nested_spaces).', &
+            '  N_e > 48: the restriction P^T T P of T to the nested coarser mesh', &
+            '  (nested_spaces).', &
             '  Expected 2 (the packing of the dense block, the restriction).', &
             '- Newton iterations: nested_prediction (N_e > 48: the case on the nested coarser', &
             '  mesh, recursively, its T restricted, not assembled, for the start) and', &
@@ -582,10 +584,11 @@ contains
             'are not in the sum, the Schur set-up and one Schur factorisation of the final sets', &
             '(both inside the Newton iterations), and the whole solve_contact; the replica column', &
             'is the sum of the phases discretisation to final checks; max rel. diff. of z: the', &
-            'replica''s answer against solve_contact''s. solve / one linear solve: the phases K, M', &
-            'assembly to final checks (the case''s solve without T, which item 3 times) over the', &
-            'Schur set-up plus one Schur factorisation (what one linear solve of the final system', &
-            'costs from scratch); solve / one factorisation: the same over the factorisation alone.']
+            'replica''s answer against solve_contact''s. solve / one linear solve: the phases', &
+            'K, M assembly to final checks (the case''s solve without T, which item 3 times)', &
+            'over the Schur set-up plus one Schur factorisation (what one linear solve of the', &
+            'final system costs from scratch); solve / one factorisation: the same over the', &
+            'factorisation alone.']
         do i = 1, size(lines)
             call put(u, trim(lines(i)))
         end do

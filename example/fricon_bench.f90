@@ -31,7 +31,8 @@ program fricon_bench
         integer :: solves = 0
         integer :: nested = 0              !! linear solves on the nested coarser meshes (start)
         integer :: factorisations = 0
-        real(dp) :: phase(6) = 0.0_dp      !! T, K + M + set-up, nested start, iterations,
+        real(dp) :: phase(6) = 0.0_dp      !! T (with its restriction to the nested mesh),
+                                           !! K + M + set-up, nested start, iterations,
                                            !! checks (solution_t%seconds), output (stations
                                            !! and design summary) [s]
         real(dp) :: seconds = 0.0_dp

@@ -434,8 +434,8 @@ contains
         ! (doc/CHOICES.md, very soft beams at eps_bar = 1e-12)
         write (text, '(a,es10.3,a,es10.3,a)') 'the friction admissibility check failed: max(|Sigma_x| '// &
             '- f Sigma_z) = ', s%admissibility, ' exceeds the ', s%admissibility_tol, &
-            ' the regularised law allows at the largest slip: no solution (the law holds '// &
-            'on average over each traction function, not at every point: refine the mesh)'
+            ' the regularised law allows at the largest slip: the law holds on average over '// &
+            'each traction function but is not resolved pointwise on this mesh: refine it'
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine require_admissible
 

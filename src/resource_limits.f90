@@ -6,8 +6,8 @@
 !! traction unknowns (measured about 3.1 n^2 doubles; the estimate takes 4 n^2 doubles +
 !! 20 MB). The Newton method (the default) keeps the base matrix by blocks (contact_system):
 !! measured at n = 5005 (N_e = 1000), above the process's own 27 MB, 70 MB for the frictional
-!! plate (2.8 n^2 bytes) and 120 MB for a symmetric beam (4.8 n^2 bytes: its half-beam
-!! reduction is solved dense); the estimate takes 8 n^2 bytes + 20 MB. Time: the Newton
+!! plate (2.8 n^2 bytes) and 52 MB for a symmetric beam (2.1 n^2 bytes: its half beam on the
+!! Schur path; 4.8 n^2 when it was solved dense); the estimate takes 8 n^2 bytes + 20 MB. Time: the Newton
 !! solve of the frictional plate takes 0.9 s at n = 5005 on the 2-core development machine
 !! (output/bench/phases_run.md), i.e. about 0.5 s at n = 4000, scaling as n^3 (a rough
 !! guide, printed with the progress, never used to refuse). The limit is 80 % of the memory

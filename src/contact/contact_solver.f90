@@ -12,8 +12,9 @@
 !! Nested start (Newton): a mesh of more than nested_from elements is first solved on its
 !! nested coarser mesh (every other node, the ends and the load positions kept: mesh_refinement),
 !! itself solved the same way, with its T restricted from the fine one (nested_spaces: the
-!! same Galerkin matrix to round-off, without the kernel integrals); the coarse tractions at the fine contact points predict the
-!! sets, and the Newton method starts from the solution for those sets. The lift-off and
+!! same Galerkin matrix to round-off, without the kernel integrals); the coarse tractions at
+!! the fine contact points predict the sets, and the Newton method starts from the solution
+!! for those sets. The lift-off and
 !! stick/slip boundaries then start within an element or two of their place, where the
 !! adhesive start leaves them to move one front of Gauss points per step: on fine meshes of
 !! soft structures that front moved by a few points per step and the merit stalled (a plate,

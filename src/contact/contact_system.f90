@@ -81,8 +81,9 @@ module contact_system
                                              !! that gave the Newton start (contact_solver)
         type(coarse_solution_t), allocatable :: coarse(:)  !! the nested coarser meshes'
                                              !! solutions, finest first (none: not nested)
-        real(dp) :: seconds(5) = 0.0_dp      !! wall time [s] of: T assembly; the rest of the
-                                             !! system (K, M, B0, loads); the nested start;
+        real(dp) :: seconds(5) = 0.0_dp      !! wall time [s] of: T (assembled, or given, and
+                                             !! its restriction to the nested mesh); the rest
+                                             !! of the system (K, M, B0, loads); the nested start;
                                              !! the iterations; the final checks
         integer :: progress_unit = -1        !! >= 0: each Newton step also reported there
                                              !! (the caller's progress for a big case)
@@ -153,8 +154,9 @@ contains
         !> T of d, restricted from a finer mesh (nested_spaces): moved in, not assembled
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(discretization_t), intent(in), optional :: nested   !! a mesh nested in d, and
-        !> its T (P^T T P); inout, not out: declared intent(out), the -O3 build of gfortran 12
-        !! crashed in build_system whenever it was absent
+        !> its T (P^T T P). inout, not out: with intent(out), one -O3 build (gfortran 12)
+        !! crashed in build_system whenever it was absent (plate_nondim.dat); a clean rebuild
+        !! by review did not reproduce it; inout is legal either way
         real(dp), allocatable, intent(inout), optional :: t_nested(:, :)
         real(dp), allocatable :: t_mat(:, :), b0(:)
         integer :: i

@@ -35,8 +35,8 @@ contains
             w = [character(len=warning_length) :: w, text]
         else if (m%f >= 90.0_dp) then
             ! no angle is meant: such an f makes the interface bonded (stick everywhere)
-            write (text, '(a,es9.2,a)') 'FRICTION f = ', m%f, ' is large: the interface '// &
-                'sticks wherever it is in contact (a bonded base)'
+            write (text, '(a,es9.2,a)') 'FRICTION f = ', m%f, ' is large: the base is '// &
+                'practically bonded (slip only where the pressure tends to 0)'
             w = [character(len=warning_length) :: w, text]
         end if
         if (m%nondim .or. m%e_f <= 0.0_dp) return
