@@ -50,7 +50,7 @@ contains
         type(run_options_t), intent(inout) :: options
         logical, intent(out) :: quiet, progress_forced
         character(len=1024) :: arg
-        integer :: i, n, ios
+        integer :: i, k, n, ios
         allocate (decks(0))
         out_dir = ''
         quiet = .false.
@@ -94,7 +94,8 @@ contains
             case ('--progress')
                 progress_forced = .true.
             case ('--')
-                decks = [character(len=1024) :: decks, (next_argument(i), i=i + 1, n)]
+                ! (a separate index: an implied-do may not use its own variable in its limits)
+                decks = [character(len=1024) :: decks, (next_argument(k), k=i + 1, n)]
                 exit arguments
             case default
                 if (arg(1:1) == '-') call usage_error('unknown option '//trim(arg))
