@@ -40,6 +40,7 @@ module singular_quadrature
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
     public :: new_gauss_tables, need_order, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
+    public :: displacement_split_kernel_reference
     public :: check_bases, near_ratio, n_max
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
@@ -112,6 +113,22 @@ module singular_quadrature
         integer :: n = 0
         real(dp), allocatable :: s(:), w(:), wc(:), d(:)
     end type line_rule_t
+
+    interface
+        !> Surface displacements u (tangential) and w (normal) at the points x_eval produced by
+        !! the tractions sigma_x = sum rx_b g_b, sigma_z = sum rz_b g_b:
+        !! u_i(x) = int K_ij(x, s) sigma_j ds (submodule station_displacement).
+        module subroutine displacement_split_kernel(kernel, bx, bz, rx, rz, x_eval, u, w, err)
+            class(split_kernel_t), intent(in) :: kernel
+            type(basis_t), intent(in) :: bx, bz
+            real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
+            real(dp), intent(in) :: rz(:)         !! sigma_z coefficients (bz)
+            real(dp), intent(in) :: x_eval(:)     !! evaluation points
+            real(dp), intent(out) :: u(:)         !! tangential displacement
+            real(dp), intent(out) :: w(:)         !! normal displacement (down positive)
+            type(error_t), allocatable, intent(out) :: err
+        end subroutine displacement_split_kernel
+    end interface
 
 contains
 
@@ -591,7 +608,10 @@ contains
 
     !> Surface displacements u (tangential) and w (normal) at the points x_eval produced by the
     !! tractions sigma_x = sum rx_b g_b, sigma_z = sum rz_b g_b: u_i(x) = int K_ij(x, s) sigma_j ds.
-    subroutine displacement_split_kernel(kernel, bx, bz, rx, rz, x_eval, u, w, err)
+    !! Reference evaluation: the line rule of `build_line_rule` for every (point, element) pair,
+    !! the kernel called once per pair; `displacement_split_kernel` (submodule
+    !! station_displacement) is the fast one used by the program, checked against this one.
+    subroutine displacement_split_kernel_reference(kernel, bx, bz, rx, rz, x_eval, u, w, err)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
@@ -632,7 +652,7 @@ contains
                 call add_line(bx, bz, rx, rz, e, line, f, p, u(i), w(i))
             end do elements
         end do points
-    end subroutine displacement_split_kernel
+    end subroutine displacement_split_kernel_reference
 
     !> Add one element's contribution to the displacements at one point.
     pure subroutine add_line(bx, bz, rx, rz, e, line, f, p, u, w)
