@@ -41,7 +41,7 @@ module singular_quadrature
     public :: new_gauss_tables, need_order, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
-    public :: check_bases, near_ratio, n_max
+    public :: check_bases, near_ratio, n_max, points_for_ratio
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     integer, parameter :: n_log = 24        !! points of the product-log rule
