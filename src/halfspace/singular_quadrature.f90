@@ -27,6 +27,11 @@
 !!    xi = x t and x = xi t on the two triangles, polynomial in the outer variable, product-log
 !!    rule in t next to t = 1;
 !!  * well separated pairs: tensor GL with the number of points set by distance/size.
+!! The displacements at many points (`displacement_split_kernel`, the report stations) are in
+!! the submodule station_displacement (file station_displacement.f90): far clusters of elements
+!! by interpolating the kernel, the elements next to each point by `build_line_rule`;
+!! `displacement_split_kernel_reference` (the line rule for every point and element) is kept
+!! as the reference of its tests.
 module singular_quadrature
     use iso_fortran_env, only: int64
     use kinds, only: dp
