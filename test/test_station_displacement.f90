@@ -61,7 +61,8 @@ contains
         type(unittest_t), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('plate_fast_vs_reference', test_plate), &
                  new_unittest('beam_fast_vs_reference', test_beam), &
-                 new_unittest('same_kernel_fast_vs_reference', test_same_kernel)]
+                 new_unittest('same_kernel_fast_vs_reference', test_same_kernel), &
+                 new_unittest('small_meshes', test_small_meshes)]
     end subroutine collect_station_displacement
 
     ! ------------------------------------------------------------------ test kernels
@@ -308,4 +309,42 @@ contains
             deallocate (u, w, u_ref, w_ref)
         end do
     end subroutine test_same_kernel
+
+    !> Meshes of 1 to 9 elements (the tree is one leaf, or a root with two leaves, ...): the
+    !! program's path against the reference, plate and beam, P2/S2 tractions.
+    subroutine test_small_meshes(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(ring_test_kernel_t) :: ring
+        type(strip_test_kernel_t) :: strip
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: x(:), u(:), w(:), u_ref(:), w_ref(:), rx(:), rz(:)
+        integer :: ne
+        character(len=20) :: what
+        do ne = 1, 9
+            write (what, '("N_e ",i0)') ne
+            call make_bases(0.0_dp, 1.3_dp, ne, 'EDGES', [INTERP_P2, INTERP_S2], bx, bz, err)
+            if (allocated(err)) return
+            rx = coefficients(bx%n_dof, 0.4_dp)
+            rz = coefficients(bz%n_dof, 1.0_dp)
+            x = points_of(bx, [2.5_dp])
+            allocate (u(size(x)), w(size(x)), u_ref(size(x)), w_ref(size(x)))
+            call plate_surface_displacement(bx, bz, rx, rz, ring%g, ring%nu, x, u, w, err)
+            if (.not. allocated(err)) call displacement_split_kernel_reference(ring, bx, bz, rx, &
+                rz, x, u_ref, w_ref, err)
+            if (.not. allocated(err)) call check_agreement(u, w, u_ref, w_ref, &
+                                                           'plate '//trim(what), err)
+            if (allocated(err)) return
+            call make_bases(-0.5_dp, 0.5_dp, ne, 'EDGES', [INTERP_P2, INTERP_S2], bx, bz, err)
+            if (allocated(err)) return
+            x = points_of(bx, [-2.0_dp])
+            call beam_surface_displacement(bx, bz, rx, rz, strip%g, strip%nu, strip%b, x, u, w, &
+                                           err)
+            if (.not. allocated(err)) call displacement_split_kernel_reference(strip, bx, bz, rx, &
+                rz, x, u_ref, w_ref, err)
+            if (.not. allocated(err)) call check_agreement(u, w, u_ref, w_ref, &
+                                                           'beam '//trim(what), err)
+            if (allocated(err)) return
+            deallocate (u, w, u_ref, w_ref)
+        end do
+    end subroutine test_small_meshes
 end module test_station_displacement

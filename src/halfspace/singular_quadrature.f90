@@ -274,7 +274,7 @@ contains
         real(dp), intent(in) :: x0, dir, d_start, d_end, u0
         type(line_rule_t), intent(inout) :: line
         real(dp), intent(in), optional :: u_pole
-        real(dp) :: lo, hi, pole
+        real(dp) :: lo, hi, pole, ratio
         if (.not. d_end > d_start) return
         ! a ray shorter than the rounding of x0 holds no point distinct from x0; its share of
         ! the integral, O(d_end ln d_end), is below the rounding of the result
@@ -288,8 +288,10 @@ contains
         if (lo <= 8.0_dp*epsilon(1.0_dp)*max(abs(x0), d_end)) then
             ! the piece touches the singular point (up to rounding of the node coordinates)
             if (u0 <= 0.0_dp) then
-                call add_gauss_piece(tab, x0, dir, 0.0_dp, d_end, &
-                                     points_for_ratio(min(1.0_dp, (pole - d_end)/d_end)), line)
+                ! ratio min(1, (pole - d_end)/d_end), without dividing huge(1.0) by d_end < 1
+                ratio = 1.0_dp
+                if (pole - d_end < d_end) ratio = (pole - d_end)/d_end
+                call add_gauss_piece(tab, x0, dir, 0.0_dp, d_end, points_for_ratio(ratio), line)
                 return
             end if
             hi = min(u0, d_end)

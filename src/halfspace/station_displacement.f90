@@ -34,6 +34,7 @@
 !! same with cheb_digits = 17; in double precision, to 1e-14, the reference's own rounding
 !! (doc/METHOD.md).
 submodule(singular_quadrature) station_displacement
+    use kinds, only: pi
     implicit none
 
     real(dp), parameter :: far_ratio = 0.5_dp   !! gap / length from which a cluster is one piece
@@ -155,7 +156,7 @@ contains
         orders_loop: do k = 1, n_orders
             m = orders(k)
             nodes: do i = 1, m
-                theta = real(2*i - 1, dp)*acos(-1.0_dp)/real(2*m, dp)
+                theta = real(2*i - 1, dp)*pi/real(2*m, dp)
                 cheb%cosines(i, k) = cos(theta)
             end do nodes
             call chebyshev_values(cheb%cosines(1:m, k), cheb%to_weights(1:m, 1:m, k))
@@ -320,13 +321,13 @@ contains
         real(dp) :: val(max_local), der(max_local), x_out, y(3, 2)
         allocate (sig%c(3, 2, bx%ne))
         elements: do e = 1, bx%ne
-            ends: do k = 1, 3
+            samples: do k = 1, 3
                 ! (eval_basis directly: the parent's private basis_at may be inlined away)
                 call eval_basis(bx, e, real(k - 2, dp), idx, val, der, x_out)
                 y(k, 1) = sum(val(1:bx%n_local)*rx(idx(1:bx%n_local)))
                 call eval_basis(bz, e, real(k - 2, dp), idx, val, der, x_out)
                 y(k, 2) = sum(val(1:bz%n_local)*rz(idx(1:bz%n_local)))
-            end do ends
+            end do samples
             sig%c(1, :, e) = y(1, :)
             sig%c(2, :, e) = 4.0_dp*y(2, :) - 3.0_dp*y(1, :) - y(3, :)
             sig%c(3, :, e) = 2.0_dp*(y(1, :) + y(3, :)) - 4.0_dp*y(2, :)
