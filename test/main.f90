@@ -7,6 +7,7 @@ program tester
     use test_gsl_wrappers, only: collect_gsl_wrappers
     use test_halfspace_plate, only: collect_halfspace_plate
     use test_halfspace_beam, only: collect_halfspace_beam
+    use test_station_displacement, only: collect_station_displacement
     use test_structure, only: collect_structure
     use test_deck_reader, only: collect_deck_reader
     use test_contact_solver, only: collect_contact_solver
@@ -25,9 +26,9 @@ program tester
     character(len=64) :: want_suite, want_test
     integer :: n_pass, n_fail
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
-        'halfspace_beam structure deck_reader contact_solver report_writer convergence '// &
-        'design_values paper malformed_decks newton properties simplifications adaptive '// &
-        'nested_spaces '
+        'halfspace_beam station_displacement structure deck_reader contact_solver '// &
+        'report_writer convergence design_values paper malformed_decks newton properties '// &
+        'simplifications adaptive nested_spaces '
 
     want_suite = ''
     want_test = ''
@@ -57,6 +58,10 @@ program tester
     if (wanted('halfspace_beam')) then
         call collect_halfspace_beam(tests)
         call run_suite('halfspace_beam', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('station_displacement')) then
+        call collect_station_displacement(tests)
+        call run_suite('station_displacement', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('nested_spaces')) then
         call collect_nested_spaces(tests)

@@ -27,6 +27,11 @@
 !!    xi = x t and x = xi t on the two triangles, polynomial in the outer variable, product-log
 !!    rule in t next to t = 1;
 !!  * well separated pairs: tensor GL with the number of points set by distance/size.
+!! The displacements at many points (`displacement_split_kernel`, the report stations) are in
+!! the submodule station_displacement (file station_displacement.f90): far clusters of elements
+!! by interpolating the kernel, the elements next to each point by `build_line_rule`;
+!! `displacement_split_kernel_reference` (the line rule for every point and element) is kept
+!! as the reference of its tests.
 module singular_quadrature
     use iso_fortran_env, only: int64
     use kinds, only: dp
@@ -40,7 +45,8 @@ module singular_quadrature
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
     public :: new_gauss_tables, need_order, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
-    public :: check_bases, near_ratio, n_max
+    public :: displacement_split_kernel_reference
+    public :: check_bases, near_ratio, n_max, points_for_ratio
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     integer, parameter :: n_log = 24        !! points of the product-log rule
@@ -112,6 +118,22 @@ module singular_quadrature
         integer :: n = 0
         real(dp), allocatable :: s(:), w(:), wc(:), d(:)
     end type line_rule_t
+
+    interface
+        !> Surface displacements u (tangential) and w (normal) at the points x_eval produced by
+        !! the tractions sigma_x = sum rx_b g_b, sigma_z = sum rz_b g_b:
+        !! u_i(x) = int K_ij(x, s) sigma_j ds (submodule station_displacement).
+        module subroutine displacement_split_kernel(kernel, bx, bz, rx, rz, x_eval, u, w, err)
+            class(split_kernel_t), intent(in) :: kernel
+            type(basis_t), intent(in) :: bx, bz
+            real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
+            real(dp), intent(in) :: rz(:)         !! sigma_z coefficients (bz)
+            real(dp), intent(in) :: x_eval(:)     !! evaluation points
+            real(dp), intent(out) :: u(:)         !! tangential displacement
+            real(dp), intent(out) :: w(:)         !! normal displacement (down positive)
+            type(error_t), allocatable, intent(out) :: err
+        end subroutine displacement_split_kernel
+    end interface
 
 contains
 
@@ -266,7 +288,7 @@ contains
         if (lo <= 8.0_dp*epsilon(1.0_dp)*max(abs(x0), d_end)) then
             ! the piece touches the singular point (up to rounding of the node coordinates)
             if (u0 <= 0.0_dp) then
-                ! (pole - d_end)/d_end, at most 1; no pole (huge) would overflow the quotient
+                ! ratio min(1, (pole - d_end)/d_end), without dividing huge(1.0) by d_end < 1
                 ratio = 1.0_dp
                 if (pole - d_end < d_end) ratio = (pole - d_end)/d_end
                 call add_gauss_piece(tab, x0, dir, 0.0_dp, d_end, points_for_ratio(ratio), line)
@@ -593,7 +615,10 @@ contains
 
     !> Surface displacements u (tangential) and w (normal) at the points x_eval produced by the
     !! tractions sigma_x = sum rx_b g_b, sigma_z = sum rz_b g_b: u_i(x) = int K_ij(x, s) sigma_j ds.
-    subroutine displacement_split_kernel(kernel, bx, bz, rx, rz, x_eval, u, w, err)
+    !! Reference evaluation: the line rule of `build_line_rule` for every (point, element) pair,
+    !! the kernel called once per pair; `displacement_split_kernel` (submodule
+    !! station_displacement) is the fast one used by the program, checked against this one.
+    subroutine displacement_split_kernel_reference(kernel, bx, bz, rx, rz, x_eval, u, w, err)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
@@ -634,7 +659,7 @@ contains
                 call add_line(bx, bz, rx, rz, e, line, f, p, u(i), w(i))
             end do elements
         end do points
-    end subroutine displacement_split_kernel
+    end subroutine displacement_split_kernel_reference
 
     !> Add one element's contribution to the displacements at one point.
     pure subroutine add_line(bx, bz, rx, rz, e, line, f, p, u, w)

@@ -244,13 +244,14 @@ contains
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(inout) :: tab
-        real(dp) :: t0(2), t1(2), hoop(2), ld(4), x, two_pi_r
+        real(dp) :: t0(2), t1(2), hoop(2), ld(4), x, two_pi_r, xg(4), wg(4)
         real(dp) :: cum(6, 0:d%msh%ne)
         integer :: i
-        cum = cumulative_integrals(m, d, sol)
+        call gauss_legendre(4, xg, wg)     ! once: element_integrals runs N_e + n times
+        cum = cumulative_integrals(m, d, sol, xg, wg)
         stations: do i = 1, tab%n
             x = tab%val(Q_X, i)
-            call traction_integrals(m, d, sol, cum, x, t0, t1, hoop)
+            call traction_integrals(m, d, sol, cum, xg, wg, x, t0, t1, hoop)
             ld = load_integrals(m, x, tab%side(i), position_tolerance(d))
             if (m%kind == MODEL_BEAM) then
                 tab%val(Q_Q, i) = t0(2) - ld(1)
@@ -274,17 +275,18 @@ contains
     !> I0 and I1 of (sigma_x, sigma_z) from x0 to x, and (plate) int_0^x of N_t and M_t: the
     !! node totals of cumulative_integrals plus the part of the element that holds x, with
     !! I1(x) = x J0(x) - J1(x), J1 = int w g s ds.
-    pure subroutine traction_integrals(m, d, sol, cum, x, t0, t1, hoop)
+    pure subroutine traction_integrals(m, d, sol, cum, xg, wg, x, t0, t1, hoop)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         real(dp), intent(in) :: cum(:, 0:)      !! cumulative_integrals
+        real(dp), intent(in) :: xg(4), wg(4)    !! 4-point Gauss rule on [-1, 1]
         real(dp), intent(in) :: x
         real(dp), intent(out) :: t0(2), t1(2), hoop(2)
         real(dp) :: total(6), xi
         integer :: e
         call locate_element(d%msh, x, e, xi)
-        total = cum(:, e - 1) + element_integrals(m, d, sol, e, d%msh%x(e - 1), &
+        total = cum(:, e - 1) + element_integrals(m, d, sol, xg, wg, e, d%msh%x(e - 1), &
                                                   max(d%msh%x(e - 1), min(x, d%msh%x(e))))
         t0 = total(1:2)
         t1 = x*total(1:2) - total(3:4)
@@ -293,34 +295,36 @@ contains
 
     !> At every node k, int_x0^x_k of w (sigma_x, sigma_z, s sigma_x, s sigma_z) and (plate)
     !! of N_t and M_t: (6, 0:ne), element by element, once per table.
-    pure function cumulative_integrals(m, d, sol) result(cum)
+    pure function cumulative_integrals(m, d, sol, xg, wg) result(cum)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
+        real(dp), intent(in) :: xg(4), wg(4)    !! 4-point Gauss rule on [-1, 1]
         real(dp) :: cum(6, 0:d%msh%ne)
         integer :: e
         cum(:, 0) = 0.0_dp
         elements: do e = 1, d%msh%ne
-            cum(:, e) = cum(:, e - 1) + element_integrals(m, d, sol, e, d%msh%x(e - 1), d%msh%x(e))
+            cum(:, e) = cum(:, e - 1) + element_integrals(m, d, sol, xg, wg, e, d%msh%x(e - 1), &
+                                                          d%msh%x(e))
         end do elements
     end function cumulative_integrals
 
     !> The six integrals of cumulative_integrals over [lo, hi] inside element e, exact for the
     !! polynomial tractions (4-point Gauss; w = 1 for the beam, 2 pi s for the plate).
-    pure function element_integrals(m, d, sol, e, lo, hi) result(part)
+    pure function element_integrals(m, d, sol, xg, wg, e, lo, hi) result(part)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
+        real(dp), intent(in) :: xg(4), wg(4)    !! 4-point Gauss rule on [-1, 1]
         integer, intent(in) :: e
         real(dp), intent(in) :: lo, hi
         real(dp) :: part(6)
-        real(dp) :: xg(4), wg(4), s, wt, xi, sig(2), res(5)
+        real(dp) :: s, wt, xi, sig(2), res(5)
         type(section_t) :: sec
         integer :: g
         part = 0.0_dp
         if (hi <= lo) return
         sec = section_of(m)
-        call gauss_legendre(4, xg, wg)
         do g = 1, 4
             s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
             wt = 0.5_dp*wg(g)*(hi - lo)
