@@ -52,7 +52,7 @@ module galerkin_assembly
     public :: assemble_split_kernel
 
     integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
-    real(dp), parameter :: far_digits = 15.0_dp  !! see far_points
+    real(dp), parameter :: default_far_digits = 13.0_dp  !! see far_points
     integer, parameter :: max_across = 4 !! GL points across the reduced variable, at most
                                          !! (across_points)
     integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
@@ -100,6 +100,9 @@ module galerkin_assembly
         real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
         real(dp) :: far_limit(2:n_max, 0:max_degree) = 0.0_dp  !! see far_points
         real(dp), allocatable :: raise_ratio(:)    !! see field_degree
+        real(dp), allocatable :: moment(:, :, :)   !! moment(r, 1, e) = int g_r W dx,
+                                                   !! moment(r, 2, e) = int g_r dx on e
+                                                   !! (constant coupling, contract_fields)
         integer :: n_across = max_across           !! see across_points
         integer, allocatable :: far(:, :)          !! (e1, n1, n2) of the far pairs of a column
         integer, allocatable :: by_n2(:, :)        !! the same (e1, n1), sorted by n2
@@ -112,13 +115,16 @@ module galerkin_assembly
 contains
 
     !> T (module header); n_kernel returns the number of kernel evaluations (point pairs).
-    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z, same mesh
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         type(error_t), allocatable, intent(out) :: err
         integer(int64), intent(out), optional :: n_kernel
+        real(dp), intent(in), optional :: far_digits  !! accuracy studies only: digits of the
+                                                      !! far rules (far_points) instead of
+                                                      !! default_far_digits
         type(work_t) :: work
         type(work_t), allocatable :: works(:)
         real(dp), allocatable :: column_loc(:, :, :, :, :)
@@ -128,7 +134,7 @@ contains
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
-        call new_work(kernel, bx, bz, work)
+        call new_work(kernel, bx, bz, work, far_digits)
         call translates(kernel, bx, work%poly, shift_ok)
         ! translated pairs are copied from the previous column: one thread does the columns in
         ! order then (O(N_e) pair integrals); no nested teams (the cases of a sweep already run
@@ -181,17 +187,21 @@ contains
 
     !> Work of one thread: GL tables (filled when needed), the numbering and polynomials of
     !! every element and the far-rule limits.
-    pure subroutine new_work(kernel, bx, bz, work)
+    pure subroutine new_work(kernel, bx, bz, work, far_digits)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         type(work_t), intent(inout) :: work
-        real(dp) :: q
+        real(dp), intent(in), optional :: far_digits
+        real(dp) :: q, digits
         integer :: e
         call new_gauss_tables(work%tab, lazy=.true.)
         work%n_across = across_points(kernel, bx, bz)
         call need_order(work%tab, work%n_across)
         call number_elements(bx, bz, work)
-        call far_limits(work%far_limit)
+        digits = default_far_digits
+        if (present(far_digits)) digits = far_digits
+        call far_limits(digits, work%far_limit)
+        if (kernel%constant_coupling) call element_moments(kernel, bx, work)
         allocate (work%raise_ratio(bx%ne), source=huge(1.0_dp))
         if (kernel%homogeneous) then
             elements: do e = 1, bx%ne
@@ -200,6 +210,30 @@ contains
             end do elements
         end if
     end subroutine new_work
+
+    !> work%moment: the integrals of the local functions of every element, with and without
+    !! the field measure W, by 3-point GL (exact: g_r W has degree <= 3).
+    pure subroutine element_moments(kernel, bx, work)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(work_t), intent(inout) :: work
+        integer, parameter :: n = 3
+        real(dp) :: h, xi, x, b(n_loc)
+        integer :: e, i
+        call need_order(work%tab, n)
+        allocate (work%moment(n_loc, 2, bx%ne), source=0.0_dp)
+        elements: do e = 1, bx%ne
+            h = bx%x(e) - bx%x(e - 1)
+            nodes: do i = 1, n
+                xi = 2.0_dp*work%tab%v(i, n) - 1.0_dp
+                x = bx%x(e - 1) + h*work%tab%v(i, n)
+                b = work%poly(1, :, e) + xi*(work%poly(2, :, e) + xi*work%poly(3, :, e))
+                b = b*(h*work%tab%w(i, n))
+                work%moment(:, 1, e) = work%moment(:, 1, e) + b*kernel%field_weight(x)
+                work%moment(:, 2, e) = work%moment(:, 2, e) + b
+            end do nodes
+        end do elements
+    end subroutine element_moments
 
     !> The far-batch and point-pair arrays of one thread's work (not in the work copied to
     !! every thread: about 100 kB that every assembly would copy).
@@ -487,7 +521,8 @@ contains
     !! far_points: n >= (far_digits/log10 rho + p)/2 is rho >= rho_n = 10^(far_digits/(2n - p)),
     !! i.e. ratio >= (c_n - 1)/2, c_n = (rho_n + 1/rho_n)/2. Tabulated once, so that a pair
     !! costs comparisons instead of a logarithm.
-    pure subroutine far_limits(limit)
+    pure subroutine far_limits(far_digits, limit)
+        real(dp), intent(in) :: far_digits
         real(dp), intent(out) :: limit(2:n_max, 0:max_degree)
         real(dp) :: rho
         integer :: n, p
@@ -598,7 +633,8 @@ contains
     !> The far pairs (e1, e2) of source order n2 listed in work%by_n2(:, first:last): the kernel
     !! on the grid of all their field nodes x the source nodes in one call, y = K diag(w_s)
     !! B_s^T for all field nodes at once, then loc(:, :, e1) = B_f diag(w_f W) y per pair (the
-    !! tensor GL rule of far_points, contracted in this order).
+    !! tensor GL rule of far_points, contracted in this order). With constant coupling kernels
+    !! (rings: x < xi in every far pair) only the diagonal components are on the grid.
     subroutine far_batch(kernel, bx, e2, n2, first, last, work, loc, err)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
@@ -606,7 +642,7 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
         type(error_t), allocatable, intent(out) :: err
-        integer :: q, e1, n1, k0, c, l, r, j
+        integer :: q, n1, k0
         call need_tables(kernel, bx, n2, e2, work)
         k0 = 0
         field_nodes: do q = first, last
@@ -625,29 +661,66 @@ contains
                                 work%g(1:k0, 1:n2, :, :), err)
         if (allocated(err)) return
         work%n_kernel = work%n_kernel + int(k0*n2, int64)
+        call contract_sources(kernel, e2, n2, k0, work)
+        call contract_fields(kernel, e2, first, last, work, loc)
+    end subroutine far_batch
+
+    !> y(k, i, c) = sum_l g(k, l, i, comp(c)) bs(l, c) for the k0 field nodes of a far batch and
+    !! the functions c of source element e2; with constant coupling only i = comp(c) (the
+    !! coupling rows are closed, contract_fields).
+    pure subroutine contract_sources(kernel, e2, n2, k0, work)
+        class(split_kernel_t), intent(in) :: kernel
+        integer, intent(in) :: e2, n2, k0
+        type(work_t), intent(inout) :: work
+        integer :: c, l, i, j
         source_functions: do c = 1, work%n_fun(e2)
             j = work%comp(c, e2)
-            work%y(1:k0, :, c) = 0.0_dp
-            source_nodes: do l = 1, n2
-                work%y(1:k0, 1, c) = work%y(1:k0, 1, c) + &
-                                     work%g(1:k0, l, 1, j)*work%by_order(n2)%bs(l, c, e2)
-                work%y(1:k0, 2, c) = work%y(1:k0, 2, c) + &
-                                     work%g(1:k0, l, 2, j)*work%by_order(n2)%bs(l, c, e2)
-            end do source_nodes
+            components: do i = 1, 2
+                if (kernel%constant_coupling .and. i /= j) cycle components
+                work%y(1:k0, i, c) = work%g(1:k0, 1, i, j)*work%by_order(n2)%bs(1, c, e2)
+                source_nodes: do l = 2, n2
+                    work%y(1:k0, i, c) = work%y(1:k0, i, c) + &
+                                         work%g(1:k0, l, i, j)*work%by_order(n2)%bs(l, c, e2)
+                end do source_nodes
+            end do components
         end do source_functions
+    end subroutine contract_sources
+
+    !> loc(r, c, e1) = sum_k bf(k, r, e1) y(k, comp(r), c) for the far pairs of a batch; with
+    !! constant coupling F_ij (i /= j) the integral of a coupling entry is
+    !! F_ij (int g_r W dx) (int g_c dxi) (work%moment).
+    pure subroutine contract_fields(kernel, e2, first, last, work, loc)
+        class(split_kernel_t), intent(in) :: kernel
+        integer, intent(in) :: e2, first, last
+        type(work_t), intent(in) :: work
+        real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
+        real(dp) :: total
+        integer :: q, e1, n1, k0, c, r, i, j, k
         k0 = 0
         pairs: do q = first, last
             e1 = work%by_n2(1, q)
             n1 = work%by_n2(2, q)
-            columns: do c = 1, work%n_fun(e2)
-                rows: do r = 1, work%n_fun(e1)
-                    loc(r, c, e1) = dot_product(work%by_order(n1)%bf(:, r, e1), &
-                                                work%y(k0 + 1:k0 + n1, work%comp(r, e1), c))
-                end do rows
-            end do columns
+            associate (bf => work%by_order(n1)%bf, y => work%y)
+                columns: do c = 1, work%n_fun(e2)
+                    j = work%comp(c, e2)
+                    rows: do r = 1, work%n_fun(e1)
+                        i = work%comp(r, e1)
+                        if (kernel%constant_coupling .and. i /= j) then
+                            loc(r, c, e1) = kernel%coupling(i)*work%moment(r, 1, e1)* &
+                                            work%moment(c, 2, e2)
+                            cycle rows
+                        end if
+                        total = 0.0_dp
+                        nodes: do k = 1, n1
+                            total = total + bf(k, r, e1)*y(k0 + k, i, c)
+                        end do nodes
+                        loc(r, c, e1) = total
+                    end do rows
+                end do columns
+            end associate
             k0 = k0 + n1
         end do pairs
-    end subroutine far_batch
+    end subroutine contract_fields
 
     !> b(r, i) = g_r(x_i) w_i (times W(x_i) on the field side) for the local functions of e;
     !! the functions are evaluated at the local coordinates loc_xi (exact for the GL nodes of

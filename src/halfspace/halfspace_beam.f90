@@ -45,7 +45,7 @@ contains
 
     !> Galerkin flexibility T of the half-space under the beam (module header).
     subroutine assemble_beam_flexibility(bx, bz, g_f, nu_f, width, t_mat, err, reference, &
-                                         n_kernel)
+                                         n_kernel, far_digits)
         type(basis_t), intent(in) :: bx                 !! basis of sigma_x
         type(basis_t), intent(in) :: bz                 !! basis of sigma_z, same mesh
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
@@ -55,6 +55,8 @@ contains
         type(error_t), allocatable, intent(out) :: err
         logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
         integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
+        real(dp), intent(in), optional :: far_digits    !! accuracy studies: digits of the far
+                                                        !! rules (galerkin_assembly)
         type(strip_kernel_t) :: kernel
         logical :: use_reference
         call new_strip_kernel(kernel, g_f, nu_f, width, err)
@@ -64,7 +66,7 @@ contains
         if (use_reference) then
             call assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
         else
-            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
         end if
         if (allocated(err)) call add_context(err, 'beam half-space operator')
     end subroutine assemble_beam_flexibility

@@ -60,7 +60,8 @@ module halfspace_plate
 contains
 
     !> Galerkin flexibility T of the half-space on the disk r in [0, a] (module header).
-    subroutine assemble_plate_flexibility(bx, bz, g_f, nu_f, t_mat, err, reference, n_kernel)
+    subroutine assemble_plate_flexibility(bx, bz, g_f, nu_f, t_mat, err, reference, n_kernel, &
+                                          far_digits)
         type(basis_t), intent(in) :: bx                 !! basis of sigma_x (radial shear)
         type(basis_t), intent(in) :: bz                 !! basis of sigma_z (pressure), same mesh
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
@@ -69,6 +70,8 @@ contains
         type(error_t), allocatable, intent(out) :: err
         logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
         integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
+        real(dp), intent(in), optional :: far_digits    !! accuracy studies: digits of the far
+                                                        !! rules (galerkin_assembly)
         type(ring_kernel_t) :: kernel
         logical :: use_reference
         call new_ring_kernel(kernel, g_f, nu_f, err)
@@ -85,7 +88,7 @@ contains
         if (use_reference) then
             call assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
         else
-            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
         end if
         if (allocated(err)) call add_context(err, 'plate half-space operator')
     end subroutine assemble_plate_flexibility
@@ -155,6 +158,9 @@ contains
         kernel%g_f = g_f
         kernel%nu_f = nu_f
         kernel%homogeneous = .true.
+        ! r < s: (C2) G_rz = 0 and (C3) G_zr = -(1-2nu)/(2G), constants
+        kernel%constant_coupling = .true.
+        kernel%coupling = [0.0_dp, -(1.0_dp - 2.0_dp*nu_f)/(2.0_dp*g_f)]
     end subroutine new_ring_kernel
 
     !> Field measure 2 pi r.
@@ -215,8 +221,9 @@ contains
     end function regular_pair
 
     !> Kernel values on the grid of field radii x(k) and ring radii s(l) of a well separated
-    !! element pair (no x(k) = s(l), all > 0): f(k, l, i, j) = G_ij(x(k), s(l)), the field
-    !! radii in chunks so that the AGM runs on vectors (interface of split_kernel_t).
+    !! element pair (no x(k) = s(l), all > 0): f(k, l, i, i) = G_ii(x(k), s(l)), the field
+    !! radii in chunks so that the AGM runs on vectors (interface of split_kernel_t; the
+    !! coupling kernels are the constants kernel%coupling there and are not filled).
     subroutine ring_grid_values(self, x, s, f, err)
         class(ring_kernel_t), intent(in) :: self
         real(dp), intent(in) :: x(:), s(:)
@@ -230,38 +237,51 @@ contains
             inv_x(1:n) = 1.0_dp/x(k0:k1)
             sources: do l = 1, size(s)
                 ring(1:n) = s(l)
-                call ring_chunk(self, x(k0:k1), inv_x(1:n), ring(1:n), f(k0:k1, l, :, :))
+                call ring_diagonal(self, x(k0:k1), inv_x(1:n), ring(1:n), f(k0:k1, l, 1, 1), &
+                                   f(k0:k1, l, 2, 2))
             end do sources
         end do chunks
     end subroutine ring_grid_values
 
     !> (C1)–(C4) at the regular pairs (regular_pair) of field radius r(k) and ring radius s(k),
-    !! at most `chunk` of them: f(k, i, j) = G_ij(r(k), s(k)), K(k) and (1 + m1) K - 2 E =
-    !! K sum_{n>=1} 2^n c_n^2 from agm_terms with c_1 = (1 - k')/2 = min(r, s)/(r + s) formed
-    !! exactly.
+    !! at most `chunk` of them: f(k, i, j) = G_ij(r(k), s(k)).
     pure subroutine ring_chunk(kernel, r, inv_r, s, f)
+        type(ring_kernel_t), intent(in) :: kernel
+        real(dp), intent(in) :: r(:)
+        real(dp), intent(in) :: inv_r(:)        !! 1/r(k)
+        real(dp), intent(in) :: s(:)
+        real(dp), intent(out) :: f(:, :, :)
+        real(dp) :: c_step
+        c_step = -(1.0_dp - 2.0_dp*kernel%nu_f)/(2.0_dp*kernel%g_f)
+        call ring_diagonal(kernel, r, inv_r, s, f(:, 1, 1), f(:, 2, 2))
+        f(:, 1, 2) = merge(c_step*(s*inv_r), 0.0_dp, r > s)                   ! (C2)
+        f(:, 2, 1) = merge(c_step, 0.0_dp, s > r)                             ! (C3)
+    end subroutine ring_chunk
+
+    !> (C4) and (C1) at the regular pairs (regular_pair) of field radius r(k) and ring radius
+    !! s(k), at most `chunk` of them: K(k) and (1 + m1) K - 2 E = K sum_{n>=1} 2^n c_n^2 from
+    !! agm_terms with c_1 = (1 - k')/2 = min(r, s)/(r + s) formed exactly.
+    pure subroutine ring_diagonal(kernel, r, inv_r, s, g_rr, g_zz)
         type(ring_kernel_t), intent(in) :: kernel
         real(dp), intent(in) :: r(:)
         real(dp), intent(in) :: inv_r(:)        !! 1/r(k) (shared by the rings of a grid)
         real(dp), intent(in) :: s(:)
-        real(dp), intent(out) :: f(:, :, :)
+        real(dp), intent(out) :: g_rr(:)        !! (C4)
+        real(dp), intent(out) :: g_zz(:)        !! (C1)
         ! fixed size: automatic arrays would be allocated on the heap at every call
         real(dp), dimension(chunk) :: inv_total, k_comp, c1, k_val, rr_sum
-        real(dp) :: c_zz, c_rr, c_step
+        real(dp) :: c_zz, c_rr
         integer :: n
         c_zz = 2.0_dp*(1.0_dp - kernel%nu_f)/(pi*kernel%g_f)
         c_rr = (1.0_dp - kernel%nu_f)/(2.0_dp*pi*kernel%g_f)
-        c_step = -(1.0_dp - 2.0_dp*kernel%nu_f)/(2.0_dp*kernel%g_f)
         n = size(r)
         inv_total(1:n) = 1.0_dp/(r + s)
         k_comp(1:n) = abs(r - s)*inv_total(1:n)
         c1(1:n) = min(r, s)*inv_total(1:n)
         call agm_terms(k_comp(1:n), c1(1:n), k_val(1:n), rr_sum(1:n))
-        f(:, 2, 2) = c_zz*s*inv_total(1:n)*k_val(1:n)                         ! (C1)
-        f(:, 1, 1) = c_rr*((r + s)*inv_r)*k_val(1:n)*rr_sum(1:n)              ! (C4)
-        f(:, 1, 2) = merge(c_step*(s*inv_r), 0.0_dp, r > s)                   ! (C2)
-        f(:, 2, 1) = merge(c_step, 0.0_dp, s > r)                             ! (C3)
-    end subroutine ring_chunk
+        g_zz = c_zz*s*inv_total(1:n)*k_val(1:n)
+        g_rr = c_rr*((r + s)*inv_r)*k_val(1:n)*rr_sum(1:n)
+    end subroutine ring_diagonal
 
     !> Coefficients of ln|r - s| (module header) at regular pairs (regular_pair), at most
     !! `chunk`: K(k') and E(k') from agm_terms started at the modulus k = 2 sqrt(rs)/(r+s).

@@ -53,6 +53,12 @@ module singular_quadrature
     type, abstract :: split_kernel_t
         logical :: homogeneous = .false.   !! homogeneous of degree 0 about x = 0 (ring kernels)
         logical :: translation_invariant = .false.  !! depends on x - xi only (strip kernels)
+        !> The coupling kernels are constants for x < xi: F_12 = coupling(1), F_21 =
+        !! coupling(2) there (the rings: steps at r = s). The far pairs of the fast assembly
+        !! all have x < xi, so it integrates them in closed form and `grid_values` need fill
+        !! only f(:, :, 1, 1) and f(:, :, 2, 2).
+        logical :: constant_coupling = .false.
+        real(dp) :: coupling(2) = 0.0_dp
     contains
         procedure(kernel_values_i), deferred :: values
         procedure :: grid_values => split_grid_values
@@ -190,7 +196,8 @@ contains
     !> Kernel values F (no log split) on the grid of field points x(k) and source points s(l)
     !! of a well separated element pair (no x(k) = s(l)): f(k, l, i, j) = F_ij(x(k), s(l)).
     !! This default calls `values` once per source point; a kernel overrides it where a grid
-    !! can be evaluated faster (the ring kernels: on vectors of field points).
+    !! can be evaluated faster (the ring kernels: on vectors of field points; with
+    !! constant_coupling only the diagonal components f(:, :, i, i)).
     subroutine split_grid_values(self, x, s, f, err)
         class(split_kernel_t), intent(in) :: self
         real(dp), intent(in) :: x(:)               !! field points
