@@ -259,8 +259,11 @@ contains
     end subroutine ring_chunk
 
     !> (C4) and (C1) at the regular pairs (regular_pair) of field radius r(k) and ring radius
-    !! s(k), at most `chunk` of them: K(k) and (1 + m1) K - 2 E = K sum_{n>=1} 2^n c_n^2 from
-    !! agm_terms with c_1 = (1 - k')/2 = min(r, s)/(r + s) formed exactly.
+    !! s(k), at most `chunk` of them, from the AGM started at (r + s, |r - s|) (agm_sums, the
+    !! AGM of agm_terms times r + s: no division by r + s): M = (r + s) M(1, k'), so
+    !! K = pi (r + s)/(2 M) and K sum_{n>=1} 2^n c_n^2 = pi S/(2 M (r + s)) with S the sum of
+    !! the unscaled terms, C_1 = min(r, s) exact; then (C1) = c_zz s pi/(2 M) and
+    !! (C4) = c_rr pi S/(2 M r).
     pure subroutine ring_diagonal(kernel, r, inv_r, s, g_rr, g_zz)
         type(ring_kernel_t), intent(in) :: kernel
         real(dp), intent(in) :: r(:)
@@ -269,18 +272,18 @@ contains
         real(dp), intent(out) :: g_rr(:)        !! (C4)
         real(dp), intent(out) :: g_zz(:)        !! (C1)
         ! fixed size: automatic arrays would be allocated on the heap at every call
-        real(dp), dimension(chunk) :: inv_total, k_comp, c1, k_val, rr_sum
+        real(dp), dimension(chunk) :: a, b, c, inv_mean, rr_sum
         real(dp) :: c_zz, c_rr
         integer :: n
-        c_zz = 2.0_dp*(1.0_dp - kernel%nu_f)/(pi*kernel%g_f)
-        c_rr = (1.0_dp - kernel%nu_f)/(2.0_dp*pi*kernel%g_f)
+        c_zz = (1.0_dp - kernel%nu_f)/kernel%g_f                    ! 2(1-nu)/(pi G) pi/2
+        c_rr = (1.0_dp - kernel%nu_f)/(4.0_dp*kernel%g_f)           ! (1-nu)/(2 pi G) pi/2
         n = size(r)
-        inv_total(1:n) = 1.0_dp/(r + s)
-        k_comp(1:n) = abs(r - s)*inv_total(1:n)
-        c1(1:n) = min(r, s)*inv_total(1:n)
-        call agm_terms(k_comp(1:n), c1(1:n), k_val(1:n), rr_sum(1:n))
-        g_zz = c_zz*s*inv_total(1:n)*k_val(1:n)
-        g_rr = c_rr*((r + s)*inv_r)*k_val(1:n)*rr_sum(1:n)
+        a(1:n) = r + s
+        b(1:n) = abs(r - s)
+        c(1:n) = min(r, s)
+        call agm_sums(n, a, b, c, inv_mean, rr_sum)
+        g_zz = c_zz*s*inv_mean(1:n)
+        g_rr = c_rr*rr_sum(1:n)*inv_mean(1:n)*inv_r
     end subroutine ring_diagonal
 
     !> Coefficients of ln|r - s| (module header) at regular pairs (regular_pair), at most
@@ -289,14 +292,15 @@ contains
         type(ring_kernel_t), intent(in) :: kernel
         real(dp), intent(in) :: r(:), s(:)
         real(dp), intent(out) :: p(:, :, :)
-        real(dp), dimension(chunk) :: inv_total, k_mod, m1, m, k_p, sum_p, e_p, c_zz, c_rr
+        real(dp), dimension(chunk) :: inv_total, k_mod, c1, m1, m, k_p, sum_p, e_p, c_zz, c_rr
         integer :: n
         n = size(r)
         inv_total(1:n) = 1.0_dp/(r + s)
         k_mod(1:n) = 2.0_dp*sqrt(r*s)*inv_total(1:n)
+        c1(1:n) = 0.5_dp*(1.0_dp - k_mod(1:n))
         m1(1:n) = ((r - s)*inv_total(1:n))**2
         m(1:n) = min(1.0_dp, 4.0_dp*r*s*inv_total(1:n)**2)
-        call agm_terms(k_mod(1:n), 0.5_dp*(1.0_dp - k_mod(1:n)), k_p(1:n), sum_p(1:n))
+        call agm_terms(k_mod(1:n), c1(1:n), k_p(1:n), sum_p(1:n))
         e_p(1:n) = k_p(1:n)*(1.0_dp - 0.5_dp*(m1(1:n) + sum_p(1:n)))
         c_zz(1:n) = 2.0_dp*(1.0_dp - kernel%nu_f)*s*inv_total(1:n)/(pi*kernel%g_f)
         c_rr(1:n) = (1.0_dp - kernel%nu_f)*(r + s)/(2.0_dp*pi*kernel%g_f*r)
@@ -402,30 +406,48 @@ contains
         real(dp), intent(in) :: c1(:)       !! c_1 = (1 - k')/2
         real(dp), intent(out) :: k_val(:)   !! K(k)
         real(dp), intent(out) :: rr_sum(:)  !! sum_{n>=1} 2^n c_n^2
-        real(dp), parameter :: agm_tail = 8.0e-5_dp
-        real(dp), dimension(chunk) :: a, b, c, inv_a, c_next   ! fixed size: see ring_chunk
-        real(dp) :: weight
-        integer :: n, k, m
+        real(dp), dimension(chunk) :: a, b, c, inv_mean, sums  ! fixed size: see ring_diagonal
+        integer :: m
         m = size(k_comp)
         a(1:m) = 1.0_dp
         b(1:m) = k_comp
         c(1:m) = c1
-        rr_sum = 0.0_dp
+        call agm_sums(m, a, b, c, inv_mean, sums)
+        k_val = 0.5_dp*pi*inv_mean(1:m)
+        rr_sum = sums(1:m)
+    end subroutine agm_terms
+
+    !> The AGM M(a_0, b_0) of the first m entries (a_0 >= b_0 > 0 in a, b and c_1 =
+    !! (a_0 - b_0)/2 in c, formed exactly by the caller where it can be; overwritten) as 1/M,
+    !! and sum_{n>=1} 2^n c_n^2, with the closed tail of agm_terms (scale-free: c_(n+1) <=
+    !! agm_tail a_n). All entries step together: one vector loop per step, which also forms
+    !! the next c. Fixed-size arrays of the caller: no copies, no heap temporaries.
+    pure subroutine agm_sums(m, a, b, c, inv_mean, rr_sum)
+        integer, intent(in) :: m
+        real(dp), intent(inout) :: a(chunk), b(chunk), c(chunk)
+        real(dp), intent(out) :: inv_mean(chunk)  !! 1/M(a_0, b_0)
+        real(dp), intent(out) :: rr_sum(chunk)    !! sum_{n>=1} 2^n c_n^2
+        real(dp), parameter :: agm_tail = 8.0e-5_dp
+        real(dp) :: weight, root, inv_a, c_next
+        integer :: n, k
+        rr_sum(1:m) = 0.0_dp
         weight = 2.0_dp
         agm: do n = 1, 64
-            if (n > 1) c(1:m) = 0.5_dp*(a(1:m) - b(1:m))
             if (all(c(1:m) <= agm_tail*a(1:m))) exit agm
             lanes: do k = 1, m
                 rr_sum(k) = rr_sum(k) + weight*c(k)*c(k)
-                b(k) = sqrt(a(k)*b(k))
+                root = sqrt(a(k)*b(k))
                 a(k) = a(k) - c(k)
+                b(k) = root
+                c(k) = 0.5_dp*(a(k) - b(k))
             end do lanes
             weight = 2.0_dp*weight
         end do agm
-        a(1:m) = a(1:m) - c(1:m)                            ! a_(n+1)
-        inv_a(1:m) = 1.0_dp/a(1:m)
-        c_next(1:m) = 0.25_dp*c(1:m)*c(1:m)*inv_a(1:m)      ! c_(n+2)
-        rr_sum = rr_sum + weight*(c(1:m)*c(1:m) + 2.0_dp*c_next(1:m)*c_next(1:m))
-        k_val = 0.5_dp*pi*inv_a(1:m)*(1.0_dp + c_next(1:m)*inv_a(1:m))   ! pi/(2 (a - c_next))
-    end subroutine agm_terms
+        tail: do k = 1, m
+            inv_a = 1.0_dp/(a(k) - c(k))                       ! 1/a_(n+1)
+            c_next = 0.25_dp*c(k)*c(k)*inv_a                    ! c_(n+2)
+            rr_sum(k) = rr_sum(k) + weight*(c(k)*c(k) + 2.0_dp*c_next*c_next)
+            inv_mean(k) = inv_a*(1.0_dp + c_next*inv_a)         ! 1/(a_(n+1) - c_(n+2))
+        end do tail
+    end subroutine agm_sums
 end module halfspace_plate
