@@ -37,7 +37,6 @@ module halfspace_beam
         real(dp) :: width = 1.0_dp     !! beam width b [length]
     contains
         procedure :: values => strip_values
-        procedure :: field_weight => strip_field_weight
         procedure :: log_length => strip_log_length
     end type strip_kernel_t
 
@@ -126,14 +125,8 @@ contains
         kernel%nu_f = nu_f
         kernel%width = width
         kernel%translation_invariant = .true.
+        kernel%measure = [1.0_dp, 0.0_dp]       ! line loads
     end subroutine new_strip_kernel
-
-    !> Field measure 1 (line loads).
-    pure real(dp) function strip_field_weight(self, x)
-        class(strip_kernel_t), intent(in) :: self
-        real(dp), intent(in) :: x
-        strip_field_weight = 1.0_dp
-    end function strip_field_weight
 
     !> The remainder of the split is analytic within |X| < h = b/2 (branch points +-i h).
     pure real(dp) function strip_log_length(self, x_sing)

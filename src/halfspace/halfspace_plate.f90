@@ -53,7 +53,6 @@ module halfspace_plate
     contains
         procedure :: values => ring_values
         procedure :: grid_values => ring_grid_values
-        procedure :: field_weight => ring_field_weight
         procedure :: log_length => ring_log_length
     end type ring_kernel_t
 
@@ -158,17 +157,11 @@ contains
         kernel%g_f = g_f
         kernel%nu_f = nu_f
         kernel%homogeneous = .true.
+        kernel%measure = [0.0_dp, 2.0_dp*pi]     ! 2 pi r
         ! r < s: (C2) G_rz = 0 and (C3) G_zr = -(1-2nu)/(2G), constants
         kernel%constant_coupling = .true.
         kernel%coupling = [0.0_dp, -(1.0_dp - 2.0_dp*nu_f)/(2.0_dp*g_f)]
     end subroutine new_ring_kernel
-
-    !> Field measure 2 pi r.
-    pure real(dp) function ring_field_weight(self, x)
-        class(ring_kernel_t), intent(in) :: self
-        real(dp), intent(in) :: x
-        ring_field_weight = 2.0_dp*pi*x
-    end function ring_field_weight
 
     !> The split is analytic for |r - s| <= r/2 about a singular point r (K' singular at rs = 0).
     pure real(dp) function ring_log_length(self, x_sing)
