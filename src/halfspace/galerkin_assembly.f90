@@ -7,11 +7,13 @@
 !! shared by all local basis products of the pair:
 !!  * well separated pairs (gap >= near_ratio times the longer element): tensor Gauss–Legendre,
 !!    n points per direction from the Bernstein-ellipse parameter of gap/size and the degree of
-!!    the polynomial factor (`far_points`, 1e-15 per direction), contracted as
-!!    L = B_f diag(w_f W) K diag(w_s) B_s^T. The far pairs of one source element that share its
-!!    order are done together (`far_batch`): the kernel on the grid of all their field nodes x
-!!    the source nodes in one call (`grid_values`, vectorised for the rings), then
-!!    K diag(w_s) B_s^T for all field nodes at once, then B_f per pair;
+!!    the polynomial factor (`far_points`, 1e-13 per direction: T to round-off of its largest
+!!    entry), contracted as L = B_f diag(w_f W) K diag(w_s) B_s^T. The far pairs of one source
+!!    element that share its order are done together (`far_batch`): the kernel on the grid of
+!!    all their field nodes x the source nodes in one call (`grid_values`, vectorised for the
+!!    rings), then K diag(w_s) B_s^T for all field nodes at once, then B_f per pair. Coupling
+!!    kernels that are constant on x < xi (the rings' steps; every far pair has x < xi) are not
+!!    on the grid: their entries are the constant times the element moments of the functions;
 !!  * touching and nearly touching pairs, kernels that depend on one variable v only (strip:
 !!    v = x - xi; rings, homogeneous of degree 0: v = x/xi, ln|x - xi| = ln xi + ln|v - 1|):
 !!    the logarithm is integrated analytically by the product-log rule of `singular_quadrature`
@@ -523,11 +525,15 @@ contains
     !! singularity; the polynomial of degree p grows like rho^p on it). n = (far_digits/log10 rho
     !! + p)/2 rounded up keeps it below 10^-far_digits of int |poly_p k| for k = 1/d, ln d and
     !! for the worst (Legendre) polynomial of degree p <= 3, as measured with 40-digit
-    !! arithmetic at ratios 2 to 3000. far_digits = 15 (16.5 before): against rules of 20
-    !! digits, T moves by at most 1e-15 of its largest entry and each entry by at most 1.3e-15
-    !! of itself on uniform meshes (as with 16.5; 14 gives 6e-15, 13 gives 5e-14), for 12 %
-    !! fewer kernel evaluations (doc/METHOD.md). The least n >= 2 (at most n_max) whose limit
-    !! (far_limits) the ratio reaches.
+    !! arithmetic at ratios 2 to 3000. The contract of T is its entries to about 1e-14 of the
+    !! LARGEST entry, and the kernels here are logarithmic (milder than 1/d, for which the
+    !! estimate was made): far_digits = 13 (15 before, 16.5 before that) moves T by at most
+    !! 1.0e-15 of its largest entry against rules of 20 digits (1.4e-15 for the beam), the
+    !! round-off level of the assembly (3e-16 to 7e-16 with 15 digits), for 20 % fewer kernel
+    !! evaluations; an entry far below the largest may move by more relative to itself
+    !! (5e-14 on uniform P1 meshes, 6e-12 for the small entries of EDGES P2/S2). 12 digits give
+    !! 8e-15 of the largest (example accuracy_far_rules; output/bench/assembly_before_after.md).
+    !! The least n >= 2 (at most n_max) whose limit (far_limits) the ratio reaches.
     pure integer function far_points(limit, ratio) result(n)
         real(dp), intent(in) :: limit(2:n_max)  !! work%far_limit(:, p), p the polynomial degree
         real(dp), intent(in) :: ratio           !! gap / element length, >= near_ratio

@@ -22,7 +22,9 @@
 !! k, its k^4 behaviour as k -> 0 included (`agm_terms`); GSL's Carlson forms only where
 !! m1 < 1e-20 (their asymptotic branch). The tensor rules of well separated element pairs
 !! evaluate the kernels on a grid of radii, the AGM running on vectors of field radii
-!! (`ring_grid_values`).
+!! (`ring_grid_values`) and started at (r + s, |r - s|) (`ring_diagonal`: one division per
+!! evaluation); they need only (C1) and (C4): for r < s, (C2) is 0 and (C3) a constant
+!! (split_kernel_t%coupling).
 !!
 !! Operator: T_ab = int_0^a int_0^a g_a(r) G(r,s) g_b(s) ds 2 pi r dr, blocks
 !! [T_xx T_xz; T_zx T_zz] (bx coefficients first); symmetric by reciprocity r G_ij(r,s) =
