@@ -104,6 +104,8 @@ module galerkin_assembly
         type(order_table_t) :: by_order(n_max)     !! nodes and weighted functions, by order
         logical, allocatable :: tabulated(:, :)    !! tabulated(n, e): by_order(n) done on e
         real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
+        integer, allocatable :: same(:, :)         !! same(r, e): the first local function of e
+                                                   !! equal to g_r (bx and bz of one family)
         real(dp) :: far_limit(2:n_max, 0:max_degree) = 0.0_dp  !! see far_points
         real(dp), allocatable :: raise_ratio(:)    !! see field_degree
         real(dp), allocatable :: moment(:, :, :)   !! moment(r, 1, e) = int g_r W dx,
@@ -406,14 +408,23 @@ contains
     pure subroutine number_elements(bx, bz, work)
         type(basis_t), intent(in) :: bx, bz
         type(work_t), intent(inout) :: work
-        integer :: e
+        integer :: e, r, q
         allocate (work%n_fun(bx%ne), work%comp(n_loc, bx%ne), work%glob(n_loc, bx%ne))
-        allocate (work%poly(3, n_loc, bx%ne))
+        allocate (work%poly(3, n_loc, bx%ne), work%same(n_loc, bx%ne))
         work%comp = 0
         work%glob = 0
         elements: do e = 1, bx%ne
             call element_numbers(bx, bz, e, work%n_fun(e), work%comp(:, e), work%glob(:, e))
             call element_polynomials(bx, bz, e, work%poly(:, :, e))
+            functions: do r = 1, n_loc
+                work%same(r, e) = r
+                earlier: do q = 1, r - 1
+                    if (all(work%poly(:, q, e) == work%poly(:, r, e))) then
+                        work%same(r, e) = q
+                        exit earlier
+                    end if
+                end do earlier
+            end do functions
         end do elements
     end subroutine number_elements
 
@@ -904,8 +915,9 @@ contains
         integer, intent(in) :: k0, m
         real(dp), intent(inout) :: loc(n_loc, n_loc)
         ! fixed size: automatic arrays would be allocated on the heap at every call
-        real(dp), dimension(part) :: d, t, inv_t, lo, len, y, off1, off2, wj, l1, l2, prod
+        real(dp), dimension(part) :: d, t, inv_t, lo, len, y, off1, off2, wj, l1, l2
         real(dp) :: c(part, 2, 2), bf(part, max_across, n_loc), bs(part, max_across, n_loc)
+        real(dp) :: prod(part, n_loc, n_loc)
         real(dp) :: a1, a2, h1, h2, to_l1, to_l2
         integer :: i, j, k, r, col, n_across
         n_across = work%n_across
@@ -951,24 +963,35 @@ contains
             wj(1:m) = wj(1:m)*(kernel%measure(0) + kernel%measure(1)*(a1 + off1(1:m)))
             l1(1:m) = to_l1*off1(1:m) - 1.0_dp
             l2(1:m) = to_l2*off2(1:m) - 1.0_dp
+            ! a function that repeats an earlier one (bx and bz of one family) is not formed again
             field_functions: do r = 1, map%nf
+                if (work%same(r, e1) /= r) cycle field_functions
                 bf(1:m, j, r) = wj(1:m)*(work%poly(1, r, e1) + l1(1:m)*(work%poly(2, r, e1) + &
                                                               l1(1:m)*work%poly(3, r, e1)))
             end do field_functions
             source_functions: do col = 1, map%ns
+                if (work%same(col, e2) /= col) cycle source_functions
                 bs(1:m, j, col) = work%poly(1, col, e2) + l2(1:m)*(work%poly(2, col, e2) + &
                                                           l2(1:m)*work%poly(3, col, e2))
             end do source_functions
         end do across
+        ! the across integral of each product of distinct functions
+        product_columns: do col = 1, map%ns
+            if (work%same(col, e2) /= col) cycle product_columns
+            product_rows: do r = 1, map%nf
+                if (work%same(r, e1) /= r) cycle product_rows
+                prod(1:m, r, col) = bf(1:m, 1, r)*bs(1:m, 1, col)
+                sum_across: do j = 2, n_across
+                    prod(1:m, r, col) = prod(1:m, r, col) + bf(1:m, j, r)*bs(1:m, j, col)
+                end do sum_across
+            end do product_rows
+        end do product_columns
         ! loc += the weighted kernel (comp_f, comp_s) times the across integral of each product
         columns: do col = 1, map%ns
             rows: do r = 1, map%nf
-                prod(1:m) = bf(1:m, 1, r)*bs(1:m, 1, col)
-                sum_across: do j = 2, n_across
-                    prod(1:m) = prod(1:m) + bf(1:m, j, r)*bs(1:m, j, col)
-                end do sum_across
                 loc(r, col) = loc(r, col) + &
-                              dot_product4(c(1:m, map%comp_f(r), map%comp_s(col)), prod(1:m))
+                              dot_product4(c(1:m, map%comp_f(r), map%comp_s(col)), &
+                                           prod(1:m, work%same(r, e1), work%same(col, e2)))
             end do rows
         end do columns
     end subroutine add_across
