@@ -391,11 +391,15 @@ contains
     !! (1 + k'^2) K - 2 E = K rr_sum and E = K (1 - (k^2 + rr_sum)/2) (DLMF 19.8.6, c_0 = k).
     !! c_1 is given (formed exactly by the caller where it can be); the later c_n may carry an
     !! absolute error of an ulp of a_n, which changes rr_sum by an ulp relative to its first
-    !! term 2 c_1^2 only (c_2 <= c_1^2/(4 a_2)). Once c = c_(n+1) <= agm_tail a_n, the rest is
-    !! closed: c_(n+2) = c^2/(4 a_(n+2)) = c^2/(4 a_(n+1)) (1 + O(1e-9)), an absolute error
-    !! below 1e-17 a, and c_(n+3) <= agm_tail^4/64 a < 1e-18 a is below the rounding of a; so
-    !! M = a_(n+1) - c_(n+2) without the square roots of two more steps (4 instead of 6 for
-    !! k' = 0.01). All entries (at most `chunk`) step together, so the loop runs on vectors.
+    !! term 2 c_1^2 only (c_2 <= c_1^2/(4 a_2)). Once c = c_(n+1) <= agm_tail a_n (0.02), the
+    !! rest is closed (agm_sums): (a_(n+1), b_(n+1)) = a_(n+1) (1, sqrt(1 - x^2)) with
+    !! x = c/a_(n+1) <= 0.0205, whose AGM is a_(n+1) pi/(2 K(x)) and whose terms (c_(n+1)
+    !! = a_(n+1) x first) sum to a_(n+1)^2 2 (1 - E(x)/K(x)) (DLMF 19.8.6 again), both as
+    !! series in t = x^2 <= 4.2e-4: 2 K(x)/pi = 1 + t/4 + 9t^2/64 + 25t^3/256 + 1225t^4/16384
+    !! + O(0.061 t^5) and 2 (1 - E/K) = t (1 + t/8 + t^2/16 + 41t^3/1024 + 59t^4/2048 +
+    !! O(0.023 t^5)), truncated below 1e-18: one or two square roots fewer than the steps to
+    !! c <= 1e-17 a (2.2 steps instead of 3.2 on average over the far pairs of N_e = 100).
+    !! All entries (at most `chunk`) step together, so the loop runs on vectors.
     pure subroutine agm_terms(k_comp, c1, k_val, rr_sum)
         real(dp), intent(in) :: k_comp(:)   !! k' in (0, 1]
         real(dp), intent(in) :: c1(:)       !! c_1 = (1 - k')/2
@@ -422,8 +426,8 @@ contains
         real(dp), intent(inout) :: a(chunk), b(chunk), c(chunk)
         real(dp), intent(out) :: inv_mean(chunk)  !! 1/M(a_0, b_0)
         real(dp), intent(out) :: rr_sum(chunk)    !! sum_{n>=1} 2^n c_n^2
-        real(dp), parameter :: agm_tail = 8.0e-5_dp
-        real(dp) :: weight, root, inv_a, c_next
+        real(dp), parameter :: agm_tail = 0.02_dp
+        real(dp) :: weight, root, inv_a, t
         integer :: n, k
         rr_sum(1:m) = 0.0_dp
         weight = 2.0_dp
@@ -438,11 +442,14 @@ contains
             end do lanes
             weight = 2.0_dp*weight
         end do agm
+        ! the rest in closed form (agm_terms): x = c_(n+1)/a_(n+1) <= 0.0205, t = x^2
         tail: do k = 1, m
-            inv_a = 1.0_dp/(a(k) - c(k))                       ! 1/a_(n+1)
-            c_next = 0.25_dp*c(k)*c(k)*inv_a                    ! c_(n+2)
-            rr_sum(k) = rr_sum(k) + weight*(c(k)*c(k) + 2.0_dp*c_next*c_next)
-            inv_mean(k) = inv_a*(1.0_dp + c_next*inv_a)         ! 1/(a_(n+1) - c_(n+2))
+            inv_a = 1.0_dp/(a(k) - c(k))                        ! 1/a_(n+1)
+            t = (c(k)*inv_a)**2
+            inv_mean(k) = inv_a*(1.0_dp + t*(0.25_dp + t*(9.0_dp/64.0_dp + &
+                          t*(25.0_dp/256.0_dp + t*(1225.0_dp/16384.0_dp)))))
+            rr_sum(k) = rr_sum(k) + weight*c(k)*c(k)*(1.0_dp + t*(0.125_dp + t*(0.0625_dp + &
+                        t*(41.0_dp/1024.0_dp + t*(59.0_dp/2048.0_dp)))))
         end do tail
     end subroutine agm_sums
 end module halfspace_plate
