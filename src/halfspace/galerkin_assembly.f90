@@ -59,10 +59,10 @@ module galerkin_assembly
                                          !! (across_points)
     integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
     integer, parameter :: max_batch = 256  !! field nodes of one far batch (>= n_max)
-    integer, parameter :: batch_rows = max_batch + 8  !! leading dimension of the batch arrays:
-                                         !! not a multiple of 512 bytes, so that their columns
-                                         !! do not alias in the caches (4 kB strides measured
-                                         !! 10 % slower at N_e = 100)
+    integer, parameter :: batch_rows = max_batch + 8  !! leading dimension of the batch arrays
+                                         !! g and y: off the 4 kB multiples, so that their
+                                         !! columns do not fall on one cache set (a precaution:
+                                         !! no difference measured)
     integer, parameter :: part = 64      !! nodes of v added together (add_across)
     integer, parameter :: min_parallel = 100 !! fewer elements: one thread (below about 3 ms
                                              !! a thread start-up, or a colour's barrier
