@@ -16,16 +16,14 @@ program bench_assembly
     use halfspace_plate, only: assemble_plate_flexibility
     use halfspace_beam, only: assemble_beam_flexibility
     implicit none
-    integer, parameter :: n_case = 10
-    integer, parameter :: ne_case(n_case) = [20, 80, 320, 1000, 80, 20, 80, 320, 1000, 80]
-    logical, parameter :: plate_case(n_case) = [.true., .true., .true., .true., .true., &
-                                                 .false., .false., .false., .false., .false.]
-    integer, parameter :: fam_case(n_case) = [INTERP_P1, INTERP_P1, INTERP_P1, INTERP_P1, &
-                                              INTERP_P2, INTERP_P1, INTERP_P1, INTERP_P1, &
-                                              INTERP_P1, INTERP_P2]
-    integer, parameter :: fam_z_case(n_case) = [INTERP_P1, INTERP_P1, INTERP_P1, INTERP_P1, &
-                                                INTERP_S2, INTERP_P1, INTERP_P1, INTERP_P1, &
-                                                INTERP_P1, INTERP_S2]
+    integer, parameter :: n_case = 14
+    integer, parameter :: ne_case(n_case) = [20, 50, 80, 100, 200, 320, 500, 1000, 80, &
+                                             20, 80, 320, 1000, 80]
+    logical, parameter :: plate_case(n_case) = [spread(.true., 1, 9), spread(.false., 1, 5)]
+    logical, parameter :: quadratic_case(n_case) = [spread(.false., 1, 8), .true., &
+                                                    spread(.false., 1, 4), .true.]
+    integer, parameter :: fam_case(n_case) = merge(INTERP_P2, INTERP_P1, quadratic_case)
+    integer, parameter :: fam_z_case(n_case) = merge(INTERP_S2, INTERP_P1, quadratic_case)
     integer :: i, max_ne, ref_max_ne, threads
     character(len=32) :: arg
 

@@ -7,11 +7,13 @@
 !! shared by all local basis products of the pair:
 !!  * well separated pairs (gap >= near_ratio times the longer element): tensor Gauss–Legendre,
 !!    n points per direction from the Bernstein-ellipse parameter of gap/size and the degree of
-!!    the polynomial factor (`far_points`, 1e-15 per direction), contracted as
-!!    L = B_f diag(w_f W) K diag(w_s) B_s^T. The far pairs of one source element that share its
-!!    order are done together (`far_batch`): the kernel on the grid of all their field nodes x
-!!    the source nodes in one call (`grid_values`, vectorised for the rings), then
-!!    K diag(w_s) B_s^T for all field nodes at once, then B_f per pair;
+!!    the polynomial factor (`far_points`, 1e-13 per direction: T to round-off of its largest
+!!    entry), contracted as L = B_f diag(w_f W) K diag(w_s) B_s^T. The far pairs of one source
+!!    element that share its order are done together (`far_batch`): the kernel on the grid of
+!!    all their field nodes x the source nodes in one call (`grid_values`, vectorised for the
+!!    rings), then K diag(w_s) B_s^T for all field nodes at once, then B_f per pair. Coupling
+!!    kernels that are constant on x < xi (the rings' steps; every far pair has x < xi) are not
+!!    on the grid: their entries are the constant times the element moments of the functions;
 !!  * touching and nearly touching pairs, kernels that depend on one variable v only (strip:
 !!    v = x - xi; rings, homogeneous of degree 0: v = x/xi, ln|x - xi| = ln xi + ln|v - 1|):
 !!    the logarithm is integrated analytically by the product-log rule of `singular_quadrature`
@@ -52,11 +54,15 @@ module galerkin_assembly
     public :: assemble_split_kernel
 
     integer, parameter :: n_loc = 2*max_local    !! local functions of one element, both fields
-    real(dp), parameter :: far_digits = 15.0_dp  !! see far_points
+    real(dp), parameter :: default_far_digits = 13.0_dp  !! see far_points
     integer, parameter :: max_across = 4 !! GL points across the reduced variable, at most
                                          !! (across_points)
     integer, parameter :: max_degree = 3 !! polynomial degree of a far integrand's factor, at most
     integer, parameter :: max_batch = 256  !! field nodes of one far batch (>= n_max)
+    integer, parameter :: batch_rows = max_batch + 8  !! leading dimension of the batch arrays
+                                         !! g and y: off the 4 kB multiples, so that their
+                                         !! columns do not fall on one cache set (a precaution:
+                                         !! no difference measured)
     integer, parameter :: part = 64      !! nodes of v added together (add_across)
     integer, parameter :: min_parallel = 100 !! fewer elements: one thread (below about 3 ms
                                              !! a thread start-up, or a colour's barrier
@@ -76,7 +82,6 @@ module galerkin_assembly
 
     !> Nodes of one GL rule on every element and the weighted local functions there.
     type :: order_table_t
-        logical, allocatable :: done(:)            !! done(e): element e tabulated
         real(dp), allocatable :: x(:, :)           !! x(i, e): node i on element e
         real(dp), allocatable :: bf(:, :, :)       !! bf(i, r, e) = g_r(x_i) h w_i W(x_i), field
         real(dp), allocatable :: bs(:, :, :)       !! bs(i, r, e) = g_r(x_i) h w_i, source
@@ -97,9 +102,15 @@ module galerkin_assembly
         integer, allocatable :: comp(:, :)         !! their field (1 = bx, 2 = bz)
         integer, allocatable :: glob(:, :)         !! their global number in T
         type(order_table_t) :: by_order(n_max)     !! nodes and weighted functions, by order
+        logical, allocatable :: tabulated(:, :)    !! tabulated(n, e): by_order(n) done on e
         real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
+        integer, allocatable :: same(:, :)         !! same(r, e): the first local function of e
+                                                   !! equal to g_r (bx and bz of one family)
         real(dp) :: far_limit(2:n_max, 0:max_degree) = 0.0_dp  !! see far_points
         real(dp), allocatable :: raise_ratio(:)    !! see field_degree
+        real(dp), allocatable :: moment(:, :, :)   !! moment(r, 1, e) = int g_r W dx,
+                                                   !! moment(r, 2, e) = int g_r dx on e
+                                                   !! (constant coupling, contract_fields)
         integer :: n_across = max_across           !! see across_points
         integer, allocatable :: far(:, :)          !! (e1, n1, n2) of the far pairs of a column
         integer, allocatable :: by_n2(:, :)        !! the same (e1, n1), sorted by n2
@@ -112,13 +123,16 @@ module galerkin_assembly
 contains
 
     !> T (module header); n_kernel returns the number of kernel evaluations (point pairs).
-    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z, same mesh
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         type(error_t), allocatable, intent(out) :: err
         integer(int64), intent(out), optional :: n_kernel
+        real(dp), intent(in), optional :: far_digits  !! accuracy studies only: digits of the
+                                                      !! far rules (far_points) instead of
+                                                      !! default_far_digits
         type(work_t) :: work
         type(work_t), allocatable :: works(:)
         real(dp), allocatable :: column_loc(:, :, :, :, :)
@@ -128,7 +142,8 @@ contains
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
-        call new_work(kernel, bx, bz, work)
+        call copy_gauss_tables(work%tab)
+        call new_work(kernel, bx, bz, work, far_digits)
         call translates(kernel, bx, work%poly, shift_ok)
         ! translated pairs are copied from the previous column: one thread does the columns in
         ! order then (O(N_e) pair integrals); no nested teams (the cases of a sweep already run
@@ -179,19 +194,39 @@ contains
         if (present(n_kernel)) n_kernel = sum(works%n_kernel)
     end subroutine assemble_split_kernel
 
-    !> Work of one thread: GL tables (filled when needed), the numbering and polynomials of
-    !! every element and the far-rule limits.
-    pure subroutine new_work(kernel, bx, bz, work)
+    !> All GL rules and the product-log weights, tabulated once per process (the same numbers
+    !! at every assembly; computing the rules took 2 % of an assembly at N_e = 50). The
+    !! assembly may run inside a parallel sweep: the first one fills the tables in a critical
+    !! section.
+    subroutine copy_gauss_tables(tab)
+        type(gauss_tables_t), intent(out) :: tab
+        type(gauss_tables_t), save :: rules
+        logical, save :: ready = .false.
+        !$omp critical (galerkin_gauss_rules)
+        if (.not. ready) then
+            call new_gauss_tables(rules)
+            ready = .true.
+        end if
+        tab = rules
+        !$omp end critical (galerkin_gauss_rules)
+    end subroutine copy_gauss_tables
+
+    !> Work of one thread (its GL tables already copied: copy_gauss_tables): the numbering and
+    !! polynomials of every element, the far-rule limits and the element moments.
+    pure subroutine new_work(kernel, bx, bz, work, far_digits)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         type(work_t), intent(inout) :: work
-        real(dp) :: q
+        real(dp), intent(in), optional :: far_digits
+        real(dp) :: q, digits
         integer :: e
-        call new_gauss_tables(work%tab, lazy=.true.)
         work%n_across = across_points(kernel, bx, bz)
         call need_order(work%tab, work%n_across)
         call number_elements(bx, bz, work)
-        call far_limits(work%far_limit)
+        digits = default_far_digits
+        if (present(far_digits)) digits = far_digits
+        call far_limits(digits, work%far_limit)
+        if (kernel%constant_coupling) call element_moments(kernel, bx, work)
         allocate (work%raise_ratio(bx%ne), source=huge(1.0_dp))
         if (kernel%homogeneous) then
             elements: do e = 1, bx%ne
@@ -201,14 +236,39 @@ contains
         end if
     end subroutine new_work
 
+    !> work%moment: the integrals of the local functions of every element, with and without
+    !! the field measure W, by 3-point GL (exact: g_r W has degree <= 3).
+    pure subroutine element_moments(kernel, bx, work)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(work_t), intent(inout) :: work
+        integer, parameter :: n = 3
+        real(dp) :: h, xi, x, b(n_loc)
+        integer :: e, i
+        call need_order(work%tab, n)
+        allocate (work%moment(n_loc, 2, bx%ne), source=0.0_dp)
+        elements: do e = 1, bx%ne
+            h = bx%x(e) - bx%x(e - 1)
+            nodes: do i = 1, n
+                xi = 2.0_dp*work%tab%v(i, n) - 1.0_dp
+                x = bx%x(e - 1) + h*work%tab%v(i, n)
+                b = work%poly(1, :, e) + xi*(work%poly(2, :, e) + xi*work%poly(3, :, e))
+                b = b*(h*work%tab%w(i, n))
+                work%moment(:, 1, e) = work%moment(:, 1, e) + b*kernel%field_weight(x)
+                work%moment(:, 2, e) = work%moment(:, 2, e) + b
+            end do nodes
+        end do elements
+    end subroutine element_moments
+
     !> The far-batch and point-pair arrays of one thread's work (not in the work copied to
     !! every thread: about 100 kB that every assembly would copy).
     pure subroutine new_batch_arrays(bx, work)
         type(basis_t), intent(in) :: bx
         type(work_t), intent(inout) :: work
         call reserve(work, 1024)
+        allocate (work%tabulated(n_max, bx%ne), source=.false.)
         allocate (work%far(3, bx%ne), work%by_n2(2, bx%ne), work%gx(max_batch), &
-                  work%g(max_batch, 4, 2, 2), work%y(max_batch, 2, n_loc))
+                  work%g(batch_rows, 4, 2, 2), work%y(batch_rows, 2, n_loc))
     end subroutine new_batch_arrays
 
     !> The least stride s such that elements e and e + s have no function in common, for
@@ -348,14 +408,23 @@ contains
     pure subroutine number_elements(bx, bz, work)
         type(basis_t), intent(in) :: bx, bz
         type(work_t), intent(inout) :: work
-        integer :: e
+        integer :: e, r, q
         allocate (work%n_fun(bx%ne), work%comp(n_loc, bx%ne), work%glob(n_loc, bx%ne))
-        allocate (work%poly(3, n_loc, bx%ne))
+        allocate (work%poly(3, n_loc, bx%ne), work%same(n_loc, bx%ne))
         work%comp = 0
         work%glob = 0
         elements: do e = 1, bx%ne
             call element_numbers(bx, bz, e, work%n_fun(e), work%comp(:, e), work%glob(:, e))
             call element_polynomials(bx, bz, e, work%poly(:, :, e))
+            functions: do r = 1, n_loc
+                work%same(r, e) = r
+                earlier: do q = 1, r - 1
+                    if (all(work%poly(:, q, e) == work%poly(:, r, e))) then
+                        work%same(r, e) = q
+                        exit earlier
+                    end if
+                end do earlier
+            end do functions
         end do elements
     end subroutine number_elements
 
@@ -406,14 +475,13 @@ contains
         type(work_t), intent(inout) :: work
         real(dp) :: xi, b(n_loc), h
         integer :: i
-        if (.not. allocated(work%by_order(n)%done)) then
+        if (.not. allocated(work%by_order(n)%x)) then
             call need_order(work%tab, n)
             associate (tbl => work%by_order(n))
-                allocate (tbl%done(bx%ne), source=.false.)
                 allocate (tbl%x(n, bx%ne), tbl%bf(n, n_loc, bx%ne), tbl%bs(n, n_loc, bx%ne))
             end associate
         end if
-        if (work%by_order(n)%done(e)) return
+        if (work%tabulated(n, e)) return
         h = bx%x(e) - bx%x(e - 1)
         associate (tbl => work%by_order(n))
             nodes: do i = 1, n
@@ -423,8 +491,8 @@ contains
                 tbl%bs(i, :, e) = b*(h*work%tab%w(i, n))
                 tbl%bf(i, :, e) = b*(h*work%tab%w(i, n)*kernel%field_weight(tbl%x(i, e)))
             end do nodes
-            tbl%done(e) = .true.
         end associate
+        work%tabulated(n, e) = .true.
     end subroutine need_tables
 
     !> Functions nonzero on element e: count, field (1 = bx, 2 = bz) and global number.
@@ -468,11 +536,15 @@ contains
     !! singularity; the polynomial of degree p grows like rho^p on it). n = (far_digits/log10 rho
     !! + p)/2 rounded up keeps it below 10^-far_digits of int |poly_p k| for k = 1/d, ln d and
     !! for the worst (Legendre) polynomial of degree p <= 3, as measured with 40-digit
-    !! arithmetic at ratios 2 to 3000. far_digits = 15 (16.5 before): against rules of 20
-    !! digits, T moves by at most 1e-15 of its largest entry and each entry by at most 1.3e-15
-    !! of itself on uniform meshes (as with 16.5; 14 gives 6e-15, 13 gives 5e-14), for 12 %
-    !! fewer kernel evaluations (doc/METHOD.md). The least n >= 2 (at most n_max) whose limit
-    !! (far_limits) the ratio reaches.
+    !! arithmetic at ratios 2 to 3000. The contract of T is its entries to about 1e-14 of the
+    !! LARGEST entry, and the kernels here are logarithmic (milder than 1/d, for which the
+    !! estimate was made): far_digits = 13 (15 before, 16.5 before that) moves T by at most
+    !! 1.0e-15 of its largest entry against rules of 20 digits (1.4e-15 for the beam), the
+    !! round-off level of the assembly (3e-16 to 7e-16 with 15 digits), for 20 % fewer kernel
+    !! evaluations; an entry far below the largest may move by more relative to itself
+    !! (5e-14 on uniform P1 meshes, 6e-12 for the small entries of EDGES P2/S2). 12 digits give
+    !! 8e-15 of the largest (example accuracy_far_rules; output/bench/assembly_before_after.md).
+    !! The least n >= 2 (at most n_max) whose limit (far_limits) the ratio reaches.
     pure integer function far_points(limit, ratio) result(n)
         real(dp), intent(in) :: limit(2:n_max)  !! work%far_limit(:, p), p the polynomial degree
         real(dp), intent(in) :: ratio           !! gap / element length, >= near_ratio
@@ -487,7 +559,8 @@ contains
     !! far_points: n >= (far_digits/log10 rho + p)/2 is rho >= rho_n = 10^(far_digits/(2n - p)),
     !! i.e. ratio >= (c_n - 1)/2, c_n = (rho_n + 1/rho_n)/2. Tabulated once, so that a pair
     !! costs comparisons instead of a logarithm.
-    pure subroutine far_limits(limit)
+    pure subroutine far_limits(far_digits, limit)
+        real(dp), intent(in) :: far_digits
         real(dp), intent(out) :: limit(2:n_max, 0:max_degree)
         real(dp) :: rho
         integer :: n, p
@@ -598,7 +671,8 @@ contains
     !> The far pairs (e1, e2) of source order n2 listed in work%by_n2(:, first:last): the kernel
     !! on the grid of all their field nodes x the source nodes in one call, y = K diag(w_s)
     !! B_s^T for all field nodes at once, then loc(:, :, e1) = B_f diag(w_f W) y per pair (the
-    !! tensor GL rule of far_points, contracted in this order).
+    !! tensor GL rule of far_points, contracted in this order). With constant coupling kernels
+    !! (rings: x < xi in every far pair) only the diagonal components are on the grid.
     subroutine far_batch(kernel, bx, e2, n2, first, last, work, loc, err)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
@@ -606,12 +680,13 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
         type(error_t), allocatable, intent(out) :: err
-        integer :: q, e1, n1, k0, c, l, r, j
-        call need_tables(kernel, bx, n2, e2, work)
+        integer :: q, n1, k0
+        if (.not. work%tabulated(n2, e2)) call need_tables(kernel, bx, n2, e2, work)
         k0 = 0
         field_nodes: do q = first, last
             n1 = work%by_n2(2, q)
-            call need_tables(kernel, bx, n1, work%by_n2(1, q), work)
+            if (.not. work%tabulated(n1, work%by_n2(1, q))) &
+                call need_tables(kernel, bx, n1, work%by_n2(1, q), work)
             work%gx(k0 + 1:k0 + n1) = work%by_order(n1)%x(:, work%by_n2(1, q))
             k0 = k0 + n1
         end do field_nodes
@@ -619,35 +694,72 @@ contains
             ! as large as needed only: below the allocator's mmap threshold it is reused
             ! without fresh pages (page faults) at every assembly
             deallocate (work%g)
-            allocate (work%g(max_batch, n2, 2, 2))
+            allocate (work%g(batch_rows, n2, 2, 2))
         end if
         call kernel%grid_values(work%gx(1:k0), work%by_order(n2)%x(:, e2), &
                                 work%g(1:k0, 1:n2, :, :), err)
         if (allocated(err)) return
         work%n_kernel = work%n_kernel + int(k0*n2, int64)
+        call contract_sources(kernel, e2, n2, k0, work)
+        call contract_fields(kernel, e2, first, last, work, loc)
+    end subroutine far_batch
+
+    !> y(k, i, c) = sum_l g(k, l, i, comp(c)) bs(l, c) for the k0 field nodes of a far batch and
+    !! the functions c of source element e2; with constant coupling only i = comp(c) (the
+    !! coupling rows are closed, contract_fields).
+    pure subroutine contract_sources(kernel, e2, n2, k0, work)
+        class(split_kernel_t), intent(in) :: kernel
+        integer, intent(in) :: e2, n2, k0
+        type(work_t), intent(inout) :: work
+        integer :: c, l, i, j
         source_functions: do c = 1, work%n_fun(e2)
             j = work%comp(c, e2)
-            work%y(1:k0, :, c) = 0.0_dp
-            source_nodes: do l = 1, n2
-                work%y(1:k0, 1, c) = work%y(1:k0, 1, c) + &
-                                     work%g(1:k0, l, 1, j)*work%by_order(n2)%bs(l, c, e2)
-                work%y(1:k0, 2, c) = work%y(1:k0, 2, c) + &
-                                     work%g(1:k0, l, 2, j)*work%by_order(n2)%bs(l, c, e2)
-            end do source_nodes
+            components: do i = 1, 2
+                if (kernel%constant_coupling .and. i /= j) cycle components
+                work%y(1:k0, i, c) = work%g(1:k0, 1, i, j)*work%by_order(n2)%bs(1, c, e2)
+                source_nodes: do l = 2, n2
+                    work%y(1:k0, i, c) = work%y(1:k0, i, c) + &
+                                         work%g(1:k0, l, i, j)*work%by_order(n2)%bs(l, c, e2)
+                end do source_nodes
+            end do components
         end do source_functions
+    end subroutine contract_sources
+
+    !> loc(r, c, e1) = sum_k bf(k, r, e1) y(k, comp(r), c) for the far pairs of a batch; with
+    !! constant coupling F_ij (i /= j) the integral of a coupling entry is
+    !! F_ij (int g_r W dx) (int g_c dxi) (work%moment).
+    pure subroutine contract_fields(kernel, e2, first, last, work, loc)
+        class(split_kernel_t), intent(in) :: kernel
+        integer, intent(in) :: e2, first, last
+        type(work_t), intent(in) :: work
+        real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
+        real(dp) :: total
+        integer :: q, e1, n1, k0, c, r, i, j, k
         k0 = 0
         pairs: do q = first, last
             e1 = work%by_n2(1, q)
             n1 = work%by_n2(2, q)
-            columns: do c = 1, work%n_fun(e2)
-                rows: do r = 1, work%n_fun(e1)
-                    loc(r, c, e1) = dot_product(work%by_order(n1)%bf(:, r, e1), &
-                                                work%y(k0 + 1:k0 + n1, work%comp(r, e1), c))
-                end do rows
-            end do columns
+            associate (bf => work%by_order(n1)%bf, y => work%y)
+                columns: do c = 1, work%n_fun(e2)
+                    j = work%comp(c, e2)
+                    rows: do r = 1, work%n_fun(e1)
+                        i = work%comp(r, e1)
+                        if (kernel%constant_coupling .and. i /= j) then
+                            loc(r, c, e1) = kernel%coupling(i)*work%moment(r, 1, e1)* &
+                                            work%moment(c, 2, e2)
+                            cycle rows
+                        end if
+                        total = 0.0_dp
+                        nodes: do k = 1, n1
+                            total = total + bf(k, r, e1)*y(k0 + k, i, c)
+                        end do nodes
+                        loc(r, c, e1) = total
+                    end do rows
+                end do columns
+            end associate
             k0 = k0 + n1
         end do pairs
-    end subroutine far_batch
+    end subroutine contract_fields
 
     !> b(r, i) = g_r(x_i) w_i (times W(x_i) on the field side) for the local functions of e;
     !! the functions are evaluated at the local coordinates loc_xi (exact for the GL nodes of
@@ -803,8 +915,9 @@ contains
         integer, intent(in) :: k0, m
         real(dp), intent(inout) :: loc(n_loc, n_loc)
         ! fixed size: automatic arrays would be allocated on the heap at every call
-        real(dp), dimension(part) :: d, t, inv_t, lo, len, y, off1, off2, wj, l1, l2, prod
+        real(dp), dimension(part) :: d, t, inv_t, lo, len, y, off1, off2, wj, l1, l2
         real(dp) :: c(part, 2, 2), bf(part, max_across, n_loc), bs(part, max_across, n_loc)
+        real(dp) :: prod(part, n_loc, n_loc)
         real(dp) :: a1, a2, h1, h2, to_l1, to_l2
         integer :: i, j, k, r, col, n_across
         n_across = work%n_across
@@ -847,32 +960,59 @@ contains
                 off2(1:m) = y(1:m) - (a2 - a1) - d(1:m)
                 wj(1:m) = len(1:m)*work%tab%w(j, n_across)
             end if
-            measure: do k = 1, m
-                wj(k) = wj(k)*kernel%field_weight(a1 + off1(k))
-            end do measure
+            wj(1:m) = wj(1:m)*(kernel%measure(0) + kernel%measure(1)*(a1 + off1(1:m)))
             l1(1:m) = to_l1*off1(1:m) - 1.0_dp
             l2(1:m) = to_l2*off2(1:m) - 1.0_dp
+            ! a function that repeats an earlier one (bx and bz of one family) is not formed again
             field_functions: do r = 1, map%nf
+                if (work%same(r, e1) /= r) cycle field_functions
                 bf(1:m, j, r) = wj(1:m)*(work%poly(1, r, e1) + l1(1:m)*(work%poly(2, r, e1) + &
                                                               l1(1:m)*work%poly(3, r, e1)))
             end do field_functions
             source_functions: do col = 1, map%ns
+                if (work%same(col, e2) /= col) cycle source_functions
                 bs(1:m, j, col) = work%poly(1, col, e2) + l2(1:m)*(work%poly(2, col, e2) + &
                                                           l2(1:m)*work%poly(3, col, e2))
             end do source_functions
         end do across
+        ! the across integral of each product of distinct functions
+        product_columns: do col = 1, map%ns
+            if (work%same(col, e2) /= col) cycle product_columns
+            product_rows: do r = 1, map%nf
+                if (work%same(r, e1) /= r) cycle product_rows
+                prod(1:m, r, col) = bf(1:m, 1, r)*bs(1:m, 1, col)
+                sum_across: do j = 2, n_across
+                    prod(1:m, r, col) = prod(1:m, r, col) + bf(1:m, j, r)*bs(1:m, j, col)
+                end do sum_across
+            end do product_rows
+        end do product_columns
         ! loc += the weighted kernel (comp_f, comp_s) times the across integral of each product
         columns: do col = 1, map%ns
             rows: do r = 1, map%nf
-                prod(1:m) = bf(1:m, 1, r)*bs(1:m, 1, col)
-                sum_across: do j = 2, n_across
-                    prod(1:m) = prod(1:m) + bf(1:m, j, r)*bs(1:m, j, col)
-                end do sum_across
                 loc(r, col) = loc(r, col) + &
-                              sum(c(1:m, map%comp_f(r), map%comp_s(col))*prod(1:m))
+                              dot_product4(c(1:m, map%comp_f(r), map%comp_s(col)), &
+                                           prod(1:m, work%same(r, e1), work%same(col, e2)))
             end do rows
         end do columns
     end subroutine add_across
+
+    !> sum(a*b) in four interleaved partial sums: four independent additions in flight instead
+    !! of one chain (a plain sum of products is not reordered, hence not vectorised, by the
+    !! compiler); the order is fixed, so the result is the same on every run and thread.
+    pure real(dp) function dot_product4(a, b) result(total)
+        real(dp), intent(in) :: a(:), b(:)
+        real(dp) :: part4(4)
+        integer :: k, n4
+        n4 = 4*(size(a)/4)
+        part4 = 0.0_dp
+        quads: do k = 1, n4, 4
+            part4 = part4 + a(k:k + 3)*b(k:k + 3)
+        end do quads
+        total = (part4(1) + part4(3)) + (part4(2) + part4(4))
+        rest: do k = n4 + 1, size(a)
+            total = total + a(k)*b(k)
+        end do rest
+    end function dot_product4
 
     !> A general point rule (work%rule) on a touching pair: one kernel evaluation per point,
     !! F with weight w and the log coefficient P with weight wc, added to every basis product.

@@ -37,7 +37,6 @@ module halfspace_beam
         real(dp) :: width = 1.0_dp     !! beam width b [length]
     contains
         procedure :: values => strip_values
-        procedure :: field_weight => strip_field_weight
         procedure :: log_length => strip_log_length
     end type strip_kernel_t
 
@@ -45,7 +44,7 @@ contains
 
     !> Galerkin flexibility T of the half-space under the beam (module header).
     subroutine assemble_beam_flexibility(bx, bz, g_f, nu_f, width, t_mat, err, reference, &
-                                         n_kernel)
+                                         n_kernel, far_digits)
         type(basis_t), intent(in) :: bx                 !! basis of sigma_x
         type(basis_t), intent(in) :: bz                 !! basis of sigma_z, same mesh
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
@@ -55,6 +54,8 @@ contains
         type(error_t), allocatable, intent(out) :: err
         logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
         integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
+        real(dp), intent(in), optional :: far_digits    !! accuracy studies: digits of the far
+                                                        !! rules (galerkin_assembly)
         type(strip_kernel_t) :: kernel
         logical :: use_reference
         call new_strip_kernel(kernel, g_f, nu_f, width, err)
@@ -64,7 +65,7 @@ contains
         if (use_reference) then
             call assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
         else
-            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel)
+            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
         end if
         if (allocated(err)) call add_context(err, 'beam half-space operator')
     end subroutine assemble_beam_flexibility
@@ -124,14 +125,8 @@ contains
         kernel%nu_f = nu_f
         kernel%width = width
         kernel%translation_invariant = .true.
+        kernel%measure = [1.0_dp, 0.0_dp]       ! line loads
     end subroutine new_strip_kernel
-
-    !> Field measure 1 (line loads).
-    pure real(dp) function strip_field_weight(self, x)
-        class(strip_kernel_t), intent(in) :: self
-        real(dp), intent(in) :: x
-        strip_field_weight = 1.0_dp
-    end function strip_field_weight
 
     !> The remainder of the split is analytic within |X| < h = b/2 (branch points +-i h).
     pure real(dp) function strip_log_length(self, x_sing)

@@ -59,10 +59,19 @@ module singular_quadrature
     type, abstract :: split_kernel_t
         logical :: homogeneous = .false.   !! homogeneous of degree 0 about x = 0 (ring kernels)
         logical :: translation_invariant = .false.  !! depends on x - xi only (strip kernels)
+        !> The coupling kernels are constants for x < xi: F_12 = coupling(1), F_21 =
+        !! coupling(2) there (the rings: steps at r = s). The far pairs of the fast assembly
+        !! all have x < xi, so it integrates them in closed form and `grid_values` need fill
+        !! only f(:, :, 1, 1) and f(:, :, 2, 2).
+        logical :: constant_coupling = .false.
+        real(dp) :: coupling(2) = 0.0_dp
+        !> Measure of the field integral, linear: W(x) = measure(0) + measure(1) x (1 for the
+        !! beam, 2 pi x for the plate), so that it can be formed on vectors.
+        real(dp) :: measure(0:1) = [1.0_dp, 0.0_dp]
     contains
         procedure(kernel_values_i), deferred :: values
         procedure :: grid_values => split_grid_values
-        procedure(field_weight_i), deferred :: field_weight
+        procedure :: field_weight => split_field_weight
         procedure(log_length_i), deferred :: log_length
     end type split_kernel_t
 
@@ -78,13 +87,6 @@ module singular_quadrature
             real(dp), intent(out) :: p(:, :, :)    !! p(i, j, k) coefficient of ln|x - xi|
             type(error_t), allocatable, intent(out) :: err
         end subroutine kernel_values_i
-
-        !> Measure of the field integral: 1 (beam) or 2 pi r (plate).
-        pure real(dp) function field_weight_i(self, x)
-            import :: split_kernel_t, dp
-            class(split_kernel_t), intent(in) :: self
-            real(dp), intent(in) :: x
-        end function field_weight_i
 
         !> Longest distance from a singular point at x_sing over which the split (P, Q) stays
         !! analytic; 0 when the kernel is regular there.
@@ -209,10 +211,18 @@ contains
         end if
     end function points_for_ratio
 
+    !> Measure of the field integral W(x) (split_kernel_t%measure).
+    pure real(dp) function split_field_weight(self, x)
+        class(split_kernel_t), intent(in) :: self
+        real(dp), intent(in) :: x
+        split_field_weight = self%measure(0) + self%measure(1)*x
+    end function split_field_weight
+
     !> Kernel values F (no log split) on the grid of field points x(k) and source points s(l)
     !! of a well separated element pair (no x(k) = s(l)): f(k, l, i, j) = F_ij(x(k), s(l)).
     !! This default calls `values` once per source point; a kernel overrides it where a grid
-    !! can be evaluated faster (the ring kernels: on vectors of field points).
+    !! can be evaluated faster (the ring kernels: on vectors of field points; with
+    !! constant_coupling only the diagonal components f(:, :, i, i)).
     subroutine split_grid_values(self, x, s, f, err)
         class(split_kernel_t), intent(in) :: self
         real(dp), intent(in) :: x(:)               !! field points
