@@ -187,7 +187,6 @@ module galerkin_assembly
         !> Chebyshev moments of the functions of cluster c: a(row, q + 1, i) = int g W T_q
         !! (field) and int g T_q (source), q < n_cheb
         type(chebyshev_moments_t), allocatable :: cheb_field(:), cheb_source(:)
-        integer, allocatable :: need(:)   !! need(c): the highest order of c's blocks
     end type cluster_tree_t
 
 contains
@@ -1316,12 +1315,10 @@ contains
         end subroutine grow_blocks
     end subroutine new_blocks
 
-    !> The functions of field i (1 = bx, 2 = bz) with support in cluster c (their global
-    !! numbers, in order of first appearance) and their moments against the Lagrange
-    !! polynomials of orders(k) on c over the part of their support in c, with the field
-    !! measure W (field side) and without (source side): m(row, a) = int g W l_a. From the
-    !! Chebyshev moments int g W T_q (q < n_cheb; once per cluster, by the moment_points GL
-    !! rule on every element: exact, degree <= 2 + 1 + 27) through l_a = (2/m) sum' T_q(t_a) T_q.
+    !> The moments of the functions of cluster c against its Lagrange polynomials of
+    !! orders(k), with the field measure W (field side) and without (source side), over the
+    !! part of their support in c: m(row, a) = int g W l_a, from the Chebyshev moments
+    !! (chebyshev_moments) through l_a = (2/m) sum'_{q<m} T_q(t_a) T_q.
     subroutine cluster_moments(kernel, bx, cheb, tree, c, k, work, mark)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
@@ -1330,74 +1327,151 @@ contains
         integer, intent(in) :: c, k
         type(work_t), intent(inout) :: work
         integer, intent(inout) :: mark(:)          !! zero on entry and exit
-        integer, parameter :: np = moment_points
-        real(dp) :: t(np), tq(np, n_cheb), scale, mid, pf(n_loc, n_cheb), ps(n_loc, n_cheb)
-        integer :: e, r, i, n, p, q, row, g, lo_r(2), hi_r(2), n_rows, n_q
+        integer :: p, i, n_rows
         if (allocated(tree%side(k, c)%field)) return
         p = orders(k)
-        lo_r = [1, bx%n_local + 1]
-        hi_r = [bx%n_local, work%n_fun(1)]
-        if (.not. allocated(tree%cheb_field(c)%a)) then
-            components: do i = 1, 2
-                allocate (tree%rows(i, c)%glob(work%n_fun(1)*(tree%last(c) - tree%first(c) + 1)))
-                n = 0
-                do e = tree%first(c), tree%last(c)
-                    do r = lo_r(i), hi_r(i)
-                        g = work%glob(r, e)
-                        if (mark(g) /= 0) cycle
-                        n = n + 1
-                        mark(g) = n
-                        tree%rows(i, c)%glob(n) = g
-                    end do
-                end do
-                tree%rows(i, c)%n = n
-                mark(tree%rows(i, c)%glob(1:n)) = 0
-            end do components
-            n_rows = maxval(tree%rows(:, c)%n)
-            n_q = tree%need(c)
-            allocate (tree%cheb_field(c)%a(n_rows, n_q, 2), &
-                      tree%cheb_source(c)%a(n_rows, n_q, 2), source=0.0_dp)
-            scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
-            mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
-            fields: do i = 1, 2
-                n = tree%rows(i, c)%n
-                mark(tree%rows(i, c)%glob(1:n)) = [(q, q=1, n)]
-                elements: do e = tree%first(c), tree%last(c)
-                    if (.not. work%tabulated(np, e)) call need_tables(kernel, bx, np, e, work)
-                    associate (tbl => work%by_order(np), mf => tree%cheb_field(c)%a, &
-                               ms => tree%cheb_source(c)%a)
-                        t = scale*(tbl%x(:, e) - mid)
-                        tq(:, 1) = 1.0_dp
-                        tq(:, 2) = t
-                        do q = 3, n_q
-                            tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
-                        end do
-                        pf(1:hi_r(i) - lo_r(i) + 1, 1:n_q) = &
-                            matmul(transpose(tbl%bf(:, lo_r(i):hi_r(i), e)), tq(:, 1:n_q))
-                        ps(1:hi_r(i) - lo_r(i) + 1, 1:n_q) = &
-                            matmul(transpose(tbl%bs(:, lo_r(i):hi_r(i), e)), tq(:, 1:n_q))
-                        do r = lo_r(i), hi_r(i)
-                            row = mark(work%glob(r, e))
-                            mf(row, :, i) = mf(row, :, i) + pf(r - lo_r(i) + 1, 1:n_q)
-                            ms(row, :, i) = ms(row, :, i) + ps(r - lo_r(i) + 1, 1:n_q)
-                        end do
-                    end associate
-                end do elements
-                mark(tree%rows(i, c)%glob(1:n)) = 0
-            end do fields
-        end if
+        call chebyshev_moments(kernel, bx, tree, c, work, mark)
         n_rows = size(tree%cheb_field(c)%a, 1)
         allocate (tree%side(k, c)%field(n_rows, p, 2), tree%side(k, c)%source(n_rows, p, 2))
         ! m(row, a) = sum_q mu(row, q) to_weights(a, q)
-        fields_k: do i = 1, 2
+        fields: do i = 1, 2
             call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_field(c)%a(1, 1, i), n_rows, &
                        cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, tree%side(k, c)%field(1, 1, i), &
                        n_rows)
             call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_source(c)%a(1, 1, i), n_rows, &
                        cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
                        tree%side(k, c)%source(1, 1, i), n_rows)
-        end do fields_k
+        end do fields
     end subroutine cluster_moments
+
+    !> The functions of field i (1 = bx, 2 = bz) with support in cluster c (tree%rows: their
+    !! global numbers, in order of first appearance) and their Chebyshev moments over the part
+    !! of their support in c, int g W T_q and int g T_q (q < n_cheb, T_q across c): on a leaf
+    !! by the moment_points GL rule on every element (exact: degree <= 2 + 1 + 27), on a parent
+    !! from its children's, T_q of the parent being a polynomial of degree q on a child
+    !! (chebyshev_transfer; exact, BLAS products).
+    recursive subroutine chebyshev_moments(kernel, bx, tree, c, work, mark)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(cluster_tree_t), intent(inout) :: tree
+        integer, intent(in) :: c
+        type(work_t), intent(inout) :: work
+        integer, intent(inout) :: mark(:)          !! zero on entry and exit
+        integer, parameter :: np = moment_points
+        real(dp) :: t(np), tq(np, n_cheb), scale, mid, pf(n_loc, n_cheb), ps(n_loc, n_cheb)
+        real(dp) :: s_mat(n_cheb, n_cheb, 2)
+        real(dp), allocatable :: tmp(:, :)
+        integer :: e, r, i, n, q, row, g, lo_r(2), hi_r(2), n_rows, j, ch, n_ch
+        if (allocated(tree%cheb_field(c)%a)) return
+        if (tree%child(1, c) /= 0) then
+            call chebyshev_moments(kernel, bx, tree, tree%child(1, c), work, mark)
+            call chebyshev_moments(kernel, bx, tree, tree%child(2, c), work, mark)
+            call chebyshev_transfer(tree, c, tree%child(1, c), s_mat(:, :, 1))
+            call chebyshev_transfer(tree, c, tree%child(2, c), s_mat(:, :, 2))
+        end if
+        lo_r = [1, bx%n_local + 1]
+        hi_r = [bx%n_local, work%n_fun(1)]
+        components: do i = 1, 2
+            allocate (tree%rows(i, c)%glob(work%n_fun(1)*(tree%last(c) - tree%first(c) + 1)))
+            n = 0
+            do e = tree%first(c), tree%last(c)
+                do r = lo_r(i), hi_r(i)
+                    g = work%glob(r, e)
+                    if (mark(g) /= 0) cycle
+                    n = n + 1
+                    mark(g) = n
+                    tree%rows(i, c)%glob(n) = g
+                end do
+            end do
+            tree%rows(i, c)%n = n
+            mark(tree%rows(i, c)%glob(1:n)) = 0
+        end do components
+        n_rows = maxval(tree%rows(:, c)%n)
+        allocate (tree%cheb_field(c)%a(n_rows, n_cheb, 2), &
+                  tree%cheb_source(c)%a(n_rows, n_cheb, 2), source=0.0_dp)
+        fields: do i = 1, 2
+            n = tree%rows(i, c)%n
+            mark(tree%rows(i, c)%glob(1:n)) = [(q, q=1, n)]
+            if (tree%child(1, c) /= 0) then
+                children: do j = 1, 2
+                    ch = tree%child(j, c)
+                    n_ch = tree%rows(i, ch)%n
+                    allocate (tmp(n_ch, n_cheb))
+                    call dgemm('N', 'N', n_ch, n_cheb, n_cheb, 1.0_dp, &
+                               tree%cheb_field(ch)%a(1, 1, i), size(tree%cheb_field(ch)%a, 1), &
+                               s_mat(1, 1, j), n_cheb, 0.0_dp, tmp, n_ch)
+                    do r = 1, n_ch
+                        row = mark(tree%rows(i, ch)%glob(r))
+                        tree%cheb_field(c)%a(row, :, i) = tree%cheb_field(c)%a(row, :, i) + &
+                                                          tmp(r, :)
+                    end do
+                    call dgemm('N', 'N', n_ch, n_cheb, n_cheb, 1.0_dp, &
+                               tree%cheb_source(ch)%a(1, 1, i), &
+                               size(tree%cheb_source(ch)%a, 1), s_mat(1, 1, j), n_cheb, 0.0_dp, &
+                               tmp, n_ch)
+                    do r = 1, n_ch
+                        row = mark(tree%rows(i, ch)%glob(r))
+                        tree%cheb_source(c)%a(row, :, i) = tree%cheb_source(c)%a(row, :, i) + &
+                                                           tmp(r, :)
+                    end do
+                    deallocate (tmp)
+                end do children
+                mark(tree%rows(i, c)%glob(1:n)) = 0
+                cycle fields
+            end if
+            scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
+            mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
+            elements: do e = tree%first(c), tree%last(c)
+                if (.not. work%tabulated(np, e)) call need_tables(kernel, bx, np, e, work)
+                associate (tbl => work%by_order(np), mf => tree%cheb_field(c)%a, &
+                           ms => tree%cheb_source(c)%a)
+                    t = scale*(tbl%x(:, e) - mid)
+                    tq(:, 1) = 1.0_dp
+                    tq(:, 2) = t
+                    do q = 3, n_cheb
+                        tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
+                    end do
+                    pf(1:hi_r(i) - lo_r(i) + 1, :) = &
+                        matmul(transpose(tbl%bf(:, lo_r(i):hi_r(i), e)), tq)
+                    ps(1:hi_r(i) - lo_r(i) + 1, :) = &
+                        matmul(transpose(tbl%bs(:, lo_r(i):hi_r(i), e)), tq)
+                    do r = lo_r(i), hi_r(i)
+                        row = mark(work%glob(r, e))
+                        mf(row, :, i) = mf(row, :, i) + pf(r - lo_r(i) + 1, :)
+                        ms(row, :, i) = ms(row, :, i) + ps(r - lo_r(i) + 1, :)
+                    end do
+                end associate
+            end do elements
+            mark(tree%rows(i, c)%glob(1:n)) = 0
+        end do fields
+    end subroutine chebyshev_moments
+
+    !> s(k + 1, q + 1): the coefficient of T_k of child ch in T_q of its parent c (q, k <
+    !! n_cheb), t_parent = alpha t_child + beta: by T_(q+1) = 2 (alpha t + beta) T_q - T_(q-1)
+    !! on the coefficients, t T_0 = T_1, t T_k = (T_(k+1) + T_(k-1))/2.
+    pure subroutine chebyshev_transfer(tree, c, ch, s)
+        type(cluster_tree_t), intent(in) :: tree
+        integer, intent(in) :: c, ch
+        real(dp), intent(out) :: s(n_cheb, n_cheb)
+        real(dp) :: alpha, beta, tc(n_cheb + 1)
+        integer :: q, k
+        alpha = (tree%hi(ch) - tree%lo(ch))/(tree%hi(c) - tree%lo(c))
+        beta = ((tree%hi(ch) + tree%lo(ch)) - (tree%hi(c) + tree%lo(c)))/(tree%hi(c) - tree%lo(c))
+        s = 0.0_dp
+        s(1, 1) = 1.0_dp
+        s(1, 2) = beta
+        s(2, 2) = alpha
+        degrees: do q = 2, n_cheb - 1
+            ! tc = t * (column q of s) in the child's basis
+            tc = 0.0_dp
+            tc(2) = s(1, q)
+            times_t: do k = 2, q
+                tc(k + 1) = tc(k + 1) + 0.5_dp*s(k, q)
+                tc(k - 1) = tc(k - 1) + 0.5_dp*s(k, q)
+            end do times_t
+            s(:, q + 1) = 2.0_dp*(alpha*tc(1:n_cheb) + beta*s(:, q)) - s(:, q - 1)
+        end do degrees
+    end subroutine chebyshev_transfer
 
     !> Add the admissible blocks to T (A of T = A + A^T), one after the other: the kernel at
     !! the px x py Chebyshev points of the two clusters, and the block of each diagonal
@@ -1419,13 +1493,6 @@ contains
         allocate (tree%side(n_orders, tree%n), tree%rows(2, tree%n), tree%cheb_field(tree%n), &
                   tree%cheb_source(tree%n))
         allocate (cy_mat(n_cheb, 64), l_mat(64, 64))
-        allocate (tree%need(tree%n), source=1)
-        orders_needed: do b = 1, tree%n_blocks
-            tree%need(tree%blocks(1, b)) = max(tree%need(tree%blocks(1, b)), &
-                                               orders(tree%blocks(3, b)))
-            tree%need(tree%blocks(2, b)) = max(tree%need(tree%blocks(2, b)), &
-                                               orders(tree%blocks(4, b)))
-        end do orders_needed
         blocks: do b = 1, tree%n_blocks
             cx = tree%blocks(1, b)
             cy = tree%blocks(2, b)
