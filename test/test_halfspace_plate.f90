@@ -569,7 +569,7 @@ contains
     !! assembly of every far pair (pairwise = .true., the assembly of main fc09087, itself
     !! tested against the adaptive reference above): N_e = 150 and 230, uniform and graded
     !! meshes, P1/P1, P2/P2, S2/S2, P2/S2; every entry within 1e-14 of the largest (measured
-    !! 2e-15 to 4e-15 at N_e 200 to 1000, output/bench/assembly_before_after.md). T does not
+    !! 1e-15 to 3.2e-15 at N_e 128 to 1000, output/bench/assembly_before_after.md). T does not
     !! depend on the number of threads, bit for bit (1 and 2 threads).
     subroutine test_blocks_vs_pairwise(err)
         type(error_t), allocatable, intent(out) :: err

@@ -39,8 +39,8 @@
 !! of the cluster, exact GL), and the constant coupling components F_ij (int g W)(int g). The
 !! element pairs of a block are skipped by the column pass, so every pair is added once; the
 !! blocks are added one after the other after the column pass (T the same on any number of
-!! threads). The kernel values of the far pairs fall by 3 to 8 times at N_e 200 to 1000; T
-!! moves by 2e-15 to 4e-15 of its largest entry (pairwise = .true.: no blocks, the assembly
+!! threads). The kernel values fall by 3 to 9 times at N_e 200 to 1000; T
+!! moves by 1e-15 to 3.2e-15 of its largest entry (pairwise = .true.: no blocks, the assembly
 !! of fc09087, output/bench/assembly_before_after.md). Below min_blocks elements the blocks
 !! did not pay (most pairs are near or nearly near).
 !! A translation-invariant kernel on a (piecewise) uniform mesh repeats the pair integrals of
