@@ -6,6 +6,7 @@
 !! w(r) = 4(1-nu^2) p a/(pi E) E(r/a), u_r(r) = -(1-2nu)(1+nu) p r/(2E) (r <= a);
 !! uniform outward radial shear q: u_z(r) = -(1-2nu) q (a-r)/(2G) (r <= a).
 module test_halfspace_plate
+    !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, check, check_close, error_t
     use errors, only: new_error, EXIT_INTERNAL
@@ -60,6 +61,7 @@ contains
                  new_unittest('incompressible_no_coupling', test_incompressible), &
                  new_unittest('rigid_punch_convergence', test_punch), &
                  new_unittest('fast_vs_reference_assembly', test_fast_vs_reference), &
+                 new_unittest('interpolated_blocks_vs_pairwise', test_blocks_vs_pairwise), &
                  new_unittest('agm_elliptic_vs_carlson', test_agm)]
     end subroutine collect_halfspace_plate
 
@@ -562,6 +564,54 @@ contains
             end do meshes
         end do cases
     end subroutine test_fast_vs_reference
+
+    !> The interpolated far blocks (galerkin_assembly, add_blocks) against the pair-by-pair
+    !! assembly of every far pair (pairwise = .true., the assembly of main fc09087, itself
+    !! tested against the adaptive reference above): N_e = 150 and 230, uniform and graded
+    !! meshes, P1/P1, P2/P2, S2/S2, P2/S2; every entry within 1e-14 of the largest (measured
+    !! 1e-15 to 3.2e-15 at N_e 128 to 1000, output/bench/assembly_before_after.md). T does not
+    !! depend on the number of threads, bit for bit (1 and 2 threads).
+    subroutine test_blocks_vs_pairwise(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: t(:, :), t_pair(:, :), t_one(:, :)
+        integer :: ic, ig, threads
+        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_P2, &
+            INTERP_S2, INTERP_S2, INTERP_P2, INTERP_S2], [2, 4])
+        integer, parameter :: nes(4) = [230, 150, 150, 230]
+        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
+        character(len=80) :: what
+        cases: do ic = 1, size(nes)
+            meshes: do ig = 1, 2
+                call make_bases(nes(ic), trim(gradings(ig)), fams(1, ic), fams(2, ic), bx, bz, err)
+                if (allocated(err)) return
+                call assemble_plate_flexibility(bx, bz, 2.3_dp, 0.2_dp, t, err)
+                if (allocated(err)) return
+                call assemble_plate_flexibility(bx, bz, 2.3_dp, 0.2_dp, t_pair, err, &
+                                                pairwise=.true.)
+                if (allocated(err)) return
+                write (what, '("blocks vs pairwise, case ",i0,", ",a)') ic, trim(gradings(ig))
+                call check_close(err, maxval(abs(t - t_pair))/maxval(abs(t_pair)), 0.0_dp, &
+                                 0.0_dp, 1.0e-14_dp, trim(what))
+                if (allocated(err)) return
+                call check(err, maxval(abs(t - transpose(t))) == 0.0_dp, &
+                           trim(what)//': T exactly symmetric')
+                if (allocated(err)) return
+                threads = 1
+                !$ threads = omp_get_max_threads()
+                if (ic > 1 .or. ig > 1) cycle meshes
+                !$ call omp_set_num_threads(1)
+                call assemble_plate_flexibility(bx, bz, 2.3_dp, 0.2_dp, t_one, err)
+                !$ call omp_set_num_threads(2)
+                if (.not. allocated(err)) call assemble_plate_flexibility(bx, bz, 2.3_dp, &
+                                                                          0.2_dp, t, err)
+                !$ call omp_set_num_threads(threads)
+                if (allocated(err)) return
+                call check(err, all(t == t_one), 'blocks: the same T on 1 and 2 threads')
+                if (allocated(err)) return
+            end do meshes
+        end do cases
+    end subroutine test_blocks_vs_pairwise
 
     !> K, E by the arithmetic-geometric mean (used by the ring kernels) against GSL's Carlson
     !! forms (elliptic_ke_m1), m1 = 1 - k^2 from 1e-19 to 1: K to 1e-15 relative, E to

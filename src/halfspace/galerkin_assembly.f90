@@ -26,6 +26,23 @@
 !!    formed from differences of node coordinates (1 - t or x - a rounded from absolute
 !!    positions would cost eps |x|/h, 1e-13 at N_e = 1000);
 !!  * other kernels: the two-dimensional pair rules of `singular_quadrature`.
+!! Interpolated blocks (ring kernels, N_e >= min_blocks; issue 7 item 3): the elements are
+!! grouped in a binary tree of clusters (contiguous elements halved by count down to leaf_max)
+!! and a pair of clusters X left of Y with gap >= block_ratio times the longer, whose
+!! interpolation needs fewer than block_cost kernel values per element pair, is one block: the
+!! kernel interpolated in both variables at the Chebyshev points of X and Y (orders 12 to 28
+!! per direction from gap / length, for rho^-p <= 1e-16 as in station_displacement; the
+!! Bernstein ellipse of either cluster stays clear of the circle |x| = xi of the other's
+!! points), K(x, xi) ~ sum_ab l_a(x) K(x_a, xi_b) l_b(xi), so that its part of T is
+!! Mx K My^T for the diagonal components (BLAS dgemm), Mx(f, a) = int g_f W l_a over the part of
+!! the support of f in X, My(f, b) = int g_f l_b over the part in Y (from the Chebyshev moments
+!! of the cluster, exact GL), and the constant coupling components F_ij (int g W)(int g). The
+!! element pairs of a block are skipped by the column pass, so every pair is added once; the
+!! blocks are added one after the other after the column pass (T the same on any number of
+!! threads). The kernel values fall by 3 to 9 times at N_e 200 to 1000; T
+!! moves by 1e-15 to 3.2e-15 of its largest entry (pairwise = .true.: no blocks, the assembly
+!! of fc09087, output/bench/assembly_before_after.md). Below min_blocks elements the blocks
+!! did not pay (most pairs are near or nearly near).
 !! A translation-invariant kernel on a (piecewise) uniform mesh repeats the pair integrals of
 !! the translated pair (`translates`): O(N_e) pairs are integrated, the rest copied, column
 !! after column. Otherwise the columns (source elements) are integrated in parallel (OpenMP,
@@ -41,7 +58,8 @@
 module galerkin_assembly
     use iso_fortran_env, only: int64
     !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num, omp_in_parallel
-    use kinds, only: dp
+    use kinds, only: dp, pi
+    use lapack_interfaces, only: dgemm
     use sorting, only: sort_ascending
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
@@ -70,6 +88,17 @@ module galerkin_assembly
                                              !! machine, costs more than the second core saves)
     integer, parameter :: max_threads = 8    !! each thread keeps its own GL tables (about 12 MB
                                              !! at N_e = 1000) and column storage (0.6 MB)
+    ! interpolated blocks (add_blocks)
+    integer, parameter :: min_blocks = 128       !! fewer elements: no blocks (they did not
+                                                 !! pay at N_e = 100)
+    real(dp), parameter :: block_ratio = 1.0_dp  !! gap / longer cluster length, at least
+    real(dp), parameter :: block_cost = 16.0_dp   !! kernel values per element pair, at most
+    integer, parameter :: leaf_max = 4           !! elements of a leaf cluster, at most
+    integer, parameter :: n_cheb = 28            !! interpolation points per cluster, the most
+    integer, parameter :: orders(5) = [12, 16, 20, 24, n_cheb]  !! interpolation orders
+    integer, parameter :: n_orders = size(orders)
+    real(dp), parameter :: cheb_digits = 16.0_dp !! order: rho^(-order) <= 10^(-cheb_digits)
+    integer, parameter :: moment_points = 16     !! GL points per element of the moments
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
     !! first the bx functions then the bz functions (the global numbers: work%glob).
@@ -120,10 +149,50 @@ module galerkin_assembly
         type(error_t), allocatable :: err          !! failure of this thread's last column
     end type work_t
 
+    !> Chebyshev points of the first kind of every order, the least gap / length at which
+    !! each order is used and the Lagrange matrices (new_chebyshev).
+    type :: chebyshev_t
+        real(dp) :: cosines(n_cheb, n_orders) = 0.0_dp
+        real(dp) :: min_ratio(n_orders) = 0.0_dp
+        real(dp) :: to_weights(n_cheb, n_cheb, n_orders) = 0.0_dp
+    end type chebyshev_t
+
+    !> Moments of the functions of one cluster against its Lagrange polynomials of one order:
+    !! field(row, a, i) with the field measure, source(row, a, i) without; i the field.
+    type :: moments_t
+        real(dp), allocatable :: field(:, :, :), source(:, :, :)
+    end type moments_t
+
+    !> Chebyshev moments of the functions of one cluster (cluster_tree_t).
+    type :: chebyshev_moments_t
+        real(dp), allocatable :: a(:, :, :)
+    end type chebyshev_moments_t
+
+    !> The functions of one field with support in a cluster (global numbers).
+    type :: cluster_rows_t
+        integer :: n = 0
+        integer, allocatable :: glob(:)
+    end type cluster_rows_t
+
+    !> Binary tree of clusters of contiguous elements (cluster 1: the mesh) and the admissible
+    !! blocks (cx, cy, order index of cx, order index of cy).
+    type :: cluster_tree_t
+        integer :: n = 0
+        integer, allocatable :: first(:), last(:), child(:, :)
+        real(dp), allocatable :: lo(:), hi(:)
+        integer :: n_blocks = 0
+        integer, allocatable :: blocks(:, :)
+        type(moments_t), allocatable :: side(:, :)        !! side(k, c): orders(k) on c
+        type(cluster_rows_t), allocatable :: rows(:, :)   !! rows(i, c)
+        !> Chebyshev moments of the functions of cluster c: a(row, q + 1, i) = int g W T_q
+        !! (field) and int g T_q (source), q < n_cheb
+        type(chebyshev_moments_t), allocatable :: cheb_field(:), cheb_source(:)
+    end type cluster_tree_t
+
 contains
 
     !> T (module header); n_kernel returns the number of kernel evaluations (point pairs).
-    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
+    subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits, pairwise)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z, same mesh
@@ -133,7 +202,13 @@ contains
         real(dp), intent(in), optional :: far_digits  !! accuracy studies only: digits of the
                                                       !! far rules (far_points) instead of
                                                       !! default_far_digits
+        logical, intent(in), optional :: pairwise     !! all far pairs pair by pair (the
+                                                      !! assembly before add_blocks; tests)
         type(work_t) :: work
+        type(chebyshev_t) :: cheb
+        type(cluster_tree_t) :: tree
+        logical, allocatable :: in_block(:, :)
+        logical :: use_blocks
         type(work_t), allocatable :: works(:)
         real(dp), allocatable :: column_loc(:, :, :, :, :)
         logical, allocatable :: shift_ok(:)
@@ -149,6 +224,15 @@ contains
         ! order then (O(N_e) pair integrals); no nested teams (the cases of a sweep already run
         ! in parallel)
         in_order = any(shift_ok)
+        use_blocks = kernel%homogeneous .and. kernel%constant_coupling .and. .not. in_order &
+                     .and. bx%ne >= min_blocks
+        if (present(pairwise)) use_blocks = use_blocks .and. .not. pairwise
+        if (use_blocks) then
+            call new_chebyshev(cheb)
+            call new_blocks(bx, cheb, tree, in_block)
+        else
+            allocate (in_block(bx%ne, 1), source=.false.)
+        end if
         n_threads = 1
         !$ if (.not. in_order .and. .not. omp_in_parallel() .and. bx%ne >= min_parallel) &
         !$     n_threads = min(omp_get_max_threads(), max_threads)
@@ -179,9 +263,11 @@ contains
             source_elements: do e2 = first, last, step
                 thread = 1
                 !$ thread = omp_get_thread_num() + 1
-                call integrate_column(kernel, bx, bz, e2, shift_ok, works(thread), &
+                call integrate_column(kernel, bx, bz, e2, shift_ok, &
+                                      in_block(:, merge(e2, 1, use_blocks)), works(thread), &
                                       column_loc(:, :, :, :, thread))
-                call add_column(e2, works(thread), column_loc(:, :, :, mod(e2, 2), thread), t_mat)
+                call add_column(e2, in_block(:, merge(e2, 1, use_blocks)), works(thread), &
+                                column_loc(:, :, :, mod(e2, 2), thread), t_mat)
             end do source_elements
             !$omp end parallel do
         end do colours
@@ -190,6 +276,13 @@ contains
             call move_alloc(works(thread)%err, err)
             return
         end do threads
+        if (use_blocks) then
+            call add_blocks(kernel, bx, cheb, tree, works(1), t_mat, err)
+            if (allocated(err)) then
+                call add_context(err, 'half-space operator, interpolated blocks')
+                return
+            end if
+        end if
         call add_transpose(t_mat)
         if (present(n_kernel)) n_kernel = sum(works%n_kernel)
     end subroutine assemble_split_kernel
@@ -293,11 +386,13 @@ contains
     !! by the same work: one thread), near pairs one by one, far pairs in batches
     !! (far_pairs). A failure is left in work%err (the threads share no error variable), and
     !! the thread does nothing more.
-    subroutine integrate_column(kernel, bx, bz, e2, shift_ok, work, loc)
+    subroutine integrate_column(kernel, bx, bz, e2, shift_ok, skip, work, loc)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx, bz
         integer, intent(in) :: e2
         logical, intent(in) :: shift_ok(:)         !! see translates
+        logical, intent(in) :: skip(:)             !! skip(e1): the pair is in an interpolated
+                                                   !! block (add_blocks)
         type(work_t), intent(inout) :: work
         real(dp), contiguous, intent(inout) :: loc(:, :, :, 0:)  !! loc(r, c, e1, parity of e2)
         type(error_t), allocatable :: err
@@ -310,6 +405,7 @@ contains
         n_far = 0
         h2 = bx%x(e2) - bx%x(e2 - 1)
         field_elements: do e1 = 1, e2
+            if (skip(e1)) cycle field_elements
             if (repeats_pair(bx, shift_ok, e1, e2)) then
                 loc(:, :, e1, now) = loc(:, :, e1 - 1, 1 - now)
                 cycle field_elements
@@ -342,14 +438,16 @@ contains
     end subroutine integrate_column
 
     !> Add the pairs of column e2 (loc(:, :, e1), e1 <= e2) to T, unless this thread failed.
-    pure subroutine add_column(e2, work, loc, t_mat)
+    pure subroutine add_column(e2, skip, work, loc, t_mat)
         integer, intent(in) :: e2
+        logical, intent(in) :: skip(:)             !! see integrate_column
         type(work_t), intent(in) :: work
         real(dp), contiguous, intent(in) :: loc(:, :, :)
         real(dp), intent(inout) :: t_mat(:, :)
         integer :: e1
         if (allocated(work%err)) return
         field_elements: do e1 = 1, e2
+            if (skip(e1)) cycle field_elements
             call scatter(work%glob(1:work%n_fun(e1), e1), work%glob(1:work%n_fun(e2), e2), &
                          e1 == e2, loc(:, :, e1), t_mat)
         end do field_elements
@@ -1095,4 +1193,364 @@ contains
             end do tile_rows
         end do tile_columns
     end subroutine add_transpose
+
+    ! ---------------------------------------------------------------- interpolated blocks
+
+    !> The Chebyshev tables of every order: points of the first kind, the least gap / length
+    !! at which each order interpolates to 10^-cheb_digits (as station_displacement), and the
+    !! matrices of the Lagrange polynomials l_i = (2/m) sum'_{q<m} T_q(t_i) T_q.
+    pure subroutine new_chebyshev(cheb)
+        type(chebyshev_t), intent(out) :: cheb
+        real(dp) :: theta, rho
+        integer :: i, k, m, q
+        orders_loop: do k = 1, n_orders
+            m = orders(k)
+            nodes: do i = 1, m
+                theta = real(2*i - 1, dp)*pi/real(2*m, dp)
+                cheb%cosines(i, k) = cos(theta)
+                cheb%to_weights(i, 1, k) = 1.0_dp
+                if (m >= 2) cheb%to_weights(i, 2, k) = cheb%cosines(i, k)
+                recurrence: do q = 3, m
+                    cheb%to_weights(i, q, k) = 2.0_dp*cheb%cosines(i, k)* &
+                        cheb%to_weights(i, q - 1, k) - cheb%to_weights(i, q - 2, k)
+                end do recurrence
+            end do nodes
+            cheb%to_weights(1:m, 1:m, k) = (2.0_dp/real(m, dp))*cheb%to_weights(1:m, 1:m, k)
+            cheb%to_weights(1:m, 1, k) = 0.5_dp*cheb%to_weights(1:m, 1, k)
+            rho = 10.0_dp**(cheb_digits/real(m, dp))
+            cheb%min_ratio(k) = 0.25_dp*(rho + 1.0_dp/rho) - 0.5_dp
+        end do orders_loop
+    end subroutine new_chebyshev
+
+    !> The lowest order that interpolates across a cluster at gap / length = ratio (0 if none).
+    pure integer function order_index(cheb, ratio) result(k)
+        type(chebyshev_t), intent(in) :: cheb
+        real(dp), intent(in) :: ratio
+        do k = 1, n_orders
+            if (ratio >= cheb%min_ratio(k)) return
+        end do
+        k = 0
+    end function order_index
+
+    !> The cluster tree (contiguous elements halved by count down to leaf_max), the admissible
+    !! blocks (cx left of cy, gap >= block_ratio times the longer, and fewer kernel values
+    !! than block_cost per element pair) and in_block(e1, e2) for their element pairs.
+    subroutine new_blocks(bx, cheb, tree, in_block)
+        type(basis_t), intent(in) :: bx
+        type(chebyshev_t), intent(in) :: cheb
+        type(cluster_tree_t), intent(out) :: tree
+        logical, allocatable, intent(out) :: in_block(:, :)
+        integer :: c, n, mid
+        allocate (tree%first(2*bx%ne), tree%last(2*bx%ne), tree%child(2, 2*bx%ne), &
+                  tree%lo(2*bx%ne), tree%hi(2*bx%ne))
+        tree%n = 1
+        tree%first(1) = 1
+        tree%last(1) = bx%ne
+        c = 0
+        grow: do while (c < tree%n)
+            c = c + 1
+            tree%lo(c) = bx%x(tree%first(c) - 1)
+            tree%hi(c) = bx%x(tree%last(c))
+            tree%child(:, c) = 0
+            n = tree%last(c) - tree%first(c) + 1
+            if (n <= leaf_max) cycle grow
+            mid = tree%first(c) + n/2 - 1
+            tree%child(:, c) = [tree%n + 1, tree%n + 2]
+            tree%first(tree%n + 1:tree%n + 2) = [tree%first(c), mid + 1]
+            tree%last(tree%n + 1:tree%n + 2) = [mid, tree%last(c)]
+            tree%n = tree%n + 2
+        end do grow
+        allocate (tree%blocks(4, 4*bx%ne))
+        allocate (in_block(bx%ne, bx%ne), source=.false.)
+        tree%n_blocks = 0
+        call split_pair(1, 1)
+    contains
+        recursive subroutine split_pair(cx, cy)
+            integer, intent(in) :: cx, cy
+            real(dp) :: gap, len_x, len_y
+            integer :: kx, ky, nx, ny, px, py
+            if (cx == cy) then
+                if (tree%child(1, cx) == 0) return
+                call split_pair(tree%child(1, cx), tree%child(1, cx))
+                call split_pair(tree%child(1, cx), tree%child(2, cx))
+                call split_pair(tree%child(2, cx), tree%child(2, cx))
+                return
+            end if
+            gap = tree%lo(cy) - tree%hi(cx)
+            len_x = tree%hi(cx) - tree%lo(cx)
+            len_y = tree%hi(cy) - tree%lo(cy)
+            nx = tree%last(cx) - tree%first(cx) + 1
+            ny = tree%last(cy) - tree%first(cy) + 1
+            if (gap >= block_ratio*max(len_x, len_y)) then
+                kx = order_index(cheb, gap/len_x)
+                ky = order_index(cheb, gap/len_y)
+                if (kx > 0 .and. ky > 0) then
+                    px = orders(kx)
+                    py = orders(ky)
+                    if (real(px*py, dp) <= block_cost*real(nx*ny, dp)) then
+                        if (tree%n_blocks == size(tree%blocks, 2)) call grow_blocks()
+                        tree%n_blocks = tree%n_blocks + 1
+                        tree%blocks(:, tree%n_blocks) = [cx, cy, kx, ky]
+                        in_block(tree%first(cx):tree%last(cx), tree%first(cy):tree%last(cy)) &
+                            = .true.
+                        return
+                    end if
+                end if
+            end if
+            if (tree%child(1, cx) == 0 .and. tree%child(1, cy) == 0) return
+            if (tree%child(1, cy) == 0 .or. (tree%child(1, cx) /= 0 .and. nx >= ny)) then
+                call split_pair(tree%child(1, cx), cy)
+                call split_pair(tree%child(2, cx), cy)
+            else
+                call split_pair(cx, tree%child(1, cy))
+                call split_pair(cx, tree%child(2, cy))
+            end if
+        end subroutine split_pair
+
+        subroutine grow_blocks()
+            integer, allocatable :: more(:, :)
+            allocate (more(4, 2*size(tree%blocks, 2)))
+            more(:, 1:tree%n_blocks) = tree%blocks(:, 1:tree%n_blocks)
+            call move_alloc(more, tree%blocks)
+        end subroutine grow_blocks
+    end subroutine new_blocks
+
+    !> The moments of the functions of cluster c against its Lagrange polynomials of
+    !! orders(k), with the field measure W (field side) and without (source side), over the
+    !! part of their support in c: m(row, a) = int g W l_a, from the Chebyshev moments
+    !! (chebyshev_moments) through l_a = (2/m) sum'_{q<m} T_q(t_a) T_q.
+    subroutine cluster_moments(kernel, bx, cheb, tree, c, k, work, mark)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(chebyshev_t), intent(in) :: cheb
+        type(cluster_tree_t), intent(inout) :: tree
+        integer, intent(in) :: c, k
+        type(work_t), intent(inout) :: work
+        integer, intent(inout) :: mark(:)          !! zero on entry and exit
+        integer :: p, i, n_rows
+        if (allocated(tree%side(k, c)%field)) return
+        p = orders(k)
+        call chebyshev_moments(kernel, bx, tree, c, work, mark)
+        n_rows = size(tree%cheb_field(c)%a, 1)
+        allocate (tree%side(k, c)%field(n_rows, p, 2), tree%side(k, c)%source(n_rows, p, 2))
+        ! m(row, a) = sum_q mu(row, q) to_weights(a, q)
+        fields: do i = 1, 2
+            call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_field(c)%a(1, 1, i), n_rows, &
+                       cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, tree%side(k, c)%field(1, 1, i), &
+                       n_rows)
+            call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_source(c)%a(1, 1, i), n_rows, &
+                       cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
+                       tree%side(k, c)%source(1, 1, i), n_rows)
+        end do fields
+    end subroutine cluster_moments
+
+    !> The functions of field i (1 = bx, 2 = bz) with support in cluster c (tree%rows: their
+    !! global numbers, in order of first appearance) and their Chebyshev moments over the part
+    !! of their support in c, int g W T_q and int g T_q (q < n_cheb, T_q across c): on a leaf
+    !! by the moment_points GL rule on every element (exact: degree <= 2 + 1 + 27), on a parent
+    !! from its children's, T_q of the parent being a polynomial of degree q on a child
+    !! (chebyshev_transfer; exact, BLAS products).
+    recursive subroutine chebyshev_moments(kernel, bx, tree, c, work, mark)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(cluster_tree_t), intent(inout) :: tree
+        integer, intent(in) :: c
+        type(work_t), intent(inout) :: work
+        integer, intent(inout) :: mark(:)          !! zero on entry and exit
+        integer, parameter :: np = moment_points
+        real(dp) :: t(np), tq(np, n_cheb), scale, mid, pf(n_loc, n_cheb), ps(n_loc, n_cheb)
+        real(dp) :: s_mat(n_cheb, n_cheb, 2)
+        real(dp), allocatable :: tmp(:, :)
+        integer :: e, r, i, n, q, row, g, lo_r(2), hi_r(2), n_rows, j, ch, n_ch
+        if (allocated(tree%cheb_field(c)%a)) return
+        if (tree%child(1, c) /= 0) then
+            call chebyshev_moments(kernel, bx, tree, tree%child(1, c), work, mark)
+            call chebyshev_moments(kernel, bx, tree, tree%child(2, c), work, mark)
+            call chebyshev_transfer(tree, c, tree%child(1, c), s_mat(:, :, 1))
+            call chebyshev_transfer(tree, c, tree%child(2, c), s_mat(:, :, 2))
+        end if
+        lo_r = [1, bx%n_local + 1]
+        hi_r = [bx%n_local, work%n_fun(1)]
+        components: do i = 1, 2
+            allocate (tree%rows(i, c)%glob(work%n_fun(1)*(tree%last(c) - tree%first(c) + 1)))
+            n = 0
+            do e = tree%first(c), tree%last(c)
+                do r = lo_r(i), hi_r(i)
+                    g = work%glob(r, e)
+                    if (mark(g) /= 0) cycle
+                    n = n + 1
+                    mark(g) = n
+                    tree%rows(i, c)%glob(n) = g
+                end do
+            end do
+            tree%rows(i, c)%n = n
+            mark(tree%rows(i, c)%glob(1:n)) = 0
+        end do components
+        n_rows = maxval(tree%rows(:, c)%n)
+        allocate (tree%cheb_field(c)%a(n_rows, n_cheb, 2), &
+                  tree%cheb_source(c)%a(n_rows, n_cheb, 2), source=0.0_dp)
+        fields: do i = 1, 2
+            n = tree%rows(i, c)%n
+            mark(tree%rows(i, c)%glob(1:n)) = [(q, q=1, n)]
+            if (tree%child(1, c) /= 0) then
+                children: do j = 1, 2
+                    ch = tree%child(j, c)
+                    n_ch = tree%rows(i, ch)%n
+                    allocate (tmp(n_ch, n_cheb))
+                    call dgemm('N', 'N', n_ch, n_cheb, n_cheb, 1.0_dp, &
+                               tree%cheb_field(ch)%a(1, 1, i), size(tree%cheb_field(ch)%a, 1), &
+                               s_mat(1, 1, j), n_cheb, 0.0_dp, tmp, n_ch)
+                    do r = 1, n_ch
+                        row = mark(tree%rows(i, ch)%glob(r))
+                        tree%cheb_field(c)%a(row, :, i) = tree%cheb_field(c)%a(row, :, i) + &
+                                                          tmp(r, :)
+                    end do
+                    call dgemm('N', 'N', n_ch, n_cheb, n_cheb, 1.0_dp, &
+                               tree%cheb_source(ch)%a(1, 1, i), &
+                               size(tree%cheb_source(ch)%a, 1), s_mat(1, 1, j), n_cheb, 0.0_dp, &
+                               tmp, n_ch)
+                    do r = 1, n_ch
+                        row = mark(tree%rows(i, ch)%glob(r))
+                        tree%cheb_source(c)%a(row, :, i) = tree%cheb_source(c)%a(row, :, i) + &
+                                                           tmp(r, :)
+                    end do
+                    deallocate (tmp)
+                end do children
+                mark(tree%rows(i, c)%glob(1:n)) = 0
+                cycle fields
+            end if
+            scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
+            mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
+            elements: do e = tree%first(c), tree%last(c)
+                if (.not. work%tabulated(np, e)) call need_tables(kernel, bx, np, e, work)
+                associate (tbl => work%by_order(np), mf => tree%cheb_field(c)%a, &
+                           ms => tree%cheb_source(c)%a)
+                    t = scale*(tbl%x(:, e) - mid)
+                    tq(:, 1) = 1.0_dp
+                    tq(:, 2) = t
+                    do q = 3, n_cheb
+                        tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
+                    end do
+                    pf(1:hi_r(i) - lo_r(i) + 1, :) = &
+                        matmul(transpose(tbl%bf(:, lo_r(i):hi_r(i), e)), tq)
+                    ps(1:hi_r(i) - lo_r(i) + 1, :) = &
+                        matmul(transpose(tbl%bs(:, lo_r(i):hi_r(i), e)), tq)
+                    do r = lo_r(i), hi_r(i)
+                        row = mark(work%glob(r, e))
+                        mf(row, :, i) = mf(row, :, i) + pf(r - lo_r(i) + 1, :)
+                        ms(row, :, i) = ms(row, :, i) + ps(r - lo_r(i) + 1, :)
+                    end do
+                end associate
+            end do elements
+            mark(tree%rows(i, c)%glob(1:n)) = 0
+        end do fields
+    end subroutine chebyshev_moments
+
+    !> s(k + 1, q + 1): the coefficient of T_k of child ch in T_q of its parent c (q, k <
+    !! n_cheb), t_parent = alpha t_child + beta: by T_(q+1) = 2 (alpha t + beta) T_q - T_(q-1)
+    !! on the coefficients, t T_0 = T_1, t T_k = (T_(k+1) + T_(k-1))/2.
+    pure subroutine chebyshev_transfer(tree, c, ch, s)
+        type(cluster_tree_t), intent(in) :: tree
+        integer, intent(in) :: c, ch
+        real(dp), intent(out) :: s(n_cheb, n_cheb)
+        real(dp) :: alpha, beta, tc(n_cheb + 1)
+        integer :: q, k
+        alpha = (tree%hi(ch) - tree%lo(ch))/(tree%hi(c) - tree%lo(c))
+        beta = ((tree%hi(ch) + tree%lo(ch)) - (tree%hi(c) + tree%lo(c)))/(tree%hi(c) - tree%lo(c))
+        s = 0.0_dp
+        s(1, 1) = 1.0_dp
+        s(1, 2) = beta
+        s(2, 2) = alpha
+        degrees: do q = 2, n_cheb - 1
+            ! tc = t * (column q of s) in the child's basis
+            tc = 0.0_dp
+            tc(2) = s(1, q)
+            times_t: do k = 2, q
+                tc(k + 1) = tc(k + 1) + 0.5_dp*s(k, q)
+                tc(k - 1) = tc(k - 1) + 0.5_dp*s(k, q)
+            end do times_t
+            s(:, q + 1) = 2.0_dp*(alpha*tc(1:n_cheb) + beta*s(:, q)) - s(:, q - 1)
+        end do degrees
+    end subroutine chebyshev_transfer
+
+    !> Add the admissible blocks to T (A of T = A + A^T), one after the other: the kernel at
+    !! the px x py Chebyshev points of the two clusters, and the block of each diagonal
+    !! component Mx K My^T by two products (BLAS); the constant coupling components in
+    !! closed form element pair by element pair (as contract_fields).
+    subroutine add_blocks(kernel, bx, cheb, tree, work, t_mat, err)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(chebyshev_t), intent(in) :: cheb
+        type(cluster_tree_t), intent(inout) :: tree
+        type(work_t), intent(inout) :: work
+        real(dp), intent(inout) :: t_mat(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: g(n_cheb, n_cheb, 2, 2), gx(n_cheb), gy(n_cheb)
+        real(dp), allocatable :: cy_mat(:, :), l_mat(:, :)
+        integer, allocatable :: mark(:)
+        integer :: b, cx, cy, kx, ky, px, py, i, nx, ny, jj, e1, e2, r, col, j
+        allocate (mark(size(t_mat, 1)), source=0)
+        allocate (tree%side(n_orders, tree%n), tree%rows(2, tree%n), tree%cheb_field(tree%n), &
+                  tree%cheb_source(tree%n))
+        allocate (cy_mat(n_cheb, 64), l_mat(64, 64))
+        blocks: do b = 1, tree%n_blocks
+            cx = tree%blocks(1, b)
+            cy = tree%blocks(2, b)
+            kx = tree%blocks(3, b)
+            ky = tree%blocks(4, b)
+            px = orders(kx)
+            py = orders(ky)
+            call cluster_moments(kernel, bx, cheb, tree, cx, kx, work, mark)
+            call cluster_moments(kernel, bx, cheb, tree, cy, ky, work, mark)
+            gx(1:px) = 0.5_dp*(tree%lo(cx) + tree%hi(cx)) + &
+                       0.5_dp*(tree%hi(cx) - tree%lo(cx))*cheb%cosines(1:px, kx)
+            gy(1:py) = 0.5_dp*(tree%lo(cy) + tree%hi(cy)) + &
+                       0.5_dp*(tree%hi(cy) - tree%lo(cy))*cheb%cosines(1:py, ky)
+            call kernel%grid_values(gx(1:px), gy(1:py), g(1:px, 1:py, :, :), err)
+            if (allocated(err)) return
+            work%n_kernel = work%n_kernel + int(px*py, int64)
+            components: do i = 1, 2
+                nx = tree%rows(i, cx)%n
+                ny = tree%rows(i, cy)%n
+                if (size(cy_mat, 2) < ny) then
+                    deallocate (cy_mat)
+                    allocate (cy_mat(n_cheb, 2*ny))
+                end if
+                if (size(l_mat, 1) < nx .or. size(l_mat, 2) < ny) then
+                    deallocate (l_mat)
+                    allocate (l_mat(2*nx, 2*ny))
+                end if
+                ! K My^T (px x ny), then Mx (K My^T) (nx x ny)
+                call dgemm('N', 'T', px, ny, py, 1.0_dp, g(1, 1, i, i), n_cheb, &
+                           tree%side(ky, cy)%source(1, 1, i), size(tree%side(ky, cy)%source, 1), &
+                           0.0_dp, cy_mat, size(cy_mat, 1))
+                call dgemm('N', 'N', nx, ny, px, 1.0_dp, tree%side(kx, cx)%field(1, 1, i), &
+                           size(tree%side(kx, cx)%field, 1), cy_mat, size(cy_mat, 1), 0.0_dp, &
+                           l_mat, size(l_mat, 1))
+                associate (rows => tree%rows(i, cx)%glob, cols => tree%rows(i, cy)%glob)
+                    columns: do jj = 1, ny
+                        t_mat(rows(1:nx), cols(jj)) = t_mat(rows(1:nx), cols(jj)) + &
+                                                      l_mat(1:nx, jj)
+                    end do columns
+                end associate
+            end do components
+            if (.not. kernel%constant_coupling) cycle blocks
+            ! the coupling F_ij (i /= j) is constant: its block is F_ij (int g_r W) (int g_c),
+            ! the moments q = 0 over the parts of the supports in cx and cy
+            couplings: do i = 1, 2
+                j = 3 - i
+                if (kernel%coupling(i) == 0.0_dp) cycle couplings
+                nx = tree%rows(i, cx)%n
+                ny = tree%rows(j, cy)%n
+                associate (rows => tree%rows(i, cx)%glob, cols => tree%rows(j, cy)%glob, &
+                           mx => tree%cheb_field(cx)%a(:, 1, i), &
+                           my => tree%cheb_source(cy)%a(:, 1, j))
+                    coupling_columns: do jj = 1, ny
+                        t_mat(rows(1:nx), cols(jj)) = t_mat(rows(1:nx), cols(jj)) + &
+                            (kernel%coupling(i)*mx(1:nx))*my(jj)
+                    end do coupling_columns
+                end associate
+            end do couplings
+        end do blocks
+    end subroutine add_blocks
 end module galerkin_assembly

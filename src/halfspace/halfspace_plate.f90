@@ -62,7 +62,7 @@ contains
 
     !> Galerkin flexibility T of the half-space on the disk r in [0, a] (module header).
     subroutine assemble_plate_flexibility(bx, bz, g_f, nu_f, t_mat, err, reference, n_kernel, &
-                                          far_digits)
+                                          far_digits, pairwise)
         type(basis_t), intent(in) :: bx                 !! basis of sigma_x (radial shear)
         type(basis_t), intent(in) :: bz                 !! basis of sigma_z (pressure), same mesh
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
@@ -73,6 +73,9 @@ contains
         integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
         real(dp), intent(in), optional :: far_digits    !! accuracy studies: digits of the far
                                                         !! rules (galerkin_assembly)
+        logical, intent(in), optional :: pairwise       !! every far pair pair by pair, no
+                                                        !! interpolated blocks (the assembly
+                                                        !! of main fc09087; tests, benchmarks)
         type(ring_kernel_t) :: kernel
         logical :: use_reference
         call new_ring_kernel(kernel, g_f, nu_f, err)
@@ -89,7 +92,7 @@ contains
         if (use_reference) then
             call assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
         else
-            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits)
+            call assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits, pairwise)
         end if
         if (allocated(err)) call add_context(err, 'plate half-space operator')
     end subroutine assemble_plate_flexibility

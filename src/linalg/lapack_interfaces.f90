@@ -4,7 +4,7 @@ module lapack_interfaces
     implicit none
     private
     public :: dsytrf, dsytrs, dpotrf, dlansy, dgesv, dgetrs, dgetrf, dpbtrf, dpbtrs
-    public :: dspmv
+    public :: dspmv, dgemm
 
     interface
         subroutine dsytrf(uplo, n, a, lda, ipiv, work, lwork, info)
@@ -98,5 +98,15 @@ module lapack_interfaces
             real(dp), intent(in) :: ap(*), x(*)
             real(dp), intent(inout) :: y(*)
         end subroutine dspmv
+
+        !> BLAS C := alpha op(A) op(B) + beta C. Declared pure: it writes C only.
+        pure subroutine dgemm(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc)
+            import :: dp
+            character(len=1), intent(in) :: transa, transb
+            integer, intent(in) :: m, n, k, lda, ldb, ldc
+            real(dp), intent(in) :: alpha, beta
+            real(dp), intent(in) :: a(lda, *), b(ldb, *)
+            real(dp), intent(inout) :: c(ldc, *)
+        end subroutine dgemm
     end interface
 end module lapack_interfaces
