@@ -55,7 +55,7 @@ program bench_phases
     !> The exponent the algorithm should show for P1 fields (n ~ 5 N_e unknowns); the reasons
     !! are in the notes of phases_run.md (notes_lines).
     character(len=*), parameter :: expected(n_phase) = [character(len=14) :: '1', '2', &
-        '1, then 2', '2', '2, then 3', '2', '2', '1', 'as solve', '1']
+        '1, then 2', '2', '2, then 3', '2', '1', '1', 'as tabulation', '1']
     !> Extra timings, each a separate call (not part of the phases' sum).
     integer, parameter :: n_info = 4
     integer, parameter :: I_BUILD = 1, I_SCHUR_SETUP = 2, I_SCHUR_FACT = 3, I_WHOLE = 4
@@ -547,7 +547,8 @@ contains
             '- discretisation: new_discretization (mesh, bases, numbering), the load', &
             '  admissibility check, contact_points (Gauss points of the interface). Expected 1.', &
             '- T assembly: assemble_flexibility, the dense nr x nr half-space flexibility;', &
-            '  nr^2/2 pairs of element integrals of the kernels. Expected 2.', &
+            '  nr^2/2 pairs of element integrals of the kernels (plate, N_e >= 128: far', &
+            '  clusters of element pairs as interpolated blocks). Expected 2 (the dense T).', &
             '- K, M assembly: stiffness_entries and coupling_entries (element triplets),', &
             '  compressed into sparse columns as build_system does. Expected 1.', &
             '- rest of system set-up (*): build_system + use_rigid_coordinates, less the T and', &
@@ -568,12 +569,13 @@ contains
             '- final checks: the sets of the complete problem, the residuals of 4.2a/b (products', &
             '  with the packed B0 block), equilibrium, admissibility, to_absolute. Expected 2.', &
             '- tabulation (stations): station_results::tabulate at the N_e + 1 node stations;', &
-            '  the half-space surface displacement at each station integrates the tractions over', &
-            '  every element (O(stations x elements)). Expected 2.', &
+            '  the half-space surface displacement at each station: the near elements by their', &
+            '  line rules, far clusters of elements by Chebyshev interpolation (a cluster tree).', &
+            '  Expected about 1 (N_e log N_e).', &
             '- design summary: summarise, summary_entries, contact_extent: O(stations). Expected 1.', &
             '- error estimate: error_estimate::estimate_errors, the case discretised, solved and', &
-            '  tabulated on N_e/2 and N_e/4 (T, K, M, Newton included). Expected: as the solve;', &
-            '  its share is about 2^-p + 4^-p of the phases above it.', &
+            '  tabulated on N_e/2 and N_e/4; above N_e = 48 the solves are those of the nested', &
+            '  start, reused, and only the tabulations remain. Expected: as the tabulation.', &
             '- report writing: the report, data file, JSON summary and gnuplot script of', &
             '  analysis_driver::write_case_files written to a temporary folder (NONDIM decks: no', &
             '  CSV). Without the PNG: gnuplot runs as a child process, not in this process''s', &
