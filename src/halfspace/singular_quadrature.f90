@@ -47,6 +47,9 @@ module singular_quadrature
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
     public :: check_bases, near_ratio, n_max, points_for_ratio
+    ! public because the submodule calls them: gfortran 12 does not emit a private module
+    ! procedure that only a submodule (or an inlined call) uses, and the link fails
+    public :: check_displacement_arguments
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     integer, parameter :: n_log = 24        !! points of the product-log rule
@@ -514,6 +517,18 @@ contains
         end if
     end subroutine check_bases
 
+    !> The bases of a surface-displacement call agree, and its arrays have their sizes
+    !! (coefficients of each basis; u and w one per evaluation point).
+    pure subroutine check_displacement_arguments(bx, bz, nrx, nrz, n_eval, nu, nw, err)
+        type(basis_t), intent(in) :: bx, bz
+        integer, intent(in) :: nrx, nrz, n_eval, nu, nw
+        type(error_t), allocatable, intent(out) :: err
+        call check_bases(bx, bz, err)
+        if (allocated(err)) return
+        if (nrx /= bx%n_dof .or. nrz /= bz%n_dof .or. nu /= n_eval .or. nw /= n_eval) &
+            call new_error(err, EXIT_INTERNAL, 'surface displacement: array sizes do not match')
+    end subroutine check_displacement_arguments
+
     !> T_ab = int int g_a(x) W(x) K(x, xi) g_b(xi) dxi dx, blocks [T_xx T_xz; T_zx T_zz] with all
     !! bx coefficients first. Both triangles are integrated (no symmetrisation). Reference
     !! assembly: a rule built point by point for every element pair (graded pieces, GL orders
@@ -643,13 +658,9 @@ contains
         integer :: i, e
         character(len=60) :: where
 
-        call check_bases(bx, bz, err)
+        call check_displacement_arguments(bx, bz, size(rx), size(rz), size(x_eval), size(u), &
+                                          size(w), err)
         if (allocated(err)) return
-        if (size(rx) /= bx%n_dof .or. size(rz) /= bz%n_dof .or. size(u) /= size(x_eval) &
-            .or. size(w) /= size(x_eval)) then
-            call new_error(err, EXIT_INTERNAL, 'surface displacement: array sizes do not match')
-            return
-        end if
         call new_gauss_tables(tab)
         u = 0.0_dp
         w = 0.0_dp

@@ -111,13 +111,9 @@ contains
         integer :: i
         character(len=60) :: where
 
-        call check_bases(bx, bz, err)
+        call check_displacement_arguments(bx, bz, size(rx), size(rz), size(x_eval), size(u), &
+                                          size(w), err)
         if (allocated(err)) return
-        if (size(rx) /= bx%n_dof .or. size(rz) /= bz%n_dof .or. size(u) /= size(x_eval) &
-            .or. size(w) /= size(x_eval)) then
-            call new_error(err, EXIT_INTERNAL, 'surface displacement: array sizes do not match')
-            return
-        end if
         call new_gauss_tables(tab, lazy=.true.)
         call new_chebyshev(cheb)
         sig = traction_polynomials(bx, bz, rx, rz)
