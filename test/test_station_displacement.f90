@@ -62,7 +62,8 @@ contains
         tests = [new_unittest('plate_fast_vs_reference', test_plate), &
                  new_unittest('beam_fast_vs_reference', test_beam), &
                  new_unittest('same_kernel_fast_vs_reference', test_same_kernel), &
-                 new_unittest('small_meshes', test_small_meshes)]
+                 new_unittest('small_meshes', test_small_meshes), &
+                 new_unittest('points_ulps_from_nodes', test_near_nodes)]
     end subroutine collect_station_displacement
 
     ! ------------------------------------------------------------------ test kernels
@@ -178,15 +179,19 @@ contains
     end function points_of
 
     !> Largest difference of u and of w, each relative to the largest of the reference.
-    subroutine check_agreement(u, w, u_ref, w_ref, what, err)
+    subroutine check_agreement(u, w, u_ref, w_ref, what, err, tol)
         real(dp), intent(in) :: u(:), w(:), u_ref(:), w_ref(:)
         character(len=*), intent(in) :: what
         type(error_t), allocatable, intent(out) :: err
+        real(dp), intent(in), optional :: tol    !! default: the module's tolerance
+        real(dp) :: limit
+        limit = tolerance
+        if (present(tol)) limit = tol
         call check_close(err, maxval(abs(u - u_ref))/maxval(abs(u_ref)), 0.0_dp, 0.0_dp, &
-                         tolerance, what//': max |u - u_ref| / max |u_ref|')
+                         limit, what//': max |u - u_ref| / max |u_ref|')
         if (allocated(err)) return
         call check_close(err, maxval(abs(w - w_ref))/maxval(abs(w_ref)), 0.0_dp, 0.0_dp, &
-                         tolerance, what//': max |w - w_ref| / max |w_ref|')
+                         limit, what//': max |w - w_ref| / max |w_ref|')
     end subroutine check_agreement
 
     !> Case label.
@@ -347,4 +352,57 @@ contains
             deallocate (u, w, u_ref, w_ref)
         end do
     end subroutine test_small_meshes
+
+    !> Points a few to a thousand ulps from a node (a load position on a LOADS mesh is such a
+    !! point: its node comes from sums of element lengths). Once these stopped the plate
+    !! (elliptic integral at m1 = 0) and gave Inf for the beam. Expected: the displacement at
+    !! the node itself (the points are moved onto it: singular_quadrature snapped_to_nodes),
+    !! both evaluations; 1e-12 of the largest allows the reference's own rounding (1e-14) and
+    !! would still catch a point left off the node with a wrong rule.
+    subroutine test_near_nodes(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(ring_test_kernel_t) :: ring
+        type(strip_test_kernel_t) :: strip
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: x(:), u(:), w(:), u_ref(:), w_ref(:), rx(:), rz(:)
+        real(dp), parameter :: offsets(8) = [-1000.0_dp, -300.0_dp, -20.0_dp, -3.0_dp, 3.0_dp, &
+                                             20.0_dp, 300.0_dp, 1000.0_dp]
+        integer :: k, node
+        do k = 1, 2
+            if (k == 1) then
+                call make_bases(0.0_dp, 10.0_dp, 37, 'UNIFORM', [INTERP_P1, INTERP_P1], bx, bz, err)
+            else
+                call make_bases(-6.0_dp, 6.0_dp, 37, 'UNIFORM', [INTERP_P1, INTERP_P1], bx, bz, err)
+            end if
+            if (allocated(err)) return
+            rx = coefficients(bx%n_dof, 0.4_dp)
+            rz = coefficients(bz%n_dof, 1.0_dp)
+            node = 11
+            x = [bx%x(node), bx%x(node) + offsets*epsilon(1.0_dp)*abs(bx%x(node))]
+            allocate (u(size(x)), w(size(x)), u_ref(size(x)), w_ref(size(x)))
+            if (k == 1) then
+                call plate_surface_displacement(bx, bz, rx, rz, ring%g, ring%nu, x, u, w, err)
+                if (.not. allocated(err)) call displacement_split_kernel_reference(ring, bx, bz, &
+                    rx, rz, x, u_ref, w_ref, err)
+            else
+                call beam_surface_displacement(bx, bz, rx, rz, strip%g, strip%nu, strip%b, x, u, &
+                                               w, err)
+                if (.not. allocated(err)) call displacement_split_kernel_reference(strip, bx, bz, &
+                    rx, rz, x, u_ref, w_ref, err)
+            end if
+            if (allocated(err)) then
+                call add_context(err, merge('plate', 'beam ', k == 1)//': points near a node')
+                return
+            end if
+            call check_agreement(u, w, spread(u(1), 1, size(x)), spread(w(1), 1, size(x)), &
+                                 merge('plate fast near a node     ', 'beam fast near a node      ', &
+                                       k == 1), err, 1.0e-12_dp)
+            if (.not. allocated(err)) call check_agreement(u_ref, w_ref, &
+                spread(u(1), 1, size(x)), spread(w(1), 1, size(x)), &
+                merge('plate reference near a node', 'beam reference near a node ', k == 1), err, &
+                1.0e-12_dp)
+            if (allocated(err)) return
+            deallocate (u, w, u_ref, w_ref)
+        end do
+    end subroutine test_near_nodes
 end module test_station_displacement

@@ -49,9 +49,11 @@ module singular_quadrature
     public :: check_bases, near_ratio, n_max, points_for_ratio
     ! public because the submodule calls them: gfortran 12 does not emit a private module
     ! procedure that only a submodule (or an inlined call) uses, and the link fails
-    public :: check_displacement_arguments
+    public :: check_displacement_arguments, snapped_to_nodes
 
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
+    real(dp), parameter :: snap_ulps = 1024.0_dp  !! snapped_to_nodes: a point this close to a
+                                                  !! node (in units of eps |x|) is the node
     integer, parameter :: n_log = 24        !! points of the product-log rule
     integer, parameter :: n_inner = 12      !! inner GL points of the pair rules
     real(dp), parameter :: target_digits = 8.5_dp  !! log10(1/error) per direction, error rho^-2n
@@ -517,6 +519,40 @@ contains
         end if
     end subroutine check_bases
 
+    !> The evaluation points, each within snap_ulps of a node moved onto it. On a ray that
+    !! short the log rule's points round to the point itself, where the split kernel is
+    !! singular: a station at a load position a few ulps off its LOADS node stopped the plate
+    !! (elliptic integral at m1 = 0) and gave Inf for the beam. The move, 1e-13 of the
+    !! coordinate, is below the precision of any input position.
+    pure function snapped_to_nodes(nodes, x_eval) result(x)
+        real(dp), intent(in) :: nodes(0:)      !! mesh nodes, increasing
+        real(dp), intent(in) :: x_eval(:)
+        real(dp) :: x(size(x_eval))
+        integer :: i, lo, hi, mid, ne
+        real(dp) :: tol
+        x = x_eval
+        ne = ubound(nodes, 1)
+        tol = snap_ulps*epsilon(1.0_dp)*max(abs(nodes(0)), abs(nodes(ne)), nodes(ne) - nodes(0))
+        points: do i = 1, size(x)
+            ! the last node at or left of x(i) (bisection), then the nearer of it and the next
+            lo = 0
+            hi = ne
+            bisection: do while (hi - lo > 1)
+                mid = (lo + hi)/2
+                if (nodes(mid) <= x(i)) then
+                    lo = mid
+                else
+                    hi = mid
+                end if
+            end do bisection
+            if (abs(nodes(lo) - x(i)) <= tol) then
+                x(i) = nodes(lo)
+            else if (abs(nodes(hi) - x(i)) <= tol) then
+                x(i) = nodes(hi)
+            end if
+        end do points
+    end function snapped_to_nodes
+
     !> The bases of a surface-displacement call agree, and its arrays have their sizes
     !! (coefficients of each basis; u and w one per evaluation point).
     pure subroutine check_displacement_arguments(bx, bz, nrx, nrz, n_eval, nu, nw, err)
@@ -654,7 +690,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(gauss_tables_t) :: tab
         type(line_rule_t) :: line
-        real(dp), allocatable :: f(:, :, :), p(:, :, :), x_rep(:)
+        real(dp), allocatable :: f(:, :, :), p(:, :, :), x_rep(:), x0(:)
         integer :: i, e
         character(len=60) :: where
 
@@ -664,13 +700,14 @@ contains
         call new_gauss_tables(tab)
         u = 0.0_dp
         w = 0.0_dp
+        x0 = snapped_to_nodes(bx%x, x_eval)
         points: do i = 1, size(x_eval)
             elements: do e = 1, bx%ne
-                call build_line_rule(tab, bx%x(e - 1), bx%x(e), x_eval(i), &
-                                     kernel%log_length(x_eval(i)), line)
+                call build_line_rule(tab, bx%x(e - 1), bx%x(e), x0(i), &
+                                     kernel%log_length(x0(i)), line)
                 call grow(f, p, line%n)
                 if (allocated(x_rep)) deallocate (x_rep)
-                allocate (x_rep(line%n), source=x_eval(i))
+                allocate (x_rep(line%n), source=x0(i))
                 call kernel%values(x_rep, line%s(1:line%n), line%wc(1:line%n) /= 0.0_dp, f, p, err)
                 if (allocated(err)) then
                     write (where, '("surface displacement at point ",i0)') i

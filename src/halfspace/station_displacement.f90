@@ -107,6 +107,7 @@ contains
         type(traction_poly_t) :: sig
         type(point_list_t) :: plain, logs
         integer, allocatable :: stack(:)
+        real(dp), allocatable :: x0(:)
         real(dp) :: u_log, w_log
         integer :: i
         character(len=60) :: where
@@ -120,13 +121,14 @@ contains
         call build_tree(bx, tree)
         call fill_moments(tab, bx, sig, cheb, tree)
         allocate (stack(tree%n))
+        x0 = snapped_to_nodes(bx%x, x_eval)
         points: do i = 1, size(x_eval)
             plain%n = 0
             logs%n = 0
-            call gather_points(kernel, tab, bx, sig, cheb, tree, x_eval(i), stack, line, plain, &
+            call gather_points(kernel, tab, bx, sig, cheb, tree, x0(i), stack, line, plain, &
                                logs)
-            call sum_list(kernel, plain, .false., x_eval(i), u(i), w(i), err)
-            if (.not. allocated(err)) call sum_list(kernel, logs, .true., x_eval(i), u_log, &
+            call sum_list(kernel, plain, .false., x0(i), u(i), w(i), err)
+            if (.not. allocated(err)) call sum_list(kernel, logs, .true., x0(i), u_log, &
                                                           w_log, err)
             if (allocated(err)) then
                 write (where, '("surface displacement at point ",i0)') i

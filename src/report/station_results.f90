@@ -25,7 +25,7 @@
 !! twice: the left (inner) and the right (outer) limit, where Q, M or N jump.
 module station_results
     use kinds, only: dp, pi
-    use errors, only: error_t
+    use errors, only: error_t, new_error, EXIT_INTERNAL
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, LOAD_MOMENT, friction_compliance, &
                      total_vertical_load
     use quadrature, only: gauss_legendre
@@ -80,6 +80,12 @@ contains
         tab%val(Q_X, :) = x
         call surface_displacement(m, d, sol%z(d%nv + 1:), tab%val(Q_X, :), u_f, w_f, err)
         if (allocated(err)) return
+        ! no silent Inf or NaN in a report (a quadrature that met the kernel's singularity)
+        if (.not. (all(abs(u_f) <= huge(1.0_dp)) .and. all(abs(w_f) <= huge(1.0_dp)))) then
+            call new_error(err, EXIT_INTERNAL, 'the soil surface displacement at a station is '// &
+                           'not finite')
+            return
+        end if
         allocate (rec(2, 0:d%msh%ne))
         rec(:, :) = nodal_traction_means(d, sol%z(d%nv + 1:))
         if (m%kind /= MODEL_BEAM) rec(1, 0) = 0.0_dp   ! radial shear vanishes on the axis
