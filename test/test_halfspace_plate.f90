@@ -7,6 +7,7 @@
 !! uniform outward radial shear q: u_z(r) = -(1-2nu) q (a-r)/(2G) (r <= a).
 module test_halfspace_plate
     !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
+    use blas_threads, only: blas_thread_count, set_blas_threads
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, check, check_close, error_t
     use errors, only: new_error, EXIT_INTERNAL
@@ -570,12 +571,15 @@ contains
     !! tested against the adaptive reference above): N_e = 150 and 230, uniform and graded
     !! meshes, P1/P1, P2/P2, S2/S2, P2/S2; every entry within 1e-14 of the largest (measured
     !! 1e-15 to 3.2e-15 at N_e 128 to 1000, output/bench/assembly_before_after.md). T does not
-    !! depend on the number of threads, bit for bit (1 and 2 threads).
+    !! depend on the number of threads, bit for bit (1 and 2 OpenMP threads, 1 and 2 BLAS
+    !! threads: the blocks' dgemm run on one), checked on P2, EDGES, N_e = 700, where
+    !! OpenBLAS splits the products over its threads (without the one-thread guard of
+    !! galerkin_assembly this check fails).
     subroutine test_blocks_vs_pairwise(err)
         type(error_t), allocatable, intent(out) :: err
         type(basis_t) :: bx, bz
         real(dp), allocatable :: t(:, :), t_pair(:, :), t_one(:, :)
-        integer :: ic, ig, threads
+        integer :: ic, ig, threads, blas
         integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_P2, &
             INTERP_S2, INTERP_S2, INTERP_P2, INTERP_S2], [2, 4])
         integer, parameter :: nes(4) = [230, 150, 150, 230]
@@ -600,14 +604,22 @@ contains
                 threads = 1
                 !$ threads = omp_get_max_threads()
                 if (ic > 1 .or. ig > 1) cycle meshes
+                ! large enough for OpenBLAS to split a dgemm over its threads (P2, N_e = 700)
+                call make_bases(700, 'EDGES', INTERP_P2, INTERP_P2, bx, bz, err)
+                if (allocated(err)) return
+                blas = blas_thread_count()
                 !$ call omp_set_num_threads(1)
+                call set_blas_threads(1)
                 call assemble_plate_flexibility(bx, bz, 2.3_dp, 0.2_dp, t_one, err)
                 !$ call omp_set_num_threads(2)
+                call set_blas_threads(2)
                 if (.not. allocated(err)) call assemble_plate_flexibility(bx, bz, 2.3_dp, &
                                                                           0.2_dp, t, err)
                 !$ call omp_set_num_threads(threads)
+                call set_blas_threads(blas)
                 if (allocated(err)) return
-                call check(err, all(t == t_one), 'blocks: the same T on 1 and 2 threads')
+                call check(err, all(t == t_one), 'blocks: the same T on 1 and 2 threads '// &
+                           '(OpenMP and BLAS)')
                 if (allocated(err)) return
             end do meshes
         end do cases

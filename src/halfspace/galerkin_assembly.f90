@@ -60,6 +60,7 @@ module galerkin_assembly
     !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num, omp_in_parallel
     use kinds, only: dp, pi
     use lapack_interfaces, only: dgemm
+    use blas_threads, only: blas_thread_count, set_blas_threads
     use sorting, only: sort_ascending
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
@@ -213,7 +214,7 @@ contains
         real(dp), allocatable :: column_loc(:, :, :, :, :)
         logical, allocatable :: shift_ok(:)
         logical :: in_order
-        integer :: e2, n_threads, thread, n_colours, colour, first, last, step
+        integer :: e2, n_threads, thread, n_colours, colour, first, last, step, blas_count
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
@@ -277,7 +278,14 @@ contains
             return
         end do threads
         if (use_blocks) then
+            ! dgemm on one BLAS thread: OpenBLAS's threaded kernels sum in an order that depends
+            ! on the thread count, and T must not depend on it (found by review: T changed with
+            ! OPENBLAS_NUM_THREADS). A sweep already runs each case's BLAS on one thread, so
+            ! the thread count is only touched in a single case, never concurrently.
+            blas_count = blas_thread_count()
+            if (blas_count > 1) call set_blas_threads(1)
             call add_blocks(kernel, bx, cheb, tree, works(1), t_mat, err)
+            if (blas_count > 1) call set_blas_threads(blas_count)
             if (allocated(err)) then
                 call add_context(err, 'half-space operator, interpolated blocks')
                 return

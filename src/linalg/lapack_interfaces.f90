@@ -99,8 +99,8 @@ module lapack_interfaces
             real(dp), intent(inout) :: y(*)
         end subroutine dspmv
 
-        !> BLAS C := alpha op(A) op(B) + beta C. Declared pure: it writes C only.
-        pure subroutine dgemm(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc)
+        !> BLAS C := alpha op(A) op(B) + beta C (not pure: OpenBLAS may start threads).
+        subroutine dgemm(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc)
             import :: dp
             character(len=1), intent(in) :: transa, transb
             integer, intent(in) :: m, n, k, lda, ldb, ldc
