@@ -1234,9 +1234,9 @@ contains
     pure integer function order_index(cheb, ratio) result(k)
         type(chebyshev_t), intent(in) :: cheb
         real(dp), intent(in) :: ratio
-        do k = 1, n_orders
+        orders: do k = 1, n_orders
             if (ratio >= cheb%min_ratio(k)) return
-        end do
+        end do orders
         k = 0
     end function order_index
 
@@ -1382,15 +1382,15 @@ contains
         components: do i = 1, 2
             allocate (tree%rows(i, c)%glob(work%n_fun(1)*(tree%last(c) - tree%first(c) + 1)))
             n = 0
-            do e = tree%first(c), tree%last(c)
-                do r = lo_r(i), hi_r(i)
+            cluster_elements: do e = tree%first(c), tree%last(c)
+                local_functions: do r = lo_r(i), hi_r(i)
                     g = work%glob(r, e)
-                    if (mark(g) /= 0) cycle
+                    if (mark(g) /= 0) cycle local_functions
                     n = n + 1
                     mark(g) = n
                     tree%rows(i, c)%glob(n) = g
-                end do
-            end do
+                end do local_functions
+            end do cluster_elements
             tree%rows(i, c)%n = n
             mark(tree%rows(i, c)%glob(1:n)) = 0
         end do components

@@ -188,9 +188,9 @@ contains
     pure integer function order_index(cheb, ratio) result(k)
         type(chebyshev_t), intent(in) :: cheb
         real(dp), intent(in) :: ratio
-        do k = 1, n_orders - 1
+        orders: do k = 1, n_orders - 1
             if (ratio >= cheb%min_ratio(k)) return
-        end do
+        end do orders
         k = n_orders
     end function order_index
 
@@ -341,8 +341,6 @@ contains
         sx = sig%c(1, 1, e) + t*(sig%c(2, 1, e) + t*sig%c(3, 1, e))
         sz = sig%c(1, 2, e) + t*(sig%c(2, 2, e) + t*sig%c(3, 2, e))
     end subroutine tractions_at
-
-    ! ---------------------------------------------------------------- one evaluation point
 
     ! ---------------------------------------------------------------- one evaluation point
 
