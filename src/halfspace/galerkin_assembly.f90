@@ -61,6 +61,7 @@ module galerkin_assembly
     use kinds, only: dp, pi
     use lapack_interfaces, only: dgemm
     use blas_threads, only: blas_thread_count, set_blas_threads
+    use chebyshev_tables, only: n_cheb, orders, n_orders, chebyshev_t, new_chebyshev, order_for
     use sorting, only: sort_ascending
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
@@ -95,10 +96,6 @@ module galerkin_assembly
     real(dp), parameter :: block_ratio = 1.0_dp  !! gap / longer cluster length, at least
     real(dp), parameter :: block_cost = 16.0_dp   !! kernel values per element pair, at most
     integer, parameter :: leaf_max = 4           !! elements of a leaf cluster, at most
-    integer, parameter :: n_cheb = 28            !! interpolation points per cluster, the most
-    integer, parameter :: orders(5) = [12, 16, 20, 24, n_cheb]  !! interpolation orders
-    integer, parameter :: n_orders = size(orders)
-    real(dp), parameter :: cheb_digits = 16.0_dp !! order: rho^(-order) <= 10^(-cheb_digits)
     integer, parameter :: moment_points = 16     !! GL points per element of the moments
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
@@ -149,14 +146,6 @@ module galerkin_assembly
         real(dp), allocatable :: y(:, :, :)        !! y(k, i, c) = sum_l g(k, l, i, .) bs(c, l)
         type(error_t), allocatable :: err          !! failure of this thread's last column
     end type work_t
-
-    !> Chebyshev points of the first kind of every order, the least gap / length at which
-    !! each order is used and the Lagrange matrices (new_chebyshev).
-    type :: chebyshev_t
-        real(dp) :: cosines(n_cheb, n_orders) = 0.0_dp
-        real(dp) :: min_ratio(n_orders) = 0.0_dp
-        real(dp) :: to_weights(n_cheb, n_cheb, n_orders) = 0.0_dp
-    end type chebyshev_t
 
     !> Moments of the functions of one cluster against its Lagrange polynomials of one order:
     !! field(row, a, i) with the field measure, source(row, a, i) without; i the field.
@@ -1204,42 +1193,6 @@ contains
 
     ! ---------------------------------------------------------------- interpolated blocks
 
-    !> The Chebyshev tables of every order: points of the first kind, the least gap / length
-    !! at which each order interpolates to 10^-cheb_digits (as station_displacement), and the
-    !! matrices of the Lagrange polynomials l_i = (2/m) sum'_{q<m} T_q(t_i) T_q.
-    pure subroutine new_chebyshev(cheb)
-        type(chebyshev_t), intent(out) :: cheb
-        real(dp) :: theta, rho
-        integer :: i, k, m, q
-        orders_loop: do k = 1, n_orders
-            m = orders(k)
-            nodes: do i = 1, m
-                theta = real(2*i - 1, dp)*pi/real(2*m, dp)
-                cheb%cosines(i, k) = cos(theta)
-                cheb%to_weights(i, 1, k) = 1.0_dp
-                if (m >= 2) cheb%to_weights(i, 2, k) = cheb%cosines(i, k)
-                recurrence: do q = 3, m
-                    cheb%to_weights(i, q, k) = 2.0_dp*cheb%cosines(i, k)* &
-                        cheb%to_weights(i, q - 1, k) - cheb%to_weights(i, q - 2, k)
-                end do recurrence
-            end do nodes
-            cheb%to_weights(1:m, 1:m, k) = (2.0_dp/real(m, dp))*cheb%to_weights(1:m, 1:m, k)
-            cheb%to_weights(1:m, 1, k) = 0.5_dp*cheb%to_weights(1:m, 1, k)
-            rho = 10.0_dp**(cheb_digits/real(m, dp))
-            cheb%min_ratio(k) = 0.25_dp*(rho + 1.0_dp/rho) - 0.5_dp
-        end do orders_loop
-    end subroutine new_chebyshev
-
-    !> The lowest order that interpolates across a cluster at gap / length = ratio (0 if none).
-    pure integer function order_index(cheb, ratio) result(k)
-        type(chebyshev_t), intent(in) :: cheb
-        real(dp), intent(in) :: ratio
-        orders: do k = 1, n_orders
-            if (ratio >= cheb%min_ratio(k)) return
-        end do orders
-        k = 0
-    end function order_index
-
     !> The cluster tree (contiguous elements halved by count down to leaf_max), the admissible
     !! blocks (cx left of cy, gap >= block_ratio times the longer, and fewer kernel values
     !! than block_cost per element pair) and in_block(e1, e2) for their element pairs.
@@ -1290,8 +1243,8 @@ contains
             nx = tree%last(cx) - tree%first(cx) + 1
             ny = tree%last(cy) - tree%first(cy) + 1
             if (gap >= block_ratio*max(len_x, len_y)) then
-                kx = order_index(cheb, gap/len_x)
-                ky = order_index(cheb, gap/len_y)
+                kx = order_for(cheb, gap/len_x)
+                ky = order_for(cheb, gap/len_y)
                 if (kx > 0 .and. ky > 0) then
                     px = orders(kx)
                     py = orders(ky)

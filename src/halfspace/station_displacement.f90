@@ -35,27 +35,15 @@
 !! (doc/METHOD.md).
 submodule(singular_quadrature) station_displacement
     use kinds, only: pi
+    use chebyshev_tables, only: n_cheb, orders, n_orders, chebyshev_t, new_chebyshev, &
+                                chebyshev_values, order_for
     implicit none
 
     real(dp), parameter :: far_ratio = 0.5_dp   !! gap / length from which a cluster is one piece
-    integer, parameter :: n_cheb = 28           !! interpolation points of the moments, the most
-    integer, parameter :: orders(5) = [12, 16, 20, 24, n_cheb]  !! interpolation orders used
-    real(dp), parameter :: cheb_digits = 16.0_dp  !! order: rho^(-order) <= 10^(-cheb_digits)
     integer, parameter :: leaf_max = 3          !! elements of a leaf cluster, at most (a cluster
                                                 !! of 4 elements at gap = length/2 needs 31 GL
                                                 !! points element by element, > n_cheb)
-    integer, parameter :: n_orders = size(orders)
     integer, parameter :: n_weights = sum(orders)
-
-    !> Chebyshev points of the first kind on [-1, 1] for each order, the least gap / length at
-    !! which each order is used, and the matrices that give the weights of an order from the
-    !! Chebyshev moments (`order_weights`).
-    type :: chebyshev_t
-        real(dp) :: cosines(n_cheb, n_orders) = 0.0_dp   !! cosines(i, k): point i of orders(k)
-        real(dp) :: min_ratio(n_orders) = 0.0_dp
-        real(dp) :: to_weights(n_cheb, n_cheb, n_orders) = 0.0_dp  !! (i, q + 1, k): (2/m) T_q
-                                                   !! at point i of m = orders(k), q = 0 halved
-    end type chebyshev_t
 
     !> Binary tree of clusters of contiguous elements; cluster 1 is the whole mesh.
     type :: cluster_tree_t
@@ -142,56 +130,19 @@ contains
 
     ! ---------------------------------------------------------------- interpolation
 
-    !> The Chebyshev tables of every order (chebyshev_t). Order m serves clusters whose
-    !! Bernstein ellipse through x0 has rho >= 10^(cheb_digits/m), i.e. gap / length >=
-    !! (c - 1)/2 with c = (rho + 1/rho)/2 (points_for_ratio inverted). The Lagrange polynomial
-    !! of point i of the m points of the first kind is l_i = (2/m) sum'_{q<m} T_q(x_i) T_q
-    !! (the q = 0 term halved).
-    pure subroutine new_chebyshev(cheb)
-        type(chebyshev_t), intent(out) :: cheb
-        real(dp) :: theta, rho
-        integer :: i, k, m
-        orders_loop: do k = 1, n_orders
-            m = orders(k)
-            nodes: do i = 1, m
-                theta = real(2*i - 1, dp)*pi/real(2*m, dp)
-                cheb%cosines(i, k) = cos(theta)
-            end do nodes
-            call chebyshev_values(cheb%cosines(1:m, k), cheb%to_weights(1:m, 1:m, k))
-            cheb%to_weights(1:m, 1:m, k) = (2.0_dp/real(m, dp))*cheb%to_weights(1:m, 1:m, k)
-            cheb%to_weights(1:m, 1, k) = 0.5_dp*cheb%to_weights(1:m, 1, k)
-            rho = 10.0_dp**(cheb_digits/real(m, dp))
-            cheb%min_ratio(k) = max(far_ratio, 0.25_dp*(rho + 1.0_dp/rho) - 0.5_dp)
-        end do orders_loop
-    end subroutine new_chebyshev
-
-    !> t(i, q + 1) = T_q(xi(i)), q = 0, ..., size(t, 2) - 1, by the three-term recurrence
-    !! (stable on [-1, 1]), on the vector of points.
-    pure subroutine chebyshev_values(xi, t)
-        real(dp), intent(in) :: xi(:)
-        real(dp), intent(out) :: t(:, :)
-        integer :: q
-        t(:, 1) = 1.0_dp
-        if (size(t, 2) >= 2) t(:, 2) = xi
-        recurrence: do q = 3, size(t, 2)
-            t(:, q) = 2.0_dp*xi*t(:, q - 1) - t(:, q - 2)
-        end do recurrence
-    end subroutine chebyshev_values
-
     !> Range of the weights of orders(k) in wx(:, c) and wz(:, c).
     pure integer function slot_start(k) result(i0)
         integer, intent(in) :: k
         i0 = sum(orders(1:k - 1)) + 1
     end function slot_start
 
-    !> The lowest order that is accurate for a cluster at gap / length = ratio.
+    !> The lowest order that is accurate for a far cluster at gap / length = ratio (>= far_ratio,
+    !! where the highest order always is: its least ratio is 0.4996).
     pure integer function order_index(cheb, ratio) result(k)
         type(chebyshev_t), intent(in) :: cheb
         real(dp), intent(in) :: ratio
-        orders: do k = 1, n_orders - 1
-            if (ratio >= cheb%min_ratio(k)) return
-        end do orders
-        k = n_orders
+        k = order_for(cheb, ratio)
+        if (k == 0) k = n_orders
     end function order_index
 
     !> Weights of orders(k) on cluster c from its Chebyshev moments: int l_i sigma =
