@@ -286,7 +286,7 @@ contains
         call use_rigid_coordinates(sys)
         t_build = now() - t0
         t0 = now()
-        if (nest) call nested_prediction(m, d, dc, t_c, sol, sigma_start)
+        if (nest) call nested_prediction(m, dc, t_c, sol, sigma_start)
         call solve_newton(m, d, sys, sol, err, sigma_start)
         t_newton = now() - t0
         if (allocated(err)) error stop 'bench_phases: the Newton solve failed'

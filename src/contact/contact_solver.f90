@@ -85,7 +85,7 @@ contains
         sol%seconds(2) = wall_seconds() - t0 - sys%t_seconds
         if (allocated(err)) return
         t0 = wall_seconds()
-        if (nest) call nested_prediction(m, d, dc, t_c, sol, sigma_start)
+        if (nest) call nested_prediction(m, dc, t_c, sol, sigma_start)
         sol%seconds(3) = wall_seconds() - t0
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
@@ -165,9 +165,9 @@ contains
     !! (sigma not allocated when the coarse case could not be solved: the Newton method then
     !! starts from the adhesive solution). Its linear solves are counted in
     !! sol%n_nested_solves.
-    recursive subroutine nested_prediction(m, d, dc, t_c, sol, sigma)
+    recursive subroutine nested_prediction(m, dc, t_c, sol, sigma)
         type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d, dc
+        type(discretization_t), intent(in) :: dc
         real(dp), allocatable, intent(inout) :: t_c(:, :)
         type(solution_t), intent(inout) :: sol
         real(dp), allocatable, intent(out) :: sigma(:, :)

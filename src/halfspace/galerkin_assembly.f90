@@ -708,7 +708,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: a1, a2
         if (reducible(kernel)) then
-            call reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
+            call reduced_pair(kernel, bx, e1, e2, map, work, loc, err)
         else
             a1 = bx%x(e1 - 1)
             a2 = bx%x(e2 - 1)
@@ -894,9 +894,9 @@ contains
     !! across it, ONE kernel evaluation per node of v, and the integral across v of the basis
     !! products exact by work%n_across GL points. A self pair integrates the triangle x < xi
     !! and adds the transpose (the other triangle, by reciprocity).
-    subroutine reduced_pair(kernel, bx, bz, e1, e2, map, work, loc, err)
+    subroutine reduced_pair(kernel, bx, e1, e2, map, work, loc, err)
         class(split_kernel_t), intent(in) :: kernel
-        type(basis_t), intent(in) :: bx, bz
+        type(basis_t), intent(in) :: bx
         integer, intent(in) :: e1, e2
         type(pair_map_t), intent(in) :: map
         type(work_t), intent(inout) :: work
@@ -1449,7 +1449,7 @@ contains
         real(dp) :: g(n_cheb, n_cheb, 2, 2), gx(n_cheb), gy(n_cheb)
         real(dp), allocatable :: cy_mat(:, :), l_mat(:, :)
         integer, allocatable :: mark(:)
-        integer :: b, cx, cy, kx, ky, px, py, i, nx, ny, jj, e1, e2, r, col, j
+        integer :: b, cx, cy, kx, ky, px, py, i, nx, ny, jj, j
         allocate (mark(size(t_mat, 1)), source=0)
         allocate (tree%side(n_orders, tree%n), tree%rows(2, tree%n), tree%cheb_field(tree%n), &
                   tree%cheb_source(tree%n))
