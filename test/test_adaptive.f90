@@ -25,7 +25,12 @@ module test_adaptive
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
     use error_estimate, only: formal_order
     use shape_functions, only: INTERP_S2
-    use deck_reader, only: deck_t, read_deck, parse_deck
+    use deck_reader, only: deck_t, read_deck, parse_deck, case_model
+    use analysis_driver, only: case_result_t, solve_case
+    use errors, only: EXIT_OK
+    use contact_solver, only: solve_contact
+    use station_results, only: station_table_t, tabulate
+    use design_summary, only: summary_t, summarise
     implicit none
     private
     public :: collect_adaptive
@@ -39,7 +44,8 @@ contains
                  new_unittest('bonded_punch_to_tolerance', test_bonded_punch), &
                  new_unittest('max_elements_stops_short', test_max_elements), &
                  new_unittest('adapt_card_read', test_card), &
-                 new_unittest('formal_orders', test_formal_orders)]
+                 new_unittest('formal_orders', test_formal_orders), &
+                 new_unittest('refined_until_friction_resolved', test_auto_refinement)]
     end subroutine collect_adaptive
 
     !> Bisection, the 2:1 balance, snapping and coarsening on small meshes whose answers are
@@ -322,4 +328,80 @@ contains
         call check(err, formal_order(m, 'settlement_max', .false.) == 4.0_dp, &
                    'P1 beam, point load')
     end subroutine test_formal_orders
+
+    !> A very soft beam (rho 1e-6, zeta 0.5, f 2, eps_bar 1e-12, nu_f 0, H = 0.3 V; the
+    !! atlas's corner, doc/CHOICES.md "Very soft beams") on 20 elements: solved with the law
+    !! of the complete problem, but its friction admissibility check fails pointwise (asserted
+    !! here first, so the test cannot pass without exercising the refinement). The driver
+    !! solves it again on 2, 4, ... times the elements until the check passes: the case ends
+    !! with status 0, a warning naming the meshes, and the key results of a direct solve on the
+    !! final mesh (the same deck with that N_e: an independent run of the same method). A deck
+    !! whose mesh resolves its friction (input/beam_nondim.dat) is not refined.
+    subroutine test_auto_refinement(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=80), parameter :: soft(6) = [character(len=80) :: &
+            'MODEL     BEAM', &
+            'NONDIM    1.0E-6    0.5       0.3       0.0       0.05', &
+            'FRICTION  2.0       1.0E-12', &
+            'LOAD      POINT     1.0       0.3       0.0', &
+            'MESH      20', &
+            'END']
+        type(deck_t) :: deck
+        type(model_t) :: m, m_direct
+        type(case_result_t) :: res, direct
+        character(len=:), allocatable :: label
+        character(len=*), parameter :: dir = 'build/test_auto_refinement'
+        integer :: k
+        call execute_command_line('mkdir -p '//dir)
+        call parse_deck('soft.dat', soft, deck, err)
+        if (.not. allocated(err)) call case_model(deck, 1, m, label, err)
+        if (allocated(err)) return
+        call require_unresolved(m, err)
+        if (allocated(err)) return
+        call solve_case(deck, m, label, dir, 'soft', .false., .false., -1, res)
+        call check(err, res%status == EXIT_OK .and. m%ne > 20, 'very soft beam: not solved '// &
+                   'on a refined mesh: '//res%message)
+        if (allocated(err)) return
+        call check(err, any(index(res%warnings, 'mesh refined from N_e = 20 to') > 0), &
+                   'very soft beam: the refinement is not reported')
+        if (allocated(err)) return
+        call case_model(deck, 1, m_direct, label, err)
+        if (allocated(err)) return
+        m_direct%ne = m%ne
+        call solve_case(deck, m_direct, label, dir, 'soft_direct', .false., .false., -1, direct)
+        call check(err, direct%status == EXIT_OK .and. m_direct%ne == m%ne .and. &
+                   size(direct%entries) == size(res%entries), 'direct solve on the final mesh')
+        if (allocated(err)) return
+        do k = 1, size(res%entries)
+            call check(err, res%entries(k)%value == direct%entries(k)%value, &
+                       'refined result differs from the direct solve: '//res%entries(k)%key)
+            if (allocated(err)) return
+        end do
+        call read_deck('input/beam_nondim.dat', deck, err)
+        if (.not. allocated(err)) call case_model(deck, 1, m, label, err)
+        if (allocated(err)) return
+        call solve_case(deck, m, label, dir, 'beam', .false., .false., -1, res)
+        call check(err, res%status == EXIT_OK .and. m%ne == 20 .and. &
+                   all(index(res%warnings, 'mesh refined') == 0), &
+                   'input/beam_nondim.dat refined although its friction is resolved')
+        call execute_command_line('rm -rf '//dir)
+    end subroutine test_auto_refinement
+
+    !> Precondition of test_auto_refinement: on m's own mesh the case solves, and its
+    !! friction admissibility exceeds the allowance.
+    subroutine require_unresolved(m, err)
+        type(model_t), intent(in) :: m
+        type(error_t), allocatable, intent(out) :: err
+        type(discretization_t) :: d
+        type(solution_t) :: sol
+        type(station_table_t) :: tab
+        type(summary_t) :: s
+        call new_discretization(m, d, err)
+        if (.not. allocated(err)) call solve_contact(m, d, sol, err)
+        if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
+        if (allocated(err)) return
+        s = summarise(m, sol, tab)
+        call check(err, s%admissibility > s%admissibility_tol, 'very soft beam on N_e = 20: '// &
+                   'friction already resolved pointwise (the test would not refine)')
+    end subroutine require_unresolved
 end module test_adaptive
