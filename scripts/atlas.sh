@@ -136,6 +136,13 @@ for m in ['beam', 'plate']:
         grid[key] = (max(old[0], bad), max(old[1], int(r['linear_solves']) if st == 0 else 0))
     lines += [f'## {m}: {len(rows)} cases', '']
     lines += [f'| outcome | cases |', '|---|---|'] + [f'| {k} | {v} |' for k, v in sorted(count.items())]
+    # solved on a finer mesh than the deck's: fricon's warning (doc/CHOICES.md, very soft beams)
+    refined = [l.split(': ', 2)[1].split(' (')[0] + ': ' + l.split('): ', 1)[1].split(':')[0]
+               for l in open(f'{out}/{m}.stderr') if 'mesh refined from' in l]
+    if refined:
+        lines += ['', f'Solved on a mesh refined by fricon (friction not resolved pointwise on '
+                  f'N_e = 20; doc/CHOICES.md): {len(refined)}', '']
+        lines += [f'- {r}' for r in refined]
     if solves:
         solves.sort()
         lines += ['', f'Linear solves of the solved cases: median {solves[len(solves)//2]}, '

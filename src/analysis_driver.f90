@@ -457,7 +457,7 @@ contains
                               report_notes(result%warnings, ''), err_report, result%adaptation)
             call write_summary_json(base//'.json', result%name, deck%path, m, result%status, &
                                     result%message, result%entries, s, sol, tab, err_report, &
-                                    result%adaptation)
+                                    result%adaptation, result%warnings)
             return
         end if
         call write_data_file(base//'.dat', m, tab, err)
@@ -465,7 +465,8 @@ contains
                                                                                tab, err)
         if (.not. allocated(err)) call write_summary_json(base//'.json', result%name, deck%path, &
                                                           m, EXIT_OK, '', result%entries, s, &
-                                                          sol, tab, err, result%adaptation)
+                                                          sol, tab, err, result%adaptation, &
+                                                          result%warnings)
         if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
                                                          result%label, s, err)
         if (allocated(err)) then

@@ -365,6 +365,10 @@ contains
         call check(err, any(index(res%warnings, 'mesh refined from N_e = 20 to') > 0), &
                    'very soft beam: the refinement is not reported')
         if (allocated(err)) return
+        call check(err, json_has(dir//'/soft.json', '"elements": ', m%ne) .and. &
+                   json_has(dir//'/soft.json', '"warnings": ["mesh refined from N_e = 20 to ', &
+                            m%ne), 'very soft beam: the JSON does not give the refined mesh')
+        if (allocated(err)) return
         call case_model(deck, 1, m_direct, label, err)
         if (allocated(err)) return
         m_direct%ne = m%ne
@@ -386,6 +390,26 @@ contains
                    'input/beam_nondim.dat refined although its friction is resolved')
         call execute_command_line('rm -rf '//dir)
     end subroutine test_auto_refinement
+
+    !> Whether the file at path has a line that starts (after blanks) with key followed by
+    !! the integer n.
+    logical function json_has(path, key, n)
+        character(len=*), intent(in) :: path, key
+        integer, intent(in) :: n
+        character(len=400) :: line
+        character(len=12) :: num
+        integer :: u, ios
+        json_has = .false.
+        write (num, '(i0)') n
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(adjustl(line), key//trim(num)) == 1) json_has = .true.
+        end do
+        close (u)
+    end function json_has
 
     !> Precondition of test_auto_refinement: on m's own mesh the case solves, and its
     !! friction admissibility exceeds the allowance.

@@ -112,7 +112,7 @@ contains
     !> output/CASE.json: status, units, the key results (summary_table), contact intervals
     !! and the checks. A failed case gets its status and message, and no results.
     subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err, &
-                                  adaptation)
+                                  adaptation, warnings)
         character(len=*), intent(in) :: path, name, deck_path, message
         type(model_t), intent(in) :: m
         integer, intent(in) :: status
@@ -122,6 +122,7 @@ contains
         type(station_table_t), intent(in) :: tab
         type(error_t), allocatable, intent(out) :: err
         type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
+        character(len=*), intent(in), optional :: warnings(:)    !! as the report prints them
         type(units_t) :: un
         integer :: u, i
         logical :: adapted
@@ -138,6 +139,15 @@ contains
         write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
         write (u, '(a,i0,a)') '  "status": ', status, ','
         write (u, '(a)') '  "message": '//json_string(message)//','
+        write (u, '(a,i0,a)') '  "elements": ', m%ne, ','
+        write (u, '(a)', advance='no') '  "warnings": ['
+        if (present(warnings)) then
+            do i = 1, size(warnings)
+                write (u, '(a)', advance='no') trim(merge(', ', '  ', i > 1))// &
+                    json_string(trim(warnings(i)))
+            end do
+        end if
+        write (u, '(a)') '],'
         if (status /= 0) then
             write (u, '(a)') '  "results": null'
             write (u, '(a)') '}'
