@@ -629,14 +629,14 @@ contains
         if (.not. info%adapted) return
         write (buf, '(a,es9.2,a,i0,a,i0,a,i0)') 'mesh adapted (ADAPT tol ', info%tol, &
             ', max_elements ', info%max_ne, '): ', info%cycles, ' cycles, final N_e = ', info%ne
-        lines = [lines, buf]
+        lines = [character(len=400) :: lines, buf]
         if (info%estimate >= 0.0_dp) then
             write (buf, '(a,es9.2,a)') 'largest estimated relative error ', info%estimate, &
                 ' ('//info%worst//')'
         else
             buf = 'no error estimate on the final mesh (a coarsened mesh could not be solved)'
         end if
-        lines = [lines, buf]
+        lines = [character(len=400) :: lines, buf]
         if (info%reached) then
             lines = [character(len=400) :: lines, 'tolerance reached']
         else
@@ -650,7 +650,7 @@ contains
                 write (buf, '(a,i3,a,i6,a)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
                     ', not estimated (indicators from the previous cycle)'
             end if
-            lines = [lines, buf]
+            lines = [character(len=400) :: lines, buf]
         end do
     end function adaptation_lines
 end module adaptive_solve

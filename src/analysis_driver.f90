@@ -31,6 +31,7 @@ module analysis_driver
         real(dp) :: rho = 0.0_dp
         real(dp) :: mean_pressure = 0.0_dp         !! V / contact area [F/L^2] (figures)
         integer :: n_outer = 0, n_inner = 0
+        integer :: elements = 0                    !! N_e of the mesh solved (refined, adapted)
         type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
         type(adaptation_t) :: adaptation           !! what ADAPT did (adapted false without it)
         character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
@@ -310,6 +311,8 @@ contains
         if (.not. allocated(err) .and. m%adapt_tol <= 0.0_dp) &
             call refine_until_admissible(m, progress_unit, d, sol, tab, s, result, err)
         if (.not. allocated(err)) call require_admissible(s, err)
+        result%elements = m%ne
+        if (result%adaptation%adapted) result%elements = result%adaptation%ne
         if (allocated(err)) then
             result%status = err%code
             result%message = err%message
@@ -669,15 +672,15 @@ contains
         keys = entry_keys(m)
         call open_temporary(path, u, err)
         if (allocated(err)) return
-        write (u, '(a)', advance='no') 'case,parameters,status,rho,outer_iterations'
+        write (u, '(a)', advance='no') 'case,parameters,status,rho,outer_iterations,elements'
         do k = 1, size(keys)
             write (u, '(a)', advance='no') ','//trim(keys(k))//unit_suffix(results, k)
         end do
         write (u, '(a)') ',message'
         do i = 1, size(results)
             associate (r => results(i))
-                write (u, '(a,",",a,",",i0,",",es15.7,",",i0)', advance='no') r%name, &
-                    '"'//r%label//'"', r%status, r%rho, r%n_outer
+                write (u, '(a,",",a,",",i0,",",es15.7,",",i0,",",i0)', advance='no') r%name, &
+                    '"'//r%label//'"', r%status, r%rho, r%n_outer, r%elements
                 do k = 1, size(keys)
                     if (r%status /= EXIT_OK .or. .not. allocated(r%entries)) then
                         write (u, '(a)', advance='no') ','

@@ -45,7 +45,8 @@ contains
                  new_unittest('max_elements_stops_short', test_max_elements), &
                  new_unittest('adapt_card_read', test_card), &
                  new_unittest('formal_orders', test_formal_orders), &
-                 new_unittest('refined_until_friction_resolved', test_auto_refinement)]
+                 new_unittest('refined_until_friction_resolved', test_auto_refinement), &
+                 new_unittest('adapted_case_files', test_adapted_files)]
     end subroutine collect_adaptive
 
     !> Bisection, the 2:1 balance, snapping and coarsening on small meshes whose answers are
@@ -359,7 +360,8 @@ contains
         call require_unresolved(m, err)
         if (allocated(err)) return
         call solve_case(deck, m, label, dir, 'soft', .false., .false., -1, res)
-        call check(err, res%status == EXIT_OK .and. m%ne > 20, 'very soft beam: not solved '// &
+        call check(err, res%status == EXIT_OK .and. m%ne > 20 .and. res%elements == m%ne, &
+                   'very soft beam: not solved '// &
                    'on a refined mesh: '//res%message)
         if (allocated(err)) return
         call check(err, any(index(res%warnings, 'mesh refined from N_e = 20 to') > 0), &
@@ -391,14 +393,52 @@ contains
         call execute_command_line('rm -rf '//dir)
     end subroutine test_auto_refinement
 
+    !> input/plate_adapt.dat with ADAPT 5e-2 64 (small enough for the debug build) through
+    !! the driver, as `fricon` runs it: solved, its report states the adaptation (the report's
+    !! adaptation lines once stopped a debug build: a character array constructor), and the
+    !! JSON's elements is the final mesh's N_e, the adaptation's, not the MESH card's 16.
+    subroutine test_adapted_files(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        type(case_result_t) :: res
+        character(len=80), allocatable :: lines(:)
+        character(len=:), allocatable :: label
+        character(len=*), parameter :: dir = 'build/test_adapted_files'
+        integer :: k
+        call read_deck('input/plate_adapt.dat', deck, err)
+        if (allocated(err)) return
+        lines = deck%lines
+        do k = 1, size(lines)
+            if (lines(k)(1:5) == 'ADAPT') lines(k) = 'ADAPT     5.0E-2    64'
+        end do
+        call parse_deck('adapt_small.dat', lines, deck, err)
+        if (.not. allocated(err)) call case_model(deck, 1, m, label, err)
+        if (allocated(err)) return
+        call execute_command_line('mkdir -p '//dir)
+        call solve_case(deck, m, label, dir, 'adapt', .false., .false., -1, res)
+        call check(err, res%status == EXIT_OK .and. res%adaptation%adapted .and. &
+                   res%adaptation%ne > 16 .and. res%elements == res%adaptation%ne, &
+                   'ADAPT deck through the driver: '//res%message)
+        if (allocated(err)) return
+        call check(err, json_has(dir//'/adapt.json', '"elements": ', res%adaptation%ne), &
+                   'ADAPT deck: the JSON elements is not the adapted mesh''s')
+        if (allocated(err)) return
+        call check(err, json_has(dir//'/adapt.txt', 'mesh adapted (ADAPT tol  5.00E-02, '// &
+                                 'max_elements 64): ', -1, ' cycles, final N_e = '), &
+                   'ADAPT deck: the report does not state the adaptation')
+        call execute_command_line('rm -rf '//dir)
+    end subroutine test_adapted_files
+
     !> Whether the file at path has a line that starts (after blanks) with key followed by
-    !! the integer n.
-    logical function json_has(path, key, n)
+    !! the integer n (n = -1: any digits), then tail if given.
+    logical function json_has(path, key, n, tail)
         character(len=*), intent(in) :: path, key
         integer, intent(in) :: n
-        character(len=400) :: line
+        character(len=*), intent(in), optional :: tail
+        character(len=400) :: line, rest
         character(len=12) :: num
-        integer :: u, ios
+        integer :: u, ios, d
         json_has = .false.
         write (num, '(i0)') n
         open (newunit=u, file=path, status='old', action='read', iostat=ios)
@@ -406,7 +446,21 @@ contains
         do
             read (u, '(a)', iostat=ios) line
             if (ios /= 0) exit
-            if (index(adjustl(line), key//trim(num)) == 1) json_has = .true.
+            line = adjustl(line)
+            if (index(line, key) /= 1) cycle
+            rest = line(len(key) + 1:)
+            if (n >= 0) then
+                if (index(rest, trim(num)) /= 1) cycle
+                rest = rest(len_trim(num) + 1:)
+            else
+                d = verify(rest, '0123456789')
+                if (d <= 1) cycle
+                rest = rest(d:)
+            end if
+            if (present(tail)) then
+                if (index(rest, tail) /= 1) cycle
+            end if
+            json_has = .true.
         end do
         close (u)
     end function json_has

@@ -139,7 +139,11 @@ contains
         write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
         write (u, '(a,i0,a)') '  "status": ', status, ','
         write (u, '(a)') '  "message": '//json_string(message)//','
-        write (u, '(a,i0,a)') '  "elements": ', m%ne, ','
+        if (adapted) then
+            write (u, '(a,i0,a)') '  "elements": ', adaptation%ne, ','
+        else
+            write (u, '(a,i0,a)') '  "elements": ', m%ne, ','
+        end if
         write (u, '(a)', advance='no') '  "warnings": ['
         if (present(warnings)) then
             do i = 1, size(warnings)
