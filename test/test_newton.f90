@@ -36,6 +36,8 @@ module test_newton
                               point_tractions, set_terms, use_rigid_coordinates
     use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve
     use linear_solve, only: solve_equilibrated
+    use band_solve, only: band_cholesky_solve
+    use lapack_interfaces, only: dpbtrf, dpbtrs
     use contact_test_support, only: nondim_plate, nondim_beam, run
     implicit none
     private
@@ -55,7 +57,8 @@ contains
                  new_unittest('stiff_structures', test_stiff_structures), &
                  new_unittest('newton_agrees_with_two_loop', test_agreement), &
                  new_unittest('fig07_ref_case5_one_state', test_fig07_case5), &
-                 new_unittest('schur_solve_matches_dense', test_schur_matches_dense)]
+                 new_unittest('schur_solve_matches_dense', test_schur_matches_dense), &
+                 new_unittest('band_solve_matches_lapack', test_band_solve)]
     end subroutine collect_newton
 
     !> Solve m and assert the four checks of the module header; what names the case.
@@ -445,4 +448,52 @@ contains
         call check_close(err, maxval(abs(x_schur - x_dense))/maxval(abs(x_dense)), 0.0_dp, &
                          0.0_dp, 1.0e-9_dp, 'Schur vs dense solve, relative difference')
     end subroutine compare_one
+
+    !> band_solve (the Schur complement's K_ii solves) against LAPACK's dpbtrs with the same
+    !! dpbtrf factor, and against the matrix itself (the residual K x - b), on a symmetric
+    !! positive definite band matrix (n = 40, kd = 4: diagonal 10, off-diagonals from a fixed
+    !! sine pattern of size at most 1, so K is diagonally dominant) with three right-hand
+    !! sides, one of them zero but for its last entry (the substitution's far end).
+    subroutine test_band_solve(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer, parameter :: n = 40, kd = 4, nrhs = 3
+        real(dp) :: band(kd + 1, n), factor(kd + 1, n), b(n, nrhs), x(n, nrhs), x_ref(n, nrhs)
+        real(dp) :: r(n)
+        integer :: i, j, c, info
+        do j = 1, n
+            band(1, j) = 10.0_dp
+            do i = 2, kd + 1
+                band(i, j) = sin(real(7*j + 3*i, dp))
+            end do
+        end do
+        do c = 1, nrhs
+            do i = 1, n
+                b(i, c) = cos(real(i*c, dp))
+            end do
+        end do
+        b(1:n - 1, 3) = 0.0_dp
+        factor = band
+        call dpbtrf('L', n, kd, factor, kd + 1, info)
+        call check(err, info == 0, 'dpbtrf failed on a diagonally dominant band')
+        if (allocated(err)) return
+        x = b
+        call band_cholesky_solve(factor, kd, x)
+        x_ref = b
+        call dpbtrs('L', n, kd, nrhs, factor, kd + 1, x_ref, n, info)
+        call check(err, info == 0 .and. maxval(abs(x - x_ref)) <= 1.0e-14_dp*maxval(abs(x_ref)), &
+                   'band_cholesky_solve differs from dpbtrs')
+        if (allocated(err)) return
+        do c = 1, nrhs
+            r = -b(:, c)
+            do j = 1, n          ! r += K x from the lower band and its mirror
+                do i = j, min(n, j + kd)
+                    r(i) = r(i) + band(1 + i - j, j)*x(j, c)
+                    if (i /= j) r(j) = r(j) + band(1 + i - j, j)*x(i, c)
+                end do
+            end do
+            call check(err, maxval(abs(r)) <= 1.0e-14_dp*maxval(abs(b(:, c))), &
+                       'band_cholesky_solve: residual K x - b too large')
+            if (allocated(err)) return
+        end do
+    end subroutine test_band_solve
 end module test_newton

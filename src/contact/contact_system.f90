@@ -389,11 +389,14 @@ contains
         type(contact_points_t), intent(in) :: pts
         real(dp), intent(in) :: z(:)
         real(dp) :: sigma(2, pts%n)
-        integer :: p, k
+        integer :: p, k, i
+        ! scalar loops: z(idx(...)) as an array section makes a temporary per point
         do p = 1, pts%n
             do k = 1, 2
-                sigma(k, p) = dot_product(pts%val(1:pts%nl(k), k, p), &
-                                          z(pts%idx(1:pts%nl(k), k, p)))
+                sigma(k, p) = 0.0_dp
+                do i = 1, pts%nl(k)
+                    sigma(k, p) = sigma(k, p) + pts%val(i, k, p)*z(pts%idx(i, k, p))
+                end do
             end do
         end do
     end function point_tractions
@@ -405,17 +408,19 @@ contains
         type(contact_points_t), intent(in) :: pts
         real(dp), intent(in) :: sigma(:, :)
         real(dp), intent(inout) :: res(:)
-        real(dp) :: fx, fz, tau0
-        integer :: p
+        real(dp) :: f(2), tau0
+        integer :: p, k, i
         points: do p = 1, pts%n
             tau0 = friction_threshold(law%f, sigma(2, p))
-            fx = -sys%c*(law%eps - sys%law%eps)*sigma(1, p) &
-                 - law%slip*slip_excess(sigma(1, p), tau0)
-            fz = -law%penalty*tensile_part(sigma(2, p))
-            associate (ix => pts%idx(1:pts%nl(1), 1, p), iz => pts%idx(1:pts%nl(2), 2, p))
-                res(ix) = res(ix) + fx*pts%wt(p)*pts%val(1:pts%nl(1), 1, p)
-                res(iz) = res(iz) + fz*pts%wt(p)*pts%val(1:pts%nl(2), 2, p)
-            end associate
+            f(1) = -sys%c*(law%eps - sys%law%eps)*sigma(1, p) &
+                   - law%slip*slip_excess(sigma(1, p), tau0)
+            f(2) = -law%penalty*tensile_part(sigma(2, p))
+            ! scalar loops, as in point_tractions
+            do k = 1, 2
+                do i = 1, pts%nl(k)
+                    res(pts%idx(i, k, p)) = res(pts%idx(i, k, p)) + f(k)*pts%wt(p)*pts%val(i, k, p)
+                end do
+            end do
         end do points
     end subroutine add_interface_terms
 

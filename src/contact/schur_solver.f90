@@ -21,8 +21,9 @@ module schur_solver
     use model, only: FIELD_U, FIELD_PSI
     use discretization, only: discretization_t
     use contact_system, only: system_t, set_terms_t, a0_times, a0_column
+    use band_solve, only: band_cholesky_solve
     use sparse_matrix, only: packed_position, unpack_lower
-    use lapack_interfaces, only: dpbtrf, dpbtrs, dsytrf, dsytrs, dgetrf, dgetrs
+    use lapack_interfaces, only: dpbtrf, dsytrf, dsytrs, dgetrf, dgetrs
     implicit none
     private
 
@@ -205,9 +206,20 @@ contains
         type(system_t), intent(in) :: sys
         type(schur_t), intent(inout) :: sc
         real(dp), allocatable :: w(:, :), col(:)
-        type(error_t), allocatable :: err
+        integer, allocatable :: first(:)
         integer :: j1, j2, j, k
         allocate (w(sc%ni, block_columns), sc%s0(sc%nk*(sc%nk + 1)/2))
+        ! C's nonzeros come by kept column (coupling_nonzeros): those of columns >= j start
+        ! at first(j)
+        allocate (first(sc%nk + 1))
+        k = 1
+        do j = 1, sc%nk + 1
+            do while (k <= size(sc%c_col))
+                if (sc%c_col(k) >= j) exit
+                k = k + 1
+            end do
+            first(j) = k
+        end do
         blocks: do j1 = 1, sc%nk, block_columns
             j2 = min(sc%nk, j1 + block_columns - 1)
             do j = j1, j2
@@ -216,14 +228,9 @@ contains
                 sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%nk, j)) = &
                     col(sc%kept(j:))
             end do
-            call inner_solve(sc, w(:, 1:j2 - j1 + 1), err)
-            if (allocated(err)) then      ! an illegal argument: keep the dense path
-                sc%ready = .false.
-                return
-            end if
+            call inner_solve(sc, w(:, 1:j2 - j1 + 1))
             columns: do j = j1, j2
-                nonzeros: do k = 1, size(sc%c_val)
-                    if (sc%c_col(k) < j) cycle nonzeros
+                nonzeros: do k = first(j), size(sc%c_val)
                     associate (s => sc%s0(packed_position(sc%nk, sc%c_col(k), j)))
                         s = s - sc%c_val(k)*w(sc%c_row(k), j - j1 + 1)
                     end associate
@@ -504,7 +511,7 @@ contains
             if (allocated(err)) return
             x = x + dx
             converged = maxval(abs(dx)) <= refine_limit*maxval(abs(x))
-            if (step >= 2 .and. converged) exit refinement
+            if (converged) exit refinement
         end do refinement
         if (present(accurate)) accurate = fac%nu == 0 .or. converged
         if (.not. all(abs(x) <= huge(1.0_dp))) then
@@ -524,8 +531,7 @@ contains
         integer :: k, info
         character(len=80) :: text
         y = reshape(b(sc%inner), [sc%ni, 1])
-        call inner_solve(sc, y, err)
-        if (allocated(err)) return
+        call inner_solve(sc, y)
         g = reshape(b(sc%kept), [sc%nk, 1])
         do k = 1, size(sc%c_val)
             g(sc%c_col(k), 1) = g(sc%c_col(k), 1) - sc%c_val(k)*y(sc%c_row(k), 1)
@@ -546,24 +552,18 @@ contains
         do k = 1, size(sc%c_val)
             y(sc%c_row(k), 1) = y(sc%c_row(k), 1) - sc%c_val(k)*g(sc%c_col(k), 1)
         end do
-        call inner_solve(sc, y, err)
-        if (allocated(err)) return
+        call inner_solve(sc, y)
         x = b
         x(sc%inner) = y(:, 1)
         x(sc%kept) = g(:, 1)
     end subroutine apply_inverse
 
-    !> y <- K_ii^-1 y by the banded Cholesky factor (dpbtrs; info /= 0 is an illegal argument).
-    subroutine inner_solve(sc, y, err)
+    !> y <- K_ii^-1 y by the banded Cholesky factor (band_solve: contiguous loops, not dpbtrs,
+    !! whose per-row BLAS calls cost more than the arithmetic on these narrow bands).
+    pure subroutine inner_solve(sc, y)
         type(schur_t), intent(in) :: sc
         real(dp), intent(inout) :: y(:, :)
-        type(error_t), allocatable, intent(out) :: err
-        integer :: info
-        character(len=80) :: text
-        call dpbtrs('L', sc%ni, sc%kd, size(y, 2), sc%kband, sc%kd + 1, y, sc%ni, info)
-        if (info == 0) return
-        write (text, '(a,i0)') 'dpbtrs: illegal argument ', -info
-        call new_error(err, EXIT_INTERNAL, trim(text))
+        call band_cholesky_solve(sc%kband, sc%kd, y)
     end subroutine inner_solve
 
     !> J x: A0 x with the fixed unknowns' rows and columns replaced by the identity, plus

@@ -151,12 +151,15 @@ contains
         type(columns_t), intent(in) :: c
         real(dp), intent(in) :: x(:)
         real(dp) :: y(c%nrow)
-        integer :: j
+        integer :: j, k
+        ! a scalar loop: the array form y(row(k1:k2)) = y(row(k1:k2)) + ... makes the compiler
+        ! allocate a temporary per column (it cannot rule out repeated rows), which cost more
+        ! than the products on small meshes
         y = 0.0_dp
         do j = 1, c%ncol
-            associate (k1 => c%ptr(j), k2 => c%ptr(j + 1) - 1)
-                y(c%row(k1:k2)) = y(c%row(k1:k2)) + c%val(k1:k2)*x(j)
-            end associate
+            do k = c%ptr(j), c%ptr(j + 1) - 1
+                y(c%row(k)) = y(c%row(k)) + c%val(k)*x(j)
+            end do
         end do
     end function columns_times
 
