@@ -483,9 +483,9 @@ contains
     !> Solve J x = b (J = A0 + set terms, fixed unknowns with identity rows) with the
     !! factorised Schur complement; iterative refinement with J itself until a step changes x
     !! by at most refine_limit of max |x| (at least one step; at most two with a fresh
-    !! factorisation, where the second was measured to change nothing once the first had
-    !! converged; with a low-rank update in use up to max_update_steps, accurate false if
-    !! none converged, and the caller factorises afresh).
+    !! factorisation: once a step has changed x by so little, the next, which contracts by
+    !! the same factor, changes it by less; with a low-rank update in use up to
+    !! max_update_steps, accurate false if none converged, and the caller factorises afresh).
     subroutine schur_solve(sys, sc, st, fac, b, x, err, accurate)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
