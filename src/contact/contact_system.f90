@@ -28,7 +28,7 @@ module contact_system
     use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
     use sparse_matrix, only: columns_t, triplets_t, compressed, transposed, triplets_of, &
                              columns_times, dense_column, packed_lower, packed_times, &
-                             packed_column, packed_entry
+                             packed_column, packed_entry, packed_position
     implicit none
     private
 
@@ -130,7 +130,8 @@ module contact_system
     public :: build_system, add_point_mass, contact_points, new_law, relative_change
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
     public :: jacobian_with_terms
-    public :: jacobian_diagonal, linear_part, set_terms, a0_times, set_base_matrix
+    public :: jacobian_diagonal, linear_part, set_terms, a0_times, set_base_matrix, &
+              a0_lower_column
     public :: use_rigid_coordinates, a0_column, a0_dense, a0_diagonal, diagonal_scaling
 
     !> Set-dependent entries of the Jacobian (global unknown numbers).
@@ -277,6 +278,26 @@ contains
             end if
         end associate
     end function a0_column
+
+    !> Column j of A0 without the part of B0 above the diagonal (those rows are 0): the rows
+    !! j and below, and every row of the sparse blocks K, M, M^T, are a0_column's. The upper
+    !! part of a packed column is a strided gather, which cost more than the Schur
+    !! complement's other set-up work at N_e = 1000 (output/bench/linalg_before_after.md).
+    pure function a0_lower_column(sys, j) result(col)
+        type(system_t), intent(in) :: sys
+        integer, intent(in) :: j
+        real(dp) :: col(sys%nv + sys%nr)
+        associate (nv => sys%nv)
+            if (j <= nv) then
+                col = a0_column(sys, j)
+            else
+                col(1:nv) = dense_column(sys%mt, j - nv)
+                col(nv + 1:j - 1) = 0.0_dp
+                col(j:) = sys%b0(packed_position(sys%nr, j - nv, j - nv): &
+                                 packed_position(sys%nr, sys%nr, j - nv))
+            end if
+        end associate
+    end function a0_lower_column
 
     !> A0 as a dense array (n^2 numbers: only for the methods that factorise it whole).
     pure function a0_dense(sys) result(a)

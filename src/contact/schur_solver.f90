@@ -20,8 +20,8 @@ module schur_solver
     use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
     use model, only: FIELD_U, FIELD_PSI
     use discretization, only: discretization_t
-    use contact_system, only: system_t, set_terms_t, a0_times, a0_column
-    use band_solve, only: band_cholesky_solve
+    use contact_system, only: system_t, set_terms_t, a0_times, a0_column, a0_lower_column
+    use band_solve, only: band_cholesky_solve, band_cholesky_solve_rows
     use sparse_matrix, only: packed_position, unpack_lower
     use lapack_interfaces, only: dpbtrf, dsytrf, dsytrs, dgetrf, dgetrs
     implicit none
@@ -186,7 +186,7 @@ contains
         passes: do pass = 1, 2      ! count, then fill
             nnz = 0
             kept_columns: do l = 1, sc%nk
-                col = a0_column(sys, sc%kept(l))
+                col = a0_lower_column(sys, sc%kept(l))   ! only inner rows are read
                 inner_rows: do i = 1, sc%ni
                     if (col(sc%inner(i)) == 0.0_dp) cycle inner_rows
                     nnz = nnz + 1
@@ -205,10 +205,10 @@ contains
     subroutine form_s0(sys, sc)
         type(system_t), intent(in) :: sys
         type(schur_t), intent(inout) :: sc
-        real(dp), allocatable :: w(:, :), col(:)
+        real(dp), allocatable :: wt(:, :), col(:)
         integer, allocatable :: first(:)
         integer :: j1, j2, j, k
-        allocate (w(sc%ni, block_columns), sc%s0(sc%nk*(sc%nk + 1)/2))
+        allocate (sc%s0(sc%nk*(sc%nk + 1)/2))
         ! C's nonzeros come by kept column (coupling_nonzeros): those of columns >= j start
         ! at first(j)
         allocate (first(sc%nk + 1))
@@ -222,20 +222,24 @@ contains
         end do
         blocks: do j1 = 1, sc%nk, block_columns
             j2 = min(sc%nk, j1 + block_columns - 1)
+            ! the block's columns of C as rows (band_cholesky_solve_rows: one vector operation
+            ! across the block per step of the substitution)
+            allocate (wt(j2 - j1 + 1, sc%ni))
             do j = j1, j2
-                col = a0_column(sys, sc%kept(j))
-                w(:, j - j1 + 1) = col(sc%inner)
+                col = a0_lower_column(sys, sc%kept(j))   ! kept(j:) >= kept(j)
+                wt(j - j1 + 1, :) = col(sc%inner)
                 sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%nk, j)) = &
                     col(sc%kept(j:))
             end do
-            call inner_solve(sc, w(:, 1:j2 - j1 + 1))
+            call band_cholesky_solve_rows(sc%kband, sc%kd, wt)
             columns: do j = j1, j2
                 nonzeros: do k = first(j), size(sc%c_val)
                     associate (s => sc%s0(packed_position(sc%nk, sc%c_col(k), j)))
-                        s = s - sc%c_val(k)*w(sc%c_row(k), j - j1 + 1)
+                        s = s - sc%c_val(k)*wt(j - j1 + 1, sc%c_row(k))
                     end associate
                 end do nonzeros
             end do columns
+            deallocate (wt)
         end do blocks
         do j = 1, sc%n_pinned
             sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%n_pinned, j)) = 0.0_dp

@@ -4,14 +4,18 @@
 !! a dot or axpy kernel per row: for the narrow bands of a beam or plate (kd = 3 to 8) those
 !! calls cost about ten times the arithmetic (measured: dpbtrs was a quarter of the Newton
 !! iterations at N_e = 20 and a tenth of the whole solve at N_e = 1000;
-!! output/bench/linalg_before_after.md). The loops here run down the columns of the band, so
-!! every access is contiguous, with the same operations in the same order as the
-!! column-oriented substitution.
+!! output/bench/linalg_before_after.md). `band_cholesky_solve` runs down the columns of the
+!! band for one right-hand side at a time; `band_cholesky_solve_rows` takes many right-hand
+!! sides as the rows of one array, so that each step of the substitution is one vector
+!! operation across all of them (the Schur complement's set-up: thousands of right-hand
+!! sides), and starts the forward substitution at the first row where any of them is nonzero
+!! (columns of a coupling block: zero above their element). Both do the operations of the
+!! column-oriented substitution in its order.
 module band_solve
     use kinds, only: dp
     implicit none
     private
-    public :: band_cholesky_solve
+    public :: band_cholesky_solve, band_cholesky_solve_rows
 
 contains
 
@@ -26,6 +30,34 @@ contains
             call backward(kband, kd, y(:, c))
         end do
     end subroutine band_cholesky_solve
+
+    !> yt <- (K^-1 yt^T)^T: right-hand side r is the row yt(r, :) (K, kband, kd as above).
+    pure subroutine band_cholesky_solve_rows(kband, kd, yt)
+        real(dp), intent(in) :: kband(:, :)     !! (kd + 1, n) the factor L, dpbtrf 'L'
+        integer, intent(in) :: kd               !! half bandwidth
+        real(dp), intent(inout) :: yt(:, :)     !! (nrhs, n)
+        integer :: j, i, n, j0
+        n = size(yt, 2)
+        j0 = n + 1
+        do j = 1, n
+            if (any(yt(:, j) /= 0.0_dp)) then
+                j0 = j
+                exit
+            end if
+        end do
+        do j = j0, n                             ! L^-1: rows above j0 stay 0
+            yt(:, j) = yt(:, j)/kband(1, j)
+            do i = 1, min(kd, n - j)
+                yt(:, j + i) = yt(:, j + i) - kband(1 + i, j)*yt(:, j)
+            end do
+        end do
+        do j = n, 1, -1                          ! L^-T
+            do i = 1, min(kd, n - j)
+                yt(:, j) = yt(:, j) - kband(1 + i, j)*yt(:, j + i)
+            end do
+            yt(:, j) = yt(:, j)/kband(1, j)
+        end do
+    end subroutine band_cholesky_solve_rows
 
     !> y <- L^-1 y: each solved entry is removed from the entries below it in its column.
     pure subroutine forward(kband, kd, y)
