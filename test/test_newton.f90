@@ -36,7 +36,7 @@ module test_newton
                               point_tractions, set_terms, use_rigid_coordinates
     use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve
     use linear_solve, only: solve_equilibrated
-    use band_solve, only: band_cholesky_solve
+    use band_solve, only: band_cholesky_solve, band_cholesky_solve_rows
     use lapack_interfaces, only: dpbtrf, dpbtrs
     use contact_test_support, only: nondim_plate, nondim_beam, run
     implicit none
@@ -449,7 +449,8 @@ contains
                          0.0_dp, 1.0e-9_dp, 'Schur vs dense solve, relative difference')
     end subroutine compare_one
 
-    !> band_solve (the Schur complement's K_ii solves) against LAPACK's dpbtrs with the same
+    !> band_solve (the Schur complement's K_ii solves, one and many right-hand sides) against
+    !! LAPACK's dpbtrs with the same
     !! dpbtrf factor, and against the matrix itself (the residual K x - b), on a symmetric
     !! positive definite band matrix (n = 40, kd = 4: diagonal 10, off-diagonals from a fixed
     !! sine pattern of size at most 1, so K is diagonally dominant) with three right-hand
@@ -458,7 +459,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         integer, parameter :: n = 40, kd = 4, nrhs = 3
         real(dp) :: band(kd + 1, n), factor(kd + 1, n), b(n, nrhs), x(n, nrhs), x_ref(n, nrhs)
-        real(dp) :: r(n)
+        real(dp) :: r(n), xt(nrhs, n)
         integer :: i, j, c, info
         do j = 1, n
             band(1, j) = 10.0_dp
@@ -482,6 +483,17 @@ contains
         call dpbtrs('L', n, kd, nrhs, factor, kd + 1, x_ref, n, info)
         call check(err, info == 0 .and. maxval(abs(x - x_ref)) <= 1.0e-14_dp*maxval(abs(x_ref)), &
                    'band_cholesky_solve differs from dpbtrs')
+        if (allocated(err)) return
+        xt = transpose(b)
+        call band_cholesky_solve_rows(factor, kd, xt)
+        call check(err, maxval(abs(transpose(xt) - x_ref)) <= 1.0e-14_dp*maxval(abs(x_ref)), &
+                   'band_cholesky_solve_rows differs from dpbtrs')
+        if (allocated(err)) return
+        ! the third alone: its forward substitution starts at its only nonzero, row n
+        xt(1:1, :) = transpose(b(:, 3:3))
+        call band_cholesky_solve_rows(factor, kd, xt(1:1, :))
+        call check(err, maxval(abs(xt(1, :) - x_ref(:, 3))) <= 1.0e-14_dp*maxval(abs(x_ref(:, 3))), &
+                   'band_cholesky_solve_rows from its first nonzero row differs from dpbtrs')
         if (allocated(err)) return
         do c = 1, nrhs
             r = -b(:, c)
