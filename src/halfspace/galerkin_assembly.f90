@@ -42,7 +42,12 @@
 !! threads). The kernel values fall by 3 to 9 times at N_e 200 to 1000; T
 !! moves by 1e-15 to 3.2e-15 of its largest entry (pairwise = .true.: no blocks, the assembly
 !! of fc09087, output/bench/assembly_before_after.md). Below min_blocks elements the blocks
-!! did not pay (most pairs are near or nearly near).
+!! did not pay (most pairs are near or nearly near). Issue 7 item 3, "T share" step: the
+!! blocks start at N_e = 50 (was 128), with leaves of up to 6 elements (was 4) and up to 24
+!! kernel values per element pair (was 16), and the Chebyshev moments of a leaf form T_q at
+!! its GL nodes once per element and a function repeating another (bx and bz of one family)
+!! once (`leaf_moments`): T 10 to 25 % faster at N_e = 50 to 128 (1.8e-15 of its largest
+!! entry from the pairwise T), 5 % at 200, the same at 500 and 1000 (the same blocks there).
 !! A translation-invariant kernel on a (piecewise) uniform mesh repeats the pair integrals of
 !! the translated pair (`translates`): O(N_e) pairs are integrated, the rest copied, column
 !! after column. Otherwise the columns (source elements) are integrated in parallel (OpenMP,
@@ -91,11 +96,12 @@ module galerkin_assembly
     integer, parameter :: max_threads = 8    !! each thread keeps its own GL tables (about 12 MB
                                              !! at N_e = 1000) and column storage (0.6 MB)
     ! interpolated blocks (add_blocks)
-    integer, parameter :: min_blocks = 128       !! fewer elements: no blocks (they did not
-                                                 !! pay at N_e = 100)
+    integer, parameter :: min_blocks = 50        !! fewer elements: no blocks (at N_e = 40
+                                                 !! and 48 they cost more than they saved;
+                                                 !! from 50 to 128 they pay, 10 to 25 %)
     real(dp), parameter :: block_ratio = 1.0_dp  !! gap / longer cluster length, at least
-    real(dp), parameter :: block_cost = 16.0_dp   !! kernel values per element pair, at most
-    integer, parameter :: leaf_max = 4           !! elements of a leaf cluster, at most
+    real(dp), parameter :: block_cost = 24.0_dp  !! kernel values per element pair, at most
+    integer, parameter :: leaf_max = 6           !! elements of a leaf cluster, at most
     integer, parameter :: moment_points = 16     !! GL points per element of the moments
 
     !> Local numbering of one element pair: rows (field element) and columns (source element),
@@ -1318,8 +1324,7 @@ contains
         integer, intent(in) :: c
         type(work_t), intent(inout) :: work
         integer, intent(inout) :: mark(:)          !! zero on entry and exit
-        integer, parameter :: np = moment_points
-        real(dp) :: t(np), tq(np, n_cheb), scale, mid, pf(n_loc, n_cheb), ps(n_loc, n_cheb)
+        real(dp) :: pf(n_loc, n_cheb, leaf_max), ps(n_loc, n_cheb, leaf_max)
         real(dp) :: s_mat(n_cheb, n_cheb, 2)
         real(dp), allocatable :: tmp(:, :)
         integer :: e, r, i, n, q, row, g, lo_r(2), hi_r(2), n_rows, j, ch, n_ch
@@ -1350,6 +1355,7 @@ contains
         n_rows = maxval(tree%rows(:, c)%n)
         allocate (tree%cheb_field(c)%a(n_rows, n_cheb, 2), &
                   tree%cheb_source(c)%a(n_rows, n_cheb, 2), source=0.0_dp)
+        if (tree%child(1, c) == 0) call leaf_moments(kernel, bx, tree, c, work, pf, ps)
         fields: do i = 1, 2
             n = tree%rows(i, c)%n
             mark(tree%rows(i, c)%glob(1:n)) = [(q, q=1, n)]
@@ -1380,32 +1386,58 @@ contains
                 mark(tree%rows(i, c)%glob(1:n)) = 0
                 cycle fields
             end if
-            scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
-            mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
             elements: do e = tree%first(c), tree%last(c)
-                if (.not. work%tabulated(np, e)) call need_tables(kernel, bx, np, e, work)
-                associate (tbl => work%by_order(np), mf => tree%cheb_field(c)%a, &
-                           ms => tree%cheb_source(c)%a)
-                    t = scale*(tbl%x(:, e) - mid)
-                    tq(:, 1) = 1.0_dp
-                    tq(:, 2) = t
-                    do q = 3, n_cheb
-                        tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
-                    end do
-                    pf(1:hi_r(i) - lo_r(i) + 1, :) = &
-                        matmul(transpose(tbl%bf(:, lo_r(i):hi_r(i), e)), tq)
-                    ps(1:hi_r(i) - lo_r(i) + 1, :) = &
-                        matmul(transpose(tbl%bs(:, lo_r(i):hi_r(i), e)), tq)
+                associate (mf => tree%cheb_field(c)%a, ms => tree%cheb_source(c)%a, &
+                           k => e - tree%first(c) + 1)
                     do r = lo_r(i), hi_r(i)
                         row = mark(work%glob(r, e))
-                        mf(row, :, i) = mf(row, :, i) + pf(r - lo_r(i) + 1, :)
-                        ms(row, :, i) = ms(row, :, i) + ps(r - lo_r(i) + 1, :)
+                        mf(row, :, i) = mf(row, :, i) + pf(r, :, k)
+                        ms(row, :, i) = ms(row, :, i) + ps(r, :, k)
                     end do
                 end associate
             end do elements
             mark(tree%rows(i, c)%glob(1:n)) = 0
         end do fields
     end subroutine chebyshev_moments
+
+    !> The Chebyshev moments over each element of leaf cluster c of its local functions,
+    !! pf(r, q + 1, k) = int g_r W T_q and ps(r, q + 1, k) = int g_r T_q on the k-th element of
+    !! the leaf (moment_points GL, exact: see chebyshev_moments); T_q at the nodes once per
+    !! element, a function that repeats an earlier one (bx and bz of one family) copied.
+    subroutine leaf_moments(kernel, bx, tree, c, work, pf, ps)
+        class(split_kernel_t), intent(in) :: kernel
+        type(basis_t), intent(in) :: bx
+        type(cluster_tree_t), intent(in) :: tree
+        integer, intent(in) :: c
+        type(work_t), intent(inout) :: work
+        real(dp), intent(out) :: pf(:, :, :), ps(:, :, :)   !! (n_loc, n_cheb, leaf_max)
+        integer, parameter :: np = moment_points
+        real(dp) :: t(np), tq(np, n_cheb), scale, mid
+        integer :: e, r, q, k
+        scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
+        mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
+        elements: do e = tree%first(c), tree%last(c)
+            k = e - tree%first(c) + 1
+            if (.not. work%tabulated(np, e)) call need_tables(kernel, bx, np, e, work)
+            associate (tbl => work%by_order(np))
+                t = scale*(tbl%x(:, e) - mid)
+                tq(:, 1) = 1.0_dp
+                tq(:, 2) = t
+                do q = 3, n_cheb
+                    tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
+                end do
+                functions: do r = 1, work%n_fun(e)
+                    if (work%same(r, e) /= r) then
+                        pf(r, :, k) = pf(work%same(r, e), :, k)
+                        ps(r, :, k) = ps(work%same(r, e), :, k)
+                        cycle functions
+                    end if
+                    pf(r:r, :, k) = matmul(transpose(tbl%bf(:, r:r, e)), tq)
+                    ps(r:r, :, k) = matmul(transpose(tbl%bs(:, r:r, e)), tq)
+                end do functions
+            end associate
+        end do elements
+    end subroutine leaf_moments
 
     !> s(k + 1, q + 1): the coefficient of T_k of child ch in T_q of its parent c (q, k <
     !! n_cheb), t_parent = alpha t_child + beta: by T_(q+1) = 2 (alpha t + beta) T_q - T_(q-1)
