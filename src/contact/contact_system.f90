@@ -450,22 +450,22 @@ contains
     end subroutine complete_residual
 
     !> The displacement rows of F (4.2a, the structure's equilibrium K v + M^T r - q) at
-    !! z + z_lo, summed in extended precision. In rigid coordinates K holds the shear
-    !! stiffness kGh/h_e of the section while the flexural part v' has w' - psi nearly
+    !! z + z_lo, K (v + v_lo) summed in extended precision. In rigid coordinates K holds the
+    !! shear stiffness kGh/h_e of the section while the flexural part v' has w' - psi nearly
     !! cancelling: for a thin, stiff structure eps |K| |v'| reaches 1e-7 of the load
     !! (rho 1e6, zeta 1e-3, N_e 400), and the residual of the exactly solved v' rounded to
-    !! double is that large too (doc/METHOD.md, rigid coordinates). Evaluated here, and held
-    !! as z + z_lo by the Newton method, 4.2a is met to what the solve achieves.
+    !! double is that large too (doc/METHOD.md, double-double refinement). M^T r is summed
+    !! in double: its round-off, eps |M^T| |r|, is that of the load itself.
     pure function equilibrium_residual(d, sys, z, z_lo) result(res)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: z(:), z_lo(:)   !! [v; r] = z + z_lo
         real(dp) :: res(d%nv)
-        real(xp), allocatable :: x(:)
         integer :: i
-        x = real(z, xp) + real(z_lo, xp)
-        res = real(columns_times_extended(sys%k, x(1:d%nv)) &
-                   + columns_times_extended(sys%mt, x(d%nv + 1:)) - real(sys%q, xp), dp)
+        associate (nv => d%nv)
+            res = real(columns_times_extended(sys%k, real(z(1:nv), xp) + real(z_lo(1:nv), xp)) &
+                       + real(columns_times(sys%mt, z(nv + 1:)) - sys%q, xp), dp)
+        end associate
         do i = 1, size(d%fixed)
             if (d%fixed(i) <= d%nv) res(d%fixed(i)) = z(d%fixed(i))
         end do
