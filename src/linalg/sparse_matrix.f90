@@ -170,12 +170,12 @@ contains
         type(columns_t), intent(in) :: c
         real(xp), intent(in) :: x(:)
         real(xp) :: y(c%nrow)
-        integer :: j
+        integer :: j, k
         y = 0.0_xp
         do j = 1, c%ncol
-            associate (k1 => c%ptr(j), k2 => c%ptr(j + 1) - 1)
-                y(c%row(k1:k2)) = y(c%row(k1:k2)) + real(c%val(k1:k2), xp)*x(j)
-            end associate
+            do k = c%ptr(j), c%ptr(j + 1) - 1
+                y(c%row(k)) = y(c%row(k)) + real(c%val(k), xp)*x(j)
+            end do
         end do
     end function columns_times_extended
 
