@@ -104,7 +104,7 @@ contains
         sol%seconds(4) = wall_seconds() - t0
         t0 = wall_seconds()
         if (.not. allocated(err)) call final_checks(m, d, sys, sol, err)
-        sol%z = to_absolute(sys%rigid, sol%z)
+        call absolute_answer(sys, sol)
         sol%seconds(5) = wall_seconds() - t0
     end subroutine solve_contact
 
@@ -138,10 +138,21 @@ contains
             call classify_complete(m, sol)
             call final_checks(m, dr, sr, sol, err)
         end if
-        sol%z = expand(red, to_absolute(sr%rigid, sol%z))
+        call absolute_answer(sr, sol)
+        sol%z = expand(red, sol%z)
         sol%seconds(5) = wall_seconds() - t0 - sol%seconds(4)
         sol%pts = pts
     end subroutine solve_reduced
+
+    !> z mapped from the solver's rigid coordinates to absolute ones, in double: the low
+    !! part of a held solution (z_lo, newton_method) is below the rounding of the absolute
+    !! displacements and is dropped with the coordinates it belongs to.
+    pure subroutine absolute_answer(sys, sol)
+        type(system_t), intent(in) :: sys
+        type(solution_t), intent(inout) :: sol
+        sol%z = to_absolute(sys%rigid, sol%z)
+        if (allocated(sol%z_lo)) deallocate (sol%z_lo)
+    end subroutine absolute_answer
 
     !> The nested coarser mesh of d (every other node, the ends and the load positions kept),
     !! discretised as d: true for the Newton method on more than nested_from elements.

@@ -12,7 +12,7 @@
 !! Constrained unknowns (d%fixed) have the equation z_i = 0.
 module contact_system
     use iso_fortran_env, only: int64
-    use kinds, only: dp, pi
+    use kinds, only: dp, xp, pi
     use errors, only: error_t, add_context
     use quadrature, only: gauss_legendre
     use shape_functions, only: eval_basis, max_local, basis_t, INTERP_P2, INTERP_S2
@@ -27,8 +27,9 @@ module contact_system
                              is_slipping, in_tension
     use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
     use sparse_matrix, only: columns_t, triplets_t, compressed, transposed, triplets_of, &
-                             columns_times, dense_column, packed_lower, packed_times, &
-                             packed_column, packed_entry, packed_position
+                             columns_times, columns_times_extended, dense_column, &
+                             packed_lower, packed_times, packed_column, packed_entry, &
+                             packed_position
     implicit none
     private
 
@@ -67,6 +68,10 @@ module contact_system
     !> The converged state of one case and how it was reached.
     type, public :: solution_t
         real(dp), allocatable :: z(:)        !! [v; r], physical units
+        real(dp), allocatable :: z_lo(:)     !! z + z_lo: the solution held in double-double
+                                             !! by the Newton method's final refinement, in
+                                             !! the solver's (rigid) coordinates; none after
+                                             !! z is mapped back to absolute ones
         real(dp), allocatable :: tau0(:)     !! friction threshold at the contact points
         integer, allocatable :: state(:)     !! STATE_* at the contact points (reported)
         logical, allocatable :: slip(:)      !! slip set (paper 4.6a/4.7a): |sigma_x| > tau0
@@ -132,6 +137,7 @@ module contact_system
     public :: jacobian_with_terms
     public :: jacobian_diagonal, linear_part, set_terms, a0_times, set_base_matrix, &
               a0_lower_column
+    public :: equilibrium_residual
     public :: use_rigid_coordinates, a0_column, a0_dense, a0_diagonal, diagonal_scaling
 
     !> Set-dependent entries of the Jacobian (global unknown numbers).
@@ -464,6 +470,28 @@ contains
         call add_interface_terms(sys, law, pts, point_tractions(pts, z), res)
         res(d%fixed) = z(d%fixed)
     end subroutine complete_residual
+
+    !> The displacement rows of F (4.2a, the structure's equilibrium K v + M^T r - q) at
+    !! z + z_lo, K (v + v_lo) summed in extended precision. In rigid coordinates K holds the
+    !! shear stiffness kGh/h_e of the section while the flexural part v' has w' - psi nearly
+    !! cancelling: for a thin, stiff structure eps |K| |v'| reaches 1e-7 of the load
+    !! (rho 1e6, zeta 1e-3, N_e 400), and the residual of the exactly solved v' rounded to
+    !! double is that large too (doc/METHOD.md, double-double refinement). M^T r is summed
+    !! in double: its round-off, eps |M^T| |r|, is that of the load itself.
+    pure function equilibrium_residual(d, sys, z, z_lo) result(res)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        real(dp), intent(in) :: z(:), z_lo(:)   !! [v; r] = z + z_lo
+        real(dp) :: res(d%nv)
+        integer :: i
+        associate (nv => d%nv)
+            res = real(columns_times_extended(sys%k, real(z(1:nv), xp) + real(z_lo(1:nv), xp)) &
+                       + real(columns_times(sys%mt, z(nv + 1:)) - sys%q, xp), dp)
+        end associate
+        do i = 1, size(d%fixed)
+            if (d%fixed(i) <= d%nv) res(d%fixed(i)) = z(d%fixed(i))
+        end do
+    end function equilibrium_residual
 
     !> The generalised Jacobian of F at the tractions sigma (sets decided there by
     !! interface_law): A0 plus the set-dependent entries of set_terms, fixed unknowns with

@@ -8,7 +8,7 @@ module solution_checks
     use model, only: model_t, MODEL_BEAM, LOAD_MOMENT, LOAD_PATCH, total_vertical_load
     use discretization, only: discretization_t
     use contact_system, only: solution_t, system_t, complete_residual, jacobian_diagonal, &
-                              a0_times
+                              a0_times, equilibrium_residual
     implicit none
     private
 
@@ -69,17 +69,21 @@ contains
     end function applied_moment
 
     !> Residuals of both equations of the complete problem (tau0 = f max(sigma_z, 0) from the
-    !! final state, whatever the method), equilibrium, admissibility.
+    !! final state, whatever the method), equilibrium, admissibility. 4.2a is evaluated in
+    !! extended precision for the solution as held, z + z_lo (equilibrium_residual).
     subroutine final_checks(m, d, sys, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
-        real(dp), allocatable :: res(:), v_only(:), mv(:)
+        real(dp), allocatable :: res(:), v_only(:), mv(:), z_lo(:)
         integer :: p
-        allocate (res(d%n))
+        allocate (res(d%n), z_lo(d%n))
+        z_lo = 0.0_dp
+        if (allocated(sol%z_lo)) z_lo = sol%z_lo
         call complete_residual(d, sys, sys%law, sol%pts, sol%z, res)
+        res(1:d%nv) = equilibrium_residual(d, sys, sol%z, z_lo)
         sol%residual(1) = maxval(abs(res(1:d%nv)))/max(maxval(abs(sys%q)), tiny(1.0_dp))
         v_only = [sol%z(1:d%nv), spread(0.0_dp, 1, d%nr)]
         mv = a0_times(sys, 0.0_dp*v_only, v_only)       ! M v in the traction rows

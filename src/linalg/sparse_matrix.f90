@@ -7,7 +7,7 @@
 !! one triangle is stored, so that a case of N_e = 1000 holds about two dense copies of its
 !! largest block rather than the whole n x n matrix (issue 7, memory).
 module sparse_matrix
-    use kinds, only: dp
+    use kinds, only: dp, xp
     use lapack_interfaces, only: dspmv
     implicit none
     private
@@ -29,7 +29,7 @@ module sparse_matrix
     end type columns_t
 
     public :: new_triplets, add_entry, compressed, triplets_of, transposed
-    public :: columns_times, dense_column, dense_of
+    public :: columns_times, columns_times_extended, dense_column, dense_of
     public :: packed_lower, packed_column, packed_times, packed_add, packed_entry
     public :: packed_position, unpack_lower
 
@@ -162,6 +162,22 @@ contains
             end do
         end do
     end function columns_times
+
+    !> c x with x and the sums in extended precision (the entries of c are exact in it):
+    !! columns_times again, for the few sums that need it (binary128 is emulated in
+    !! software, too slow for the products of every residual).
+    pure function columns_times_extended(c, x) result(y)
+        type(columns_t), intent(in) :: c
+        real(xp), intent(in) :: x(:)
+        real(xp) :: y(c%nrow)
+        integer :: j, k
+        y = 0.0_xp
+        do j = 1, c%ncol
+            do k = c%ptr(j), c%ptr(j + 1) - 1
+                y(c%row(k)) = y(c%row(k)) + real(c%val(k), xp)*x(j)
+            end do
+        end do
+    end function columns_times_extended
 
     !> Column j of c as a dense vector.
     pure function dense_column(c, j) result(col)
