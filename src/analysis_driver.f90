@@ -19,6 +19,7 @@ module analysis_driver
     use adaptive_solve, only: adaptation_t, solve_adaptive
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten
     use blas_threads, only: set_blas_threads, blas_thread_count
+    use flexibility_cache, only: enable_flexibility_cache
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
                                case_unknowns
     implicit none
@@ -117,6 +118,8 @@ contains
         ! sharded runs
         blas_before = blas_thread_count()
         if (n > 1) call set_blas_threads(1)
+        ! a sweep's cases on one mesh share T (flexibility_cache); one case holds no extra copy
+        call enable_flexibility_cache(count(selected) > 1)
         call system_clock(clock_start)
         done = 0
         !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) private(i)
@@ -131,6 +134,7 @@ contains
             !$omp end critical (fricon_progress)
         end do cases_loop
         !$omp end parallel do
+        call enable_flexibility_cache(.false.)
         if (n > 1) call set_blas_threads(blas_before)
         do i = 1, n
             if (selected(i)) call report_case(log_unit, err_unit, deck%path, out_dir, results(i), &

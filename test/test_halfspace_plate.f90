@@ -20,6 +20,11 @@ module test_halfspace_plate
                                ring_kernels, elliptic_ke_agm
     use lapack_interfaces, only: dpotrf
     use halfspace_test_support, only: graded_rule, basis_value
+    use model, only: model_t, FIELD_SZ
+    use discretization, only: discretization_t, new_discretization
+    use halfspace_operator, only: assemble_flexibility
+    use flexibility_cache, only: flexibility_of, enable_flexibility_cache, flexibility_cache_hits
+    use contact_test_support, only: nondim_plate, nondim_beam
     implicit none
     private
     public :: collect_halfspace_plate
@@ -63,7 +68,8 @@ contains
                  new_unittest('rigid_punch_convergence', test_punch), &
                  new_unittest('fast_vs_reference_assembly', test_fast_vs_reference), &
                  new_unittest('interpolated_blocks_vs_pairwise', test_blocks_vs_pairwise), &
-                 new_unittest('agm_elliptic_vs_carlson', test_agm)]
+                 new_unittest('agm_elliptic_vs_carlson', test_agm), &
+                 new_unittest('flexibility_cache', test_flexibility_cache)]
     end subroutine collect_halfspace_plate
 
     ! ------------------------------------------------------------------ helpers
@@ -650,4 +656,72 @@ contains
         call check(err, worst_k <= 1.0e-15_dp .and. worst_e <= 1.0e-15_dp, trim(what))
         if (allocated(err)) return
     end subroutine test_agm
+
+    !> The sweep's cache of T (flexibility_cache): off (the default; a single case) it keeps
+    !! nothing; on, a second look-up with the same mesh, bases and soil is answered from the
+    !! cache with T bit for bit as assemble_flexibility gives it afresh, and a case that
+    !! differs in nu_f, the mesh grading, the sigma_z interpolation, the beam width or the
+    !! structure is assembled (the hit count does not move).
+    subroutine test_flexibility_cache(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m, variant
+        real(dp), allocatable :: t_ref(:, :), t_1(:, :)
+        integer :: k
+        m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 24)
+        call assembled(m, t_ref, err)
+        if (allocated(err)) return
+        call enable_flexibility_cache(.false.)
+        call cached(m, t_1, err)
+        if (.not. allocated(err)) call cached(m, t_1, err)
+        if (allocated(err)) return
+        call check(err, flexibility_cache_hits() == 0, 'cache off: a look-up was answered')
+        if (allocated(err)) return
+        call enable_flexibility_cache(.true.)
+        call cached(m, t_1, err)
+        if (.not. allocated(err)) call cached(m, t_1, err)
+        if (allocated(err)) return
+        call check(err, flexibility_cache_hits() == 1 .and. all(t_1 == t_ref), &
+                   'cache on: the second look-up is not the assembled T')
+        if (allocated(err)) return
+        do k = 1, 5
+            select case (k)
+            case (1)
+                variant = nondim_plate(0.01_dp, 0.1_dp, 0.3_dp, 0.5_dp, 24)   ! nu_f
+            case (2)
+                variant = m
+                variant%grading = 'EDGES'
+            case (3)
+                variant = m
+                variant%interp(FIELD_SZ) = INTERP_S2
+            case (4)
+                variant = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.5_dp, 0.0_dp, 24)
+            case (5)
+                variant = nondim_beam(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 0.0_dp, 24)  ! width
+            end select
+            call cached(variant, t_1, err)
+            if (allocated(err)) exit
+            call check(err, flexibility_cache_hits() == 1, 'a different case answered from '// &
+                       'the cache (variant '//char(ichar('0') + k)//')')
+            if (allocated(err)) exit
+        end do
+        call enable_flexibility_cache(.false.)
+    end subroutine test_flexibility_cache
+
+    subroutine assembled(m, t_mat, err)
+        type(model_t), intent(in) :: m
+        real(dp), allocatable, intent(out) :: t_mat(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        type(discretization_t) :: d
+        call new_discretization(m, d, err)
+        if (.not. allocated(err)) call assemble_flexibility(m, d, t_mat, err)
+    end subroutine assembled
+
+    subroutine cached(m, t_mat, err)
+        type(model_t), intent(in) :: m
+        real(dp), allocatable, intent(out) :: t_mat(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        type(discretization_t) :: d
+        call new_discretization(m, d, err)
+        if (.not. allocated(err)) call flexibility_of(m, d, t_mat, err)
+    end subroutine cached
 end module test_halfspace_plate

@@ -21,7 +21,7 @@ module contact_system
     use discretization, only: discretization_t
     use mindlin_structure, only: section_of, stiffness_entries, assemble_loads, &
                                  coupling_entries
-    use halfspace_operator, only: assemble_flexibility
+    use flexibility_cache, only: flexibility_of
     use nested_spaces, only: restricted_tractions
     use interface_law, only: friction_threshold, slip_excess, tensile_part, threshold_slope, &
                              is_slipping, in_tension
@@ -172,7 +172,7 @@ contains
         if (present(t_given)) then
             call move_alloc(t_given, t_mat)
         else
-            call assemble_flexibility(m, d, t_mat, err)
+            call flexibility_of(m, d, t_mat, err)    ! assembled, or a sweep's cached copy
         end if
         if (.not. allocated(err) .and. present(nested) .and. present(t_nested)) &
             call restricted_tractions(t_mat, d, nested, t_nested, err)
