@@ -145,8 +145,9 @@ contains
             'gnuplot'
         write (unit, '(a)') '      --no-estimates  no error estimates (they re-solve each case on '// &
             'N_e/2 and N_e/4)'
-        write (unit, '(a)') '      --full-model  no simplifications (half beam, no sigma_x at f = 0): '// &
-            'the full model'
+        write (unit, '(a)') '      --full-model  no simplifications (half beam, no sigma_x at f = 0, '// &
+            'settled lift-off'
+        write (unit, '(a)') '                    decoupled in the factorisation): the full model'
         write (unit, '(a)') '  -j, --jobs N      solve N cases of a sweep at once (default: all cores)'
         write (unit, '(a)') '      --shard I/N   solve cases I, I+N, I+2N, ... of each sweep only '// &
             '(a job array:'

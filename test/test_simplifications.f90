@@ -7,6 +7,9 @@
 !!   by the regularisation: the difference must shrink in proportion to eps_bar (ratio 100
 !!   +- 20 % from eps_bar 1e-6 to 1e-8) and be below 10 eps_bar of the column's largest
 !!   value. Not applied where it does not hold: horizontal loads, moments, asymmetric loads.
+!! - settled lift-off tractions decoupled in the Newton factorisations (schur_solver): an
+!!   inexact factorisation of the complete problem, so the answer is the full model's to the
+!!   solver's tolerance (1e-9 of max |z|) with at most one more linear solve.
 module test_simplifications
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
@@ -32,7 +35,8 @@ contains
                  new_unittest('half_beam_not_when_asymmetric', test_half_refused), &
                  new_unittest('frictionless_plate', test_frictionless_plate), &
                  new_unittest('frictionless_beam', test_frictionless_beam), &
-                 new_unittest('report_line', test_report_line)]
+                 new_unittest('report_line', test_report_line), &
+                 new_unittest('lift_off_decoupled_plate', test_lift_off_decoupled)]
     end subroutine collect_simplifications
 
     !> NONDIM beam (l = 1, F = 1, beta 0.05, zeta 0.1) with the given loads.
@@ -261,4 +265,44 @@ contains
         text = simplification_text(m, discretised(m))
         call check(err, text == 'simplifications used: none (full model)', 'switched off: '//text)
     end subroutine test_report_line
+
+    !> input/plate_nondim.dat at N_e = 200 (lift-off over the outer third of the radius):
+    !! decoupling used, the answer and the linear solves those of the switched-off run.
+    subroutine test_lift_off_decoupled(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m, full
+        type(discretization_t) :: d
+        type(solution_t) :: sol_s, sol_f
+        character(len=:), allocatable :: text
+        character(len=200) :: line
+        real(dp) :: diff
+        m = plate(0.01_dp, 0.5_dp, 200)
+        full = m
+        full%simplify = .false.
+        call new_discretization(m, d, err)
+        if (allocated(err)) return
+        call solve_contact(m, d, sol_s, err)
+        if (allocated(err)) return
+        call solve_contact(full, d, sol_f, err)
+        if (allocated(err)) return
+        diff = maxval(abs(sol_s%z - sol_f%z))/maxval(abs(sol_f%z))
+        write (line, '(a,i0,a,i0,a,i0,a,es9.2,a,i0,a,i0)') 'decoupled in ', &
+            sol_s%n_decoupled_steps, ' steps (', sol_s%decoupled(1), ' of ', &
+            sol_s%decoupled(2), '), |z - z_full| / max |z| = ', diff, ', solves ', &
+            sol_s%n_solves, ' against ', sol_f%n_solves
+        write (*, '(3x,a)') 'plate rho 0.01, N_e 200: '//trim(line)
+        call check(err, sol_s%n_decoupled_steps > 0 .and. sol_s%decoupled(1) > 0 .and. &
+                   sol_f%n_decoupled_steps == 0, 'decoupling used only when on: '//trim(line))
+        if (allocated(err)) return
+        call check(err, diff <= 1.0e-9_dp, 'the full model''s answer: '//trim(line))
+        if (allocated(err)) return
+        call check(err, sol_s%n_solves <= sol_f%n_solves + 1, 'linear solves: '//trim(line))
+        if (allocated(err)) return
+        text = simplification_text(m, d, sol_s%decoupled)
+        call check(err, index(text, 'settled lift-off tractions decoupled in the '// &
+                   'factorisation (') > 0, 'report line: '//text)
+        if (allocated(err)) return
+        text = simplification_text(full, d, sol_f%decoupled)
+        call check(err, text == 'simplifications used: none (full model)', 'switched off: '//text)
+    end subroutine test_lift_off_decoupled
 end module test_simplifications

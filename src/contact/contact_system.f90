@@ -94,6 +94,10 @@ module contact_system
                                              !! (the caller's progress for a big case)
         integer :: n_factorisations = 0      !! matrix factorisations among them (Newton: the
                                              !! others reuse one by a low-rank update)
+        integer :: n_decoupled_steps = 0     !! Newton steps whose factorisation decoupled the
+                                             !! settled lift-off tractions (schur_solver)
+        integer :: decoupled(2) = 0          !! the most decoupled in one step, of the kept
+                                             !! unknowns then
         real(dp) :: residual(2) = 0.0_dp     !! relative residuals of equations 4.2a, 4.2b
         real(dp) :: law_residual = 0.0_dp    !! 4.2b of the complete problem as a traction error
         real(dp) :: reaction(3) = 0.0_dp     !! int sigma_z, int sigma_x, moment (beam)

@@ -96,17 +96,23 @@ contains
         type(schur_t) :: sc
         type(schur_factor_t) :: fac
         type(set_terms_t) :: st
+        logical, allocatable :: settled(:)
         logical :: converged
         sol%method = 'NEWTON'
         call new_schur(d, sys, sc)
+        sc%decouple = m%simplify
         if (allocated(sigma_start)) then
             call set_terms(sys, sys%law, sol%pts, sigma_start, st)
             call log_note(sol, 'start: sets of the nested coarser mesh')
+            ! the coarser mesh's converged sets count as the step before the start
+            fac%tension_before = in_tension(sigma_start(2, :))
+            settled = settled_lift_off(sol%pts, sigma_start, d%n, fac)
         else
             allocate (st%first(sol%pts%n + 1), st%row(0), st%col(0), st%val(0))
             st%first = 1
+            allocate (settled(d%n), source=.false.)
         end if
-        call solve_for_sets(d, sys, sc, fac, st, sol, err)
+        call solve_for_sets(d, sys, sc, fac, st, settled, sol, err)
         if (allocated(err)) return
         z_start = sol%z
         call newton_stage(d, sys, sc, fac, sys%law, 1, min(plain_limit, m%max_inner), &
@@ -172,12 +178,13 @@ contains
     !> The start: the solution for the set terms st, J_st z = [q; 0] (F is linear on each set
     !! pattern and F(0) = -[q; 0], so one solve gives it). No set terms: bonded bilateral
     !! contact A0 z = [q; 0], the paper's adhesive start.
-    subroutine solve_for_sets(d, sys, sc, fac, st, sol, err)
+    subroutine solve_for_sets(d, sys, sc, fac, st, settled, sol, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(schur_t), intent(in) :: sc
         type(schur_factor_t), intent(inout) :: fac   !! the factorised Schur complement
         type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: settled(:)   !! settled lift-off tractions (settled_lift_off)
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :), rhs(:)
@@ -187,8 +194,7 @@ contains
         rhs(1:d%nv) = sys%q
         rhs(d%fixed) = 0.0_dp
         if (sc%ready) then
-            call schur_prepare(sc, st, fac, factorised, err)
-            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, rhs, sol%z, err)
+            call schur_step(sys, sc, st, fac, settled, rhs, sol%z, sol, factorised, err)
         else
             call jacobian_with_terms(d, sys, st, a)
             call solve_equilibrated(a, rhs, sol%z, st%symmetric, err)
@@ -362,19 +368,14 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: a(:, :)
         type(set_terms_t) :: st
-        logical :: symmetric, factorised, accurate
+        logical :: symmetric, factorised
         allocate (dz(d%n))
         factorised = .true.
         if (sc%ready) then
             call set_terms(sys, law, sol%pts, point_tractions(sol%pts, sol%z), st)
-            call schur_prepare(sc, st, fac, factorised, err)
-            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err, accurate)
-            if (.not. (allocated(err) .or. accurate)) then
-                ! the low-rank update lost accuracy: factorise this step's matrix
-                call schur_factorise(sc, st, fac, err)
-                factorised = .true.
-                if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, -res, dz, err)
-            end if
+            call schur_step(sys, sc, st, fac, &
+                            settled_lift_off(sol%pts, point_tractions(sol%pts, sol%z), d%n, fac), &
+                            -res, dz, sol, factorised, err)
         else
             call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
                                    symmetric)
@@ -385,6 +386,68 @@ contains
         sol%n_solves = sol%n_solves + 1
         sol%n_inner = sol%n_inner + 1
     end subroutine newton_direction
+
+    !> The traction unknowns (global numbers) of settled lift-off: every contact point where
+    !! the function is nonzero is in the tension set at the tractions sigma and was at the
+    !! previous step (recorded in fac%tension_before, which this updates).
+    function settled_lift_off(pts, sigma, n, fac) result(settled)
+        type(contact_points_t), intent(in) :: pts
+        real(dp), intent(in) :: sigma(:, :)
+        integer, intent(in) :: n
+        type(schur_factor_t), intent(inout) :: fac
+        logical :: settled(n)
+        logical :: tension(pts%n), supported(n)
+        integer :: p, k, l
+        tension = in_tension(sigma(2, :))
+        settled = .false.
+        if (allocated(fac%tension_before)) then
+            settled = .true.
+            supported = .false.
+            points: do p = 1, pts%n
+                do k = 1, 2
+                    do l = 1, pts%nl(k)
+                        if (pts%val(l, k, p) == 0.0_dp) cycle
+                        associate (j => pts%idx(l, k, p))
+                            supported(j) = .true.
+                            settled(j) = settled(j) .and. tension(p) .and. fac%tension_before(p)
+                        end associate
+                    end do
+                end do
+            end do points
+            settled = settled .and. supported
+        end if
+        fac%tension_before = tension
+    end function settled_lift_off
+
+    !> J x = b by the Schur complement: the kept block updated or factorised (schur_prepare,
+    !! the settled lift-off tractions decoupled where that pays), factorised afresh and in
+    !! full when a low-rank update or the decoupling left the refined solve inaccurate.
+    !! Counts the steps solved with decoupling in sol (solution_t%decoupled: the most).
+    subroutine schur_step(sys, sc, st, fac, settled, b, x, sol, factorised, err)
+        type(system_t), intent(in) :: sys
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        type(schur_factor_t), intent(inout) :: fac
+        logical, intent(in) :: settled(:)     !! global unknowns (settled_lift_off)
+        real(dp), intent(in) :: b(:)
+        real(dp), intent(out) :: x(:)
+        type(solution_t), intent(inout) :: sol
+        logical, intent(out) :: factorised
+        type(error_t), allocatable, intent(out) :: err
+        logical :: accurate
+        call schur_prepare(sc, st, fac, factorised, err, settled)
+        if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, b, x, err, accurate)
+        if (allocated(err)) return
+        if (.not. accurate) then
+            call schur_factorise(sc, st, fac, err)
+            factorised = .true.
+            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, b, x, err)
+            if (allocated(err)) return
+        end if
+        if (fac%n_decoupled == 0) return
+        sol%n_decoupled_steps = sol%n_decoupled_steps + 1
+        if (fac%n_decoupled > sol%decoupled(1)) sol%decoupled = [fac%n_decoupled, sc%nk]
+    end subroutine schur_step
 
     !> The full step when it keeps the set pattern (it then solves F = 0), when it lowers the
     !! best merit, or while the watchdog allows, unless its

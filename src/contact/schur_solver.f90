@@ -15,6 +15,21 @@
 !! when symmetric, else LU, after the symmetric diagonal scaling), about (nr/n)^3 of the
 !! flops of factorising J; v follows by two banded solves. Two steps of iterative refinement
 !! with the complete J, as the dense solves do.
+!!
+!! Settled lift-off (issue 8 item 4): the traction unknowns of a region that stays in the
+!! tension set have rows dominated by the penalty c/eta_bar (and, for sigma_x, the slip term
+!! c/eps_bar) and barely couple to the rest. When the caller names them (candidates), the
+!! step's factorisation drops the couplings between them and the other kept unknowns: two
+!! dense blocks factorised on their own, (nk - nd)^3 + nd^3 instead of nk^3. It is an inexact
+!! factorisation of the exact J: the refinement with J restores the exact step (error
+!! propagation -M^-1 E, E the dropped couplings, whose square is O(|S0| / penalty)), tested
+!! like a low-rank update. The dropped couplings must hold no set term: the penalty is a
+!! mass matrix (P1: neighbouring functions share a point), and dropping its entries (e.g.
+!! keeping only the diagonal of the decoupled rows) leaves an error propagation of order 1
+!! (measured: the refinement contracts by 0.5 a step). So the decoupled unknowns are whole
+!! connected components of the set terms' graph, every one of whose unknowns the set terms
+!! dominate, with at least one candidate: a lift-off region's sigma_z functions with the
+!! partly lifted ones at its edges.
 module schur_solver
     use kinds, only: dp
     use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
@@ -43,13 +58,16 @@ module schur_solver
         integer, allocatable :: c_row(:)     !! nonzeros of C = J(inner, kept): inner position,
         integer, allocatable :: c_col(:)     !! kept position,
         real(dp), allocatable :: c_val(:)    !! value (J is symmetric there: J(kept, inner) = C^T)
+        logical :: decouple = .false.        !! settled lift-off tractions may be decoupled in
+                                             !! the factorisation (model_t%simplify)
     end type schur_t
 
     !> The kept block of one Newton step: S0 + base set terms factorised, and the low-rank
     !! change to the present set terms (Woodbury): S = S_base + E D E^T, E the columns of the
     !! identity at the kept unknowns of the contact points whose terms changed.
     type, public :: schur_factor_t
-        real(dp), allocatable :: lu(:, :)    !! LDL^T or LU factors of the scaled S_base
+        real(dp), allocatable :: lu(:, :)    !! LDL^T or LU factors of the scaled S_base (of
+                                             !! its active rows and columns when decoupled)
         real(dp), allocatable :: scale(:)    !! 1/sqrt|diagonal| (1 where 0)
         integer, allocatable :: ipiv(:)
         logical :: symmetric = .true.        !! S_base symmetric: LDL^T, else LU
@@ -63,6 +81,13 @@ module schur_solver
         real(dp), allocatable :: w_cache(:, :)  !! columns S_base^-1 e_p computed so far
         integer, allocatable :: cache_col(:)    !! kept position p -> its column (0: none)
         integer :: n_cached = 0
+        integer :: n_decoupled = 0           !! decoupled kept unknowns (0: S_base is exact)
+        integer, allocatable :: active(:)    !! kept positions in lu (with decoupling)
+        integer, allocatable :: dec(:)       !! kept positions decoupled, factorised in
+        real(dp), allocatable :: lu_dec(:, :)  !! lu_dec on their own
+        integer, allocatable :: ipiv_dec(:)
+        logical, allocatable :: tension_before(:)  !! tension set of the contact points at the
+                                             !! previous Newton step (newton_method: settled)
     end type schur_factor_t
 
     integer, parameter :: block_columns = 64  !! columns of C per banded solve in new_schur
@@ -71,6 +96,17 @@ module schur_solver
     !! factors (2 nk^2 u flops; BLAS 3 for LU, BLAS 2 in LAPACK's LDL^T solve), a new
     !! factorisation 2/3 nk^3 (LU) or 1/3 nk^3 (LDL^T).
     integer, parameter :: update_fraction(2) = [20, 5]   !! base LDL^T, LU
+
+    !> Decoupling is used once at least nk / decouple_fraction kept unknowns qualify, and
+    !! only from decouple_from kept unknowns on: below, the factorisation is too cheap for
+    !! its saving to pay for the refinement steps it adds (measured with plate_nondim.dat and
+    !! beam_nondim.dat, output/bench/simplifications.md: slower at N_e = 20 and 100, even at
+    !! 200, faster from 500 on).
+    integer, parameter :: decouple_fraction = 8
+    integer, parameter :: decouple_from = 400
+    !> A candidate is decoupled only where its set-term diagonal is at least this times its
+    !! S0 diagonal: the contraction of the refinement is about the inverse ratio.
+    real(dp), parameter :: dominance = 1.0e4_dp
 
     public :: new_schur, schur_factorise, schur_prepare, schur_solve
 
@@ -246,16 +282,29 @@ contains
         end do
     end subroutine form_s0
 
-    !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU).
-    subroutine schur_factorise(sc, st, fac, err)
+    !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU); the
+    !! kept positions marked in decoupled (if any) replaced by their diagonal. Only the
+    !! caller's record of the previous tension set survives from the old factorisation.
+    subroutine schur_factorise(sc, st, fac, err, decoupled)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        type(schur_factor_t), intent(inout) :: fac
+        type(error_t), allocatable, intent(out) :: err
+        logical, intent(in), optional :: decoupled(:)   !! (nk)
+        logical, allocatable :: tension_before(:)
+        if (allocated(fac%tension_before)) call move_alloc(fac%tension_before, tension_before)
+        call factorise_block(sc, st, fac, err, decoupled)
+        if (allocated(tension_before)) call move_alloc(tension_before, fac%tension_before)
+    end subroutine schur_factorise
+
+    !> schur_factorise on a fresh fac.
+    subroutine factorise_block(sc, st, fac, err, decoupled)
         type(schur_t), intent(in) :: sc
         type(set_terms_t), intent(in) :: st
         type(schur_factor_t), intent(out) :: fac
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: query(1)
-        real(dp), allocatable :: work(:)
-        integer :: i, r, c, info
-        character(len=160) :: text
+        logical, intent(in), optional :: decoupled(:)   !! (nk)
+        integer :: i, r, c
         allocate (fac%lu(sc%nk, sc%nk))
         call unpack_lower(sc%s0, fac%lu)
         fac%symmetric = st%symmetric
@@ -271,7 +320,7 @@ contains
             call new_error(err, EXIT_INTERNAL, 'schur_factorise: NaN in the system matrix')
             return
         end if
-        allocate (fac%scale(sc%nk), fac%ipiv(sc%nk))
+        allocate (fac%scale(sc%nk))
         do i = 1, sc%nk
             fac%scale(i) = 1.0_dp
             if (fac%lu(i, i) /= 0.0_dp) fac%scale(i) = 1.0_dp/sqrt(abs(fac%lu(i, i)))
@@ -279,12 +328,47 @@ contains
         do i = 1, sc%nk
             fac%lu(:, i) = fac%lu(:, i)*fac%scale*fac%scale(i)
         end do
-        if (fac%symmetric) then
-            call dsytrf('L', sc%nk, fac%lu, sc%nk, fac%ipiv, query, -1, info)
+        if (present(decoupled)) then
+            if (any(decoupled)) then
+                call split_decoupled(decoupled, fac)
+                call factorise_scaled(fac%symmetric, fac%lu_dec, fac%ipiv_dec, err)
+                if (allocated(err)) return
+            end if
+        end if
+        call factorise_scaled(fac%symmetric, fac%lu, fac%ipiv, err)
+    end subroutine factorise_block
+
+    !> The scaled block split into its active and decoupled diagonal blocks (the couplings
+    !! between them dropped).
+    subroutine split_decoupled(decoupled, fac)
+        logical, intent(in) :: decoupled(:)
+        type(schur_factor_t), intent(inout) :: fac
+        integer :: i
+        fac%active = pack([(i, i=1, size(decoupled))], .not. decoupled)
+        fac%dec = pack([(i, i=1, size(decoupled))], decoupled)
+        fac%n_decoupled = size(fac%dec)
+        fac%lu_dec = fac%lu(fac%dec, fac%dec)
+        fac%lu = fac%lu(fac%active, fac%active)
+    end subroutine split_decoupled
+
+    !> LDL^T (symmetric) or LU of the scaled block a, in place.
+    subroutine factorise_scaled(symmetric, a, ipiv, err)
+        logical, intent(in) :: symmetric
+        real(dp), intent(inout) :: a(:, :)
+        integer, allocatable, intent(out) :: ipiv(:)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: query(1)
+        real(dp), allocatable :: work(:)
+        integer :: n, info
+        character(len=160) :: text
+        n = size(a, 1)
+        allocate (ipiv(n))
+        if (symmetric) then
+            call dsytrf('L', n, a, n, ipiv, query, -1, info)
             allocate (work(max(1, int(query(1)))))
-            call dsytrf('L', sc%nk, fac%lu, sc%nk, fac%ipiv, work, size(work), info)
+            call dsytrf('L', n, a, n, ipiv, work, size(work), info)
         else
-            call dgetrf(sc%nk, sc%nk, fac%lu, sc%nk, fac%ipiv, info)
+            call dgetrf(n, n, a, n, ipiv, info)
         end if
         if (info > 0) then
             write (text, '(a,i0,a)') 'the contact system is singular (pivot ', info, &
@@ -295,18 +379,24 @@ contains
             write (text, '(a,i0)') 'dsytrf/dgetrf: illegal argument ', -info
             call new_error(err, EXIT_INTERNAL, trim(text))
         end if
-    end subroutine schur_factorise
+    end subroutine factorise_scaled
 
     !> The kept block for the set terms st: a low-rank (Woodbury) update of the factorised
     !! S_base when few contact points changed their terms since it was factorised (the sets
-    !! change little between Newton steps), else a new factorisation (factorised = .true.).
-    subroutine schur_prepare(sc, st, fac, factorised, err)
+    !! change little between Newton steps) and, on a decoupled base, none of them touches a
+    !! decoupled unknown (the dropped couplings stay those of dominated rows); else a new
+    !! factorisation (factorised = .true.), with the candidates (global unknowns: settled
+    !! lift-off tractions) decoupled (dominated) when at least nk / decouple_fraction qualify.
+    !! Decoupling only replaces new factorisations: refactorising the reduced block at every
+    !! step instead of updating was measured slower (output/bench/simplifications.md).
+    subroutine schur_prepare(sc, st, fac, factorised, err, candidates)
         type(schur_t), intent(in) :: sc
         type(set_terms_t), intent(in) :: st
         type(schur_factor_t), intent(inout) :: fac
         logical, intent(out) :: factorised
         type(error_t), allocatable, intent(out) :: err
-        logical, allocatable :: changed(:)
+        logical, intent(in), optional :: candidates(:)
+        logical, allocatable :: changed(:), decoupled(:)
         factorised = .true.
         if (allocated(fac%lu) .and. allocated(fac%base%first)) then
             if (size(fac%base%first) == size(st%first)) then
@@ -315,8 +405,62 @@ contains
                 if (.not. factorised) return
             end if
         end if
-        call schur_factorise(sc, st, fac, err)
+        allocate (decoupled(sc%nk))
+        decoupled = .false.
+        if (present(candidates) .and. sc%decouple .and. sc%nk >= decouple_from) &
+            decoupled = dominated(sc, st, candidates)
+        if (count(decoupled) < sc%nk/decouple_fraction) decoupled = .false.
+        call schur_factorise(sc, st, fac, err, decoupled)
     end subroutine schur_prepare
+
+    !> Kept positions to decouple: unknowns whose set-term diagonal is nonzero and at least
+    !! dominance times their S0 diagonal, less those whose row holds a set term in the column
+    !! of an unknown not decoupled (repeated until none does), in the connected groups (set
+    !! terms among them) that hold at least one candidate.
+    pure function dominated(sc, st, candidates) result(dec)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        logical, intent(in) :: candidates(:)   !! global unknowns
+        logical :: dec(sc%nk)
+        real(dp) :: set_diag(sc%nk)
+        logical :: any_candidate(sc%nk), moved
+        integer :: label(sc%nk), i, r, c
+        set_diag = 0.0_dp
+        do i = 1, st%n
+            r = sc%pos(st%row(i))
+            if (r /= 0 .and. st%row(i) == st%col(i)) set_diag(r) = set_diag(r) + st%val(i)
+        end do
+        do i = 1, sc%nk
+            dec(i) = set_diag(i) /= 0.0_dp .and. &
+                     abs(set_diag(i)) >= dominance*abs(sc%s0(packed_position(sc%nk, i, i)))
+            label(i) = i
+        end do
+        moved = .true.
+        do while (moved)
+            moved = .false.
+            entries: do i = 1, st%n
+                r = sc%pos(st%row(i))
+                c = sc%pos(st%col(i))
+                if (r == 0 .or. c == 0) cycle entries
+                if (.not. dec(r)) cycle entries
+                if (.not. dec(c)) then
+                    dec(r) = .false.
+                else if (label(r) /= label(c)) then
+                    label(r) = min(label(r), label(c))
+                    label(c) = label(r)
+                else
+                    cycle entries
+                end if
+                moved = .true.
+            end do entries
+        end do
+        any_candidate = .false.
+        do i = 1, sc%nk
+            if (dec(i)) any_candidate(label(i)) = any_candidate(label(i)) .or. &
+                                                  candidates(sc%kept(i))
+        end do
+        dec = dec .and. any_candidate(label)
+    end function dominated
 
     !> Contact points whose set-term entries differ between a and b.
     pure function changed_points(a, b) result(changed)
@@ -388,7 +532,7 @@ contains
         real(dp), allocatable :: fresh(:, :)
         integer, allocatable :: missing(:)
         integer :: nk, j, capacity
-        nk = size(fac%lu, 1)
+        nk = size(fac%scale)
         capacity = min(nk, 3*nk/update_fraction(2))
         if (.not. allocated(fac%cache_col)) then
             allocate (fac%cache_col(nk), fac%w_cache(nk, max(capacity, fac%nu)))
@@ -458,36 +602,59 @@ contains
         end do points
     end subroutine add_changed
 
-    !> g = S_base^-1 g (columns) with the scaled factors.
+    !> g = S_base^-1 g (columns) with the scaled factors (decoupled: block by block).
     subroutine kept_solve(fac, g, err)
         type(schur_factor_t), intent(in) :: fac
         real(dp), intent(inout) :: g(:, :)
         type(error_t), allocatable, intent(out) :: err
-        integer :: j, n, info
-        character(len=80) :: text
-        n = size(g, 1)
+        real(dp), allocatable :: h(:, :)
+        integer :: j
         do j = 1, size(g, 2)
             g(:, j) = g(:, j)*fac%scale
         end do
-        if (fac%symmetric) then
-            call dsytrs('L', n, size(g, 2), fac%lu, n, fac%ipiv, g, n, info)
+        if (fac%n_decoupled > 0) then
+            h = g(fac%active, :)
+            call factored_solve(fac%symmetric, fac%lu, fac%ipiv, h, err)
+            g(fac%active, :) = h
+            if (allocated(err)) return
+            h = g(fac%dec, :)
+            call factored_solve(fac%symmetric, fac%lu_dec, fac%ipiv_dec, h, err)
+            g(fac%dec, :) = h
         else
-            call dgetrs('N', n, size(g, 2), fac%lu, n, fac%ipiv, g, n, info)
+            call factored_solve(fac%symmetric, fac%lu, fac%ipiv, g, err)
         end if
-        if (info /= 0) then
-            write (text, '(a,i0)') 'dsytrs/dgetrs: illegal argument ', -info
-            call new_error(err, EXIT_INTERNAL, trim(text))
-            return
-        end if
+        if (allocated(err)) return
         do j = 1, size(g, 2)
             g(:, j) = g(:, j)*fac%scale
         end do
     end subroutine kept_solve
 
+    !> g = a^-1 g, a factorised by factorise_scaled.
+    subroutine factored_solve(symmetric, a, ipiv, g, err)
+        logical, intent(in) :: symmetric
+        real(dp), intent(in) :: a(:, :)
+        integer, intent(in) :: ipiv(:)
+        real(dp), intent(inout) :: g(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: n, info
+        character(len=80) :: text
+        n = size(g, 1)
+        if (symmetric) then
+            call dsytrs('L', n, size(g, 2), a, n, ipiv, g, n, info)
+        else
+            call dgetrs('N', n, size(g, 2), a, n, ipiv, g, n, info)
+        end if
+        if (info /= 0) then
+            write (text, '(a,i0)') 'dsytrs/dgetrs: illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+        end if
+    end subroutine factored_solve
+
     !> Solve J x = b (J = A0 + set terms, fixed unknowns with identity rows) with the
     !! factorised Schur complement; two steps of iterative refinement with J itself (with a
-    !! low-rank update in use: until a step changes x by at most refine_limit of max |x|, up
-    !! to max_update_steps; accurate is false if none did, and the caller factorises afresh).
+    !! low-rank update or decoupled unknowns in use: until a step changes x by at most
+    !! refine_limit of max |x|, up to max_update_steps; accurate is false if none did, and the
+    !! caller factorises afresh).
     !! Stopping after one converged step was tried (fifth session): 10 % less work at
     !! N_e = 20, but paper case fig07_s2#3, whose Newton path cycles near a kink and is
     !! sensitive to rounding, went from 29 to 32 linear solves (issue 7: at most 30).
@@ -503,7 +670,7 @@ contains
         real(dp), parameter :: refine_limit = 1.0e-10_dp
         integer, parameter :: max_update_steps = 6
         real(dp), allocatable :: dx(:)
-        logical :: converged
+        logical :: converged, inexact
         integer :: step
         if (.not. all(b == b)) then
             call new_error(err, EXIT_INTERNAL, 'schur_solve: NaN in the right-hand side')
@@ -513,14 +680,15 @@ contains
         if (allocated(err)) return
         allocate (dx(size(x)))
         converged = .false.
-        refinement: do step = 1, merge(2, max_update_steps, fac%nu == 0)
+        inexact = fac%nu > 0 .or. fac%n_decoupled > 0
+        refinement: do step = 1, merge(max_update_steps, 2, inexact)
             call apply_inverse(sc, fac, b - jacobian_times(sys, sc, st, x), dx, err)
             if (allocated(err)) return
             x = x + dx
             converged = maxval(abs(dx)) <= refine_limit*maxval(abs(x))
             if (step >= 2 .and. converged) exit refinement
         end do refinement
-        if (present(accurate)) accurate = fac%nu == 0 .or. converged
+        if (present(accurate)) accurate = .not. inexact .or. converged
         if (.not. all(abs(x) <= huge(1.0_dp))) then
             call new_error(err, EXIT_ANALYSIS, 'the contact system is numerically singular '// &
                            '(non-finite solution)')

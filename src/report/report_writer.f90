@@ -686,7 +686,7 @@ contains
             write (u, '(/,a,/,a,/)') ' *** ANALYSIS FAILED ***', ' '//failure
         end if
         call write_echo(u, lines)
-        call write_groups(u, m, d)
+        call write_groups(u, m, d, sol)
         do i = 1, size(adapt_text)
             write (u, '(3x,a)') trim(adapt_text(i))
         end do
@@ -720,10 +720,11 @@ contains
         end do
     end subroutine write_echo
 
-    subroutine write_groups(u, m, d)
+    subroutine write_groups(u, m, d, sol)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
         character(len=*), parameter :: fmt = '(3x,a,t46,es14.6,2x,a)'
         integer :: field
         write (u, '(/,a)') ' 2. MODEL, NONDIMENSIONAL GROUPS AND PHYSICAL DATA'
@@ -763,7 +764,7 @@ contains
             write (u, '(1x,a)', advance='no') interp_name(m%interp(field))
         end do
         write (u, '(a,i0,a,i0)') ', unknowns: displacements ', d%nv, ', tractions ', d%nr
-        write (u, '(3x,a)') simplification_text(m, d)
+        write (u, '(3x,a)') simplification_text(m, d, sol%decoupled)
         write (u, '(3x,a,es9.2,a,es9.2,a,i0,a,i0)') 'solver: tol outer ', m%tol_outer, &
             ', tol inner ', m%tol_inner, ', max outer ', m%max_outer, ', max inner ', m%max_inner
     end subroutine write_groups
