@@ -304,52 +304,89 @@ contains
         type(schur_factor_t), intent(out) :: fac
         type(error_t), allocatable, intent(out) :: err
         logical, intent(in), optional :: decoupled(:)   !! (nk)
-        integer :: i, r, c
-        allocate (fac%lu(sc%nk, sc%nk))
-        call unpack_lower(sc%s0, fac%lu)
+        integer :: i
+        logical :: split
+        split = .false.
+        if (present(decoupled)) split = any(decoupled)
         fac%symmetric = st%symmetric
         fac%base = st
         fac%nu = 0
+        fac%scale = block_scaling(sc, st)
+        if (split) then
+            ! each block straight from the packed S0: the whole nk x nk matrix is never held
+            fac%active = pack([(i, i=1, sc%nk)], .not. decoupled)
+            fac%dec = pack([(i, i=1, sc%nk)], decoupled)
+            fac%n_decoupled = size(fac%dec)
+            call scaled_block(sc, st, fac%scale, fac%dec, fac%lu_dec, err)
+            if (.not. allocated(err)) &
+                call factorise_scaled(fac%symmetric, fac%lu_dec, fac%ipiv_dec, err)
+            if (.not. allocated(err)) call scaled_block(sc, st, fac%scale, fac%active, fac%lu, err)
+        else
+            call scaled_block(sc, st, fac%scale, [(i, i=1, sc%nk)], fac%lu, err)
+        end if
+        if (allocated(err)) return
+        call factorise_scaled(fac%symmetric, fac%lu, fac%ipiv, err)
+    end subroutine factorise_block
+
+    !> 1/sqrt|diagonal| (1 where 0) of S0 plus the set terms: the symmetric scaling of the
+    !! kept block.
+    pure function block_scaling(sc, st) result(scale)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        real(dp) :: scale(sc%nk)
+        real(dp) :: dg(sc%nk)
+        integer :: i, r, c
+        do i = 1, sc%nk
+            dg(i) = sc%s0(packed_position(sc%nk, i, i))
+        end do
+        do i = 1, st%n
+            r = sc%pos(st%row(i))
+            c = sc%pos(st%col(i))
+            if (r /= 0 .and. r == c) dg(r) = dg(r) + st%val(i)
+        end do
+        scale = 1.0_dp
+        where (dg /= 0.0_dp) scale = 1.0_dp/sqrt(abs(dg))
+    end function block_scaling
+
+    !> The scaled S0 + set terms on the kept positions idx (rows and columns; idx ascending):
+    !! set terms with a row or column outside idx are left out (the couplings a decoupled
+    !! factorisation drops).
+    subroutine scaled_block(sc, st, scale, idx, a, err)
+        type(schur_t), intent(in) :: sc
+        type(set_terms_t), intent(in) :: st
+        real(dp), intent(in) :: scale(:)
+        integer, intent(in) :: idx(:)
+        real(dp), allocatable, intent(out) :: a(:, :)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: loc(sc%nk), i, j, r, c
+        allocate (a(size(idx), size(idx)))
+        if (size(idx) == sc%nk) then
+            call unpack_lower(sc%s0, a)
+        else
+            do j = 1, size(idx)
+                do i = j, size(idx)
+                    a(i, j) = sc%s0(packed_position(sc%nk, idx(i), idx(j)))
+                    a(j, i) = a(i, j)
+                end do
+            end do
+        end if
+        loc = 0
+        loc(idx) = [(i, i=1, size(idx))]
         entries: do i = 1, st%n
             r = sc%pos(st%row(i))
             c = sc%pos(st%col(i))
             if (r == 0 .or. c == 0) cycle entries
-            fac%lu(r, c) = fac%lu(r, c) + st%val(i)
+            if (loc(r) == 0 .or. loc(c) == 0) cycle entries
+            a(loc(r), loc(c)) = a(loc(r), loc(c)) + st%val(i)
         end do entries
-        if (.not. all(fac%lu == fac%lu)) then
+        if (.not. all(a == a)) then
             call new_error(err, EXIT_INTERNAL, 'schur_factorise: NaN in the system matrix')
             return
         end if
-        allocate (fac%scale(sc%nk))
-        do i = 1, sc%nk
-            fac%scale(i) = 1.0_dp
-            if (fac%lu(i, i) /= 0.0_dp) fac%scale(i) = 1.0_dp/sqrt(abs(fac%lu(i, i)))
+        do j = 1, size(idx)
+            a(:, j) = a(:, j)*scale(idx)*scale(idx(j))
         end do
-        do i = 1, sc%nk
-            fac%lu(:, i) = fac%lu(:, i)*fac%scale*fac%scale(i)
-        end do
-        if (present(decoupled)) then
-            if (any(decoupled)) then
-                call split_decoupled(decoupled, fac)
-                call factorise_scaled(fac%symmetric, fac%lu_dec, fac%ipiv_dec, err)
-                if (allocated(err)) return
-            end if
-        end if
-        call factorise_scaled(fac%symmetric, fac%lu, fac%ipiv, err)
-    end subroutine factorise_block
-
-    !> The scaled block split into its active and decoupled diagonal blocks (the couplings
-    !! between them dropped).
-    subroutine split_decoupled(decoupled, fac)
-        logical, intent(in) :: decoupled(:)
-        type(schur_factor_t), intent(inout) :: fac
-        integer :: i
-        fac%active = pack([(i, i=1, size(decoupled))], .not. decoupled)
-        fac%dec = pack([(i, i=1, size(decoupled))], decoupled)
-        fac%n_decoupled = size(fac%dec)
-        fac%lu_dec = fac%lu(fac%dec, fac%dec)
-        fac%lu = fac%lu(fac%active, fac%active)
-    end subroutine split_decoupled
+    end subroutine scaled_block
 
     !> LDL^T (symmetric) or LU of the scaled block a, in place.
     subroutine factorise_scaled(symmetric, a, ipiv, err)
