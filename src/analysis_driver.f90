@@ -390,6 +390,7 @@ contains
         doublings: do k = 1, max_doublings
             if (s%admissibility <= s%admissibility_tol .or. 2*m%ne > max_auto_elements) &
                 exit doublings
+            if (.not. finer_fits(m)) exit doublings
             m%ne = 2*m%ne
             call solve_on_mesh(m, progress_unit, d, sol, tab, s, result, err)
             if (allocated(err)) exit doublings
@@ -412,6 +413,19 @@ contains
             '); results are for N_e = ', m%ne, ' (doc/CHOICES.md)'
         result%warnings = [character(len=warning_length) :: result%warnings, text]
     end subroutine refine_until_admissible
+
+    !> Whether the case on twice its elements fits in the memory available now (the check
+    !! before solving sized it on the deck's mesh; the other cases of a sweep running at the
+    !! same time have taken theirs already).
+    logical function finer_fits(m)
+        type(model_t), intent(in) :: m
+        type(model_t) :: finer
+        type(error_t), allocatable :: err
+        finer = m
+        finer%ne = 2*m%ne
+        call check_memory(finer, 1, memory_available(), err)
+        finer_fits = .not. allocated(err)
+    end function finer_fits
 
     !> The estimates of the adaptation's final cycle (the same mesh and solution as the
     !! entries) and, when the tolerance was not reached, a warning that says so.

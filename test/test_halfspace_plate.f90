@@ -664,6 +664,12 @@ contains
     !! structure is assembled (the hit count does not move).
     subroutine test_flexibility_cache(err)
         type(error_t), allocatable, intent(out) :: err
+        call cache_checks(err)
+        call enable_flexibility_cache(.false.)    ! also after a failed check: the cache is global
+    end subroutine test_flexibility_cache
+
+    subroutine cache_checks(err)
+        type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m, variant
         real(dp), allocatable :: t_ref(:, :), t_1(:, :)
         integer :: k
@@ -704,8 +710,7 @@ contains
                        'the cache (variant '//char(ichar('0') + k)//')')
             if (allocated(err)) exit
         end do
-        call enable_flexibility_cache(.false.)
-    end subroutine test_flexibility_cache
+    end subroutine cache_checks
 
     subroutine assembled(m, t_mat, err)
         type(model_t), intent(in) :: m

@@ -28,7 +28,7 @@ module test_newton
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
     use station_results, only: station_table_t, tabulate
-    use station_columns, only: Q_GAP, Q_SLIP, Q_W, Q_X, Q_SZ, Q_M
+    use station_columns, only: Q_GAP, Q_SLIP, Q_W, Q_X
     use station_test_support, only: nd, nd_all
     use deck_reader, only: deck_t, read_deck, case_model
     use shape_functions, only: INTERP_P2, INTERP_S2
@@ -310,56 +310,27 @@ contains
     !! meets 4.2a there better than about eps |K| |v'|, which grows like N_e (doc/METHOD.md):
     !! at commit e7d0b97, before the Newton method held its answer in double-double, the 4.2a
     !! residual was 4.4e-8 (plate P1), 1.7e-7 (plate P2) and 2.0e-9 (beam P1) of the load. Now
-    !! it must be below 1e-8, with the checks of require_solved. Expected values: the answer
-    !! of e7d0b97 (release build, gfortran 12.2, the same cases as decks), which the change
-    !! must not move beyond the solver's tolerance: the settlement and the contact pressure
-    !! at the first station and the pressure at the last to 1e-8 (they differ by 3e-13). The
-    !! flexural part to 1e-6 - the differential settlement W(first) - W(last) and the largest
-    !! bending moment -: e7d0b97's v' was off by 3.5e-8 of max |v'| (plate P1, measured
-    !! against the solution refined in binary128 with the sets fixed; now 7e-15), and its
-    !! differential settlement and moments differ from the present ones by 1.4e-7 and 1.2e-7
-    !! (plate P1, P2; beam 1e-13).
+    !! it must be below 1e-8 (the discrete equations themselves), with the statics,
+    !! complementarity and friction checks of require_solved. (How far the answer moved
+    !! against e7d0b97 is measured in doc/METHOD.md, not pinned here: a test's expected values
+    !! do not come from the program's own output.)
     subroutine test_stiff_fine_mesh(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: cases(3)
         character(len=*), parameter :: names(3) = [character(len=8) :: 'plate P1', &
                                                   'plate P2', 'beam P1']
-        !> e7d0b97: W(1), Sigma_z(1), Sigma_z(last), W(1) - W(last), the largest |M| with its
-        !! sign (columns of the station table, nondimensional)
-        real(dp), parameter :: before(5, 3) = reshape([ &
-            2.561762486014697e+15_dp, 1.803522707393277e-01_dp, 1.839644043395906e+00_dp, &
-            3.920241275e+08_dp, -5.627851250588309e-01_dp, &
-            2.561358320220628e+15_dp, 1.802954924266936e-01_dp, 1.801224867097833e+00_dp, &
-            3.921188865e+08_dp, -6.968450387661246e-01_dp, &
-            6.304261349153359e+16_dp, 3.243648223018280e+00_dp, 2.881603411846095e+00_dp, &
-            -1.844516808992232e+15_dp, -1.350919887713406e-01_dp], [5, 3])
-        character(len=*), parameter :: what(5) = [character(len=40) :: &
-            'settlement at the first station', 'contact pressure at the first station', &
-            'contact pressure at the last station', 'differential settlement', &
-            'largest bending moment']
-        real(dp), parameter :: rtol(5) = [1.0e-8_dp, 1.0e-8_dp, 1.0e-8_dp, 1.0e-6_dp, 1.0e-6_dp]
         type(solution_t) :: sol
-        type(station_table_t) :: tab
-        real(dp) :: now(5)
-        integer :: k, i
+        integer :: k
         cases(1) = nondim_plate(1.0e6_dp, 1.0e-3_dp, 0.1_dp, 0.6_dp, 160)
         cases(2) = cases(1)
         cases(2)%interp(FIELD_U:FIELD_SZ) = INTERP_P2
         cases(3) = nondim_beam(1.0e6_dp, 1.0e-3_dp, 0.05_dp, 0.6_dp, 0.1_dp, 160)
         cases_loop: do k = 1, size(cases)
-            call require_solved(cases(k), names(k)//' N_e 160', err, sol, tab)
+            call require_solved(cases(k), names(k)//' N_e 160', err, sol)
             if (allocated(err)) return
             call check(err, sol%residual(1) <= 1.0e-8_dp, names(k)// &
                        ': residual of 4.2a above 1e-8 of the load')
             if (allocated(err)) return
-            now = [tab%val(Q_W, 1), tab%val(Q_SZ, 1), tab%val(Q_SZ, tab%n), &
-                   tab%val(Q_W, 1) - tab%val(Q_W, tab%n), &
-                   tab%val(Q_M, maxloc(abs(tab%val(Q_M, :)), 1))]
-            do i = 1, size(now)
-                call check_close(err, now(i), before(i, k), rtol(i), 0.0_dp, &
-                                 names(k)//': '//trim(what(i)))
-                if (allocated(err)) return
-            end do
         end do cases_loop
     end subroutine test_stiff_fine_mesh
 

@@ -154,7 +154,8 @@ contains
         sol%z_lo = spread(0.0_dp, 1, d%n)
         load = max(maxval(abs(sys%q)), tiny(1.0_dp))
         previous = huge(1.0_dp)
-        steps: do step = 1, max_refine
+        ! max_refine solves; the pass after the last only judges (and may undo) its step
+        steps: do step = 1, max_refine + 1
             call complete_residual(d, sys, sys%law, sol%pts, sol%z, res)
             res(1:d%nv) = equilibrium_residual(d, sys, sol%z, sol%z_lo)
             equilibrium = maxval(abs(res(1:d%nv)))/load
@@ -164,7 +165,7 @@ contains
                 sol%z_lo = z_before(:, 2)
             end if
             if (equilibrium <= merge(refine_from, refine_tol, step == 1) .or. &
-                equilibrium > 0.5_dp*previous) exit steps
+                equilibrium > 0.5_dp*previous .or. step > max_refine) exit steps
             previous = equilibrium
             call newton_direction(d, sys, sc, fac, sys%law, sol, res, dz, err)
             if (allocated(err)) return

@@ -420,8 +420,9 @@ contains
 
     !> The kept block for the set terms st: a low-rank (Woodbury) update of the factorised
     !! S_base when few contact points changed their terms since it was factorised (the sets
-    !! change little between Newton steps) and, on a decoupled base, none of them touches a
-    !! decoupled unknown (the dropped couplings stay those of dominated rows); else a new
+    !! change little between Newton steps; on a decoupled base too: an update that touches a
+    !! decoupled unknown is not excluded, and if the dropped couplings then keep schur_solve's
+    !! refinement from converging, accurate = .false. makes the caller factorise afresh); else a new
     !! factorisation (factorised = .true.), with the candidates (global unknowns: settled
     !! lift-off tractions) decoupled (dominated) when at least nk / decouple_fraction qualify.
     !! Decoupling only replaces new factorisations: refactorising the reduced block at every
