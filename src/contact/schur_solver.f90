@@ -35,7 +35,8 @@ module schur_solver
     use errors, only: error_t, new_error, EXIT_ANALYSIS, EXIT_INTERNAL
     use model, only: FIELD_U, FIELD_PSI
     use discretization, only: discretization_t
-    use contact_system, only: system_t, set_terms_t, a0_times, a0_column, a0_lower_column
+    use contact_system, only: system_t, set_terms_t, a0_times, a0_column, a0_lower_column, &
+                              diagonal_scaling
     use band_solve, only: band_cholesky_solve, band_cholesky_solve_rows
     use sparse_matrix, only: packed_position, unpack_lower
     use lapack_interfaces, only: dpbtrf, dsytrf, dsytrs, dgetrf, dgetrs
@@ -283,7 +284,8 @@ contains
     end subroutine form_s0
 
     !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU); the
-    !! kept positions marked in decoupled (if any) replaced by their diagonal. Only the
+    !! kept positions marked in decoupled (if any) factorised as a block of their own, their
+    !! couplings to the others dropped (factorise_block). Only the
     !! caller's record of the previous tension set survives from the old factorisation.
     subroutine schur_factorise(sc, st, fac, err, decoupled)
         type(schur_t), intent(in) :: sc
@@ -344,8 +346,7 @@ contains
             c = sc%pos(st%col(i))
             if (r /= 0 .and. r == c) dg(r) = dg(r) + st%val(i)
         end do
-        scale = 1.0_dp
-        where (dg /= 0.0_dp) scale = 1.0_dp/sqrt(abs(dg))
+        scale = diagonal_scaling(dg)
     end function block_scaling
 
     !> The scaled S0 + set terms on the kept positions idx (rows and columns; idx ascending):

@@ -78,13 +78,16 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(key_t) :: key
         logical :: use_cache, found
-        key = key_of(m, d)
-        use_cache = .false.
-        found = .false.
         !$omp critical (flexibility_cache)
         use_cache = enabled .and. d%nr <= max_unknowns
-        if (use_cache) call look_up(key, t_mat, found)
         !$omp end critical (flexibility_cache)
+        found = .false.
+        if (use_cache) then
+            key = key_of(m, d)
+            !$omp critical (flexibility_cache)
+            call look_up(key, t_mat, found)
+            !$omp end critical (flexibility_cache)
+        end if
         if (found) return
         call assemble_flexibility(m, d, t_mat, err)
         if (allocated(err) .or. .not. use_cache) return
