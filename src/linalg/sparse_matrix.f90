@@ -30,6 +30,7 @@ module sparse_matrix
 
     public :: new_triplets, add_entry, compressed, triplets_of, transposed
     public :: columns_times, columns_times_extended, dense_column, dense_of
+    public :: scatter_column, clear_column
     public :: packed_lower, packed_column, packed_times, packed_add, packed_entry
     public :: packed_position, unpack_lower
 
@@ -187,6 +188,29 @@ contains
         col = 0.0_dp
         col(c%row(c%ptr(j):c%ptr(j + 1) - 1)) = c%val(c%ptr(j):c%ptr(j + 1) - 1)
     end function dense_column
+
+    !> Column j of c written into col at its nonzero rows only (col holds the caller's zeros
+    !! elsewhere; clear_column puts them back): O(nonzeros) where dense_column is O(nrow).
+    pure subroutine scatter_column(c, j, col)
+        type(columns_t), intent(in) :: c
+        integer, intent(in) :: j
+        real(dp), intent(inout) :: col(:)   !! (c%nrow)
+        integer :: k
+        do k = c%ptr(j), c%ptr(j + 1) - 1
+            col(c%row(k)) = c%val(k)
+        end do
+    end subroutine scatter_column
+
+    !> col zero again at the rows where scatter_column(c, j, col) wrote.
+    pure subroutine clear_column(c, j, col)
+        type(columns_t), intent(in) :: c
+        integer, intent(in) :: j
+        real(dp), intent(inout) :: col(:)   !! (c%nrow)
+        integer :: k
+        do k = c%ptr(j), c%ptr(j + 1) - 1
+            col(c%row(k)) = 0.0_dp
+        end do
+    end subroutine clear_column
 
     !> c as a dense array.
     pure function dense_of(c) result(a)
