@@ -58,6 +58,7 @@ contains
                  new_unittest('stiff_structures_fine_mesh', test_stiff_fine_mesh), &
                  new_unittest('newton_agrees_with_two_loop', test_agreement), &
                  new_unittest('fig07_ref_case5_one_state', test_fig07_case5), &
+                 new_unittest('set_cycle_broken_by_single_flip', test_single_flip), &
                  new_unittest('schur_solve_matches_dense', test_schur_matches_dense), &
                  new_unittest('band_solve_matches_lapack', test_band_solve)]
     end subroutine collect_newton
@@ -399,6 +400,47 @@ contains
         call check_close(err, maxval(abs(nd_all(m, tab, 'Sigma_x^h'))), 1.386299_dp, &
                          1.0e-6_dp, 0.0_dp, 'fig07_ref case 5: max |Sigma_x|')
     end subroutine test_fig07_case5
+    !> input/paper/fig07_s2.dat case 3 (beam, rho 0.0025, S2 tractions, N_e 20): the full
+    !! Newton steps cycle near the lifted end, three points at sigma_z ~ 0 flipping between
+    !! tension and slip together; the plain iteration stalled and the continuation restarted
+    !! (29 to 32 linear solves, by rounding). The single-flip step (newton_method) must break
+    !! the cycle within the plain stage (stage 1, no continuation), to a solution that passes
+    !! require_solved's checks and agrees with the paper's two-loop iteration (an independent
+    !! method on the same equations, run to 1e-13) to 1e-8.
+    subroutine test_single_flip(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        type(discretization_t) :: d
+        type(solution_t) :: newton, two_loop
+        character(len=:), allocatable :: label
+        real(dp) :: diff(2)
+        call read_deck('input/paper/fig07_s2.dat', deck, err)
+        if (allocated(err)) return
+        call case_model(deck, 3, m, label, err)
+        if (allocated(err)) return
+        m%method = METHOD_NEWTON
+        call require_solved(m, 'fig07_s2 case 3, Newton', err, newton)
+        if (allocated(err)) return
+        call check(err, newton%n_outer == 1, 'fig07_s2 case 3: the plain Newton stage '// &
+                   'must converge (the cycle broken without continuation)')
+        if (allocated(err)) return
+        m%method = METHOD_TWOLOOP
+        m%tol_outer = 1.0e-13_dp
+        m%tol_inner = 1.0e-13_dp
+        m%max_outer = 1000
+        call require_solved(m, 'fig07_s2 case 3, two-loop', err, two_loop)
+        if (allocated(err)) return
+        call new_discretization(m, d, err)
+        if (allocated(err)) return
+        associate (zn => newton%z, zt => two_loop%z, nv => d%nv)
+            diff = [maxval(abs(zn(1:nv) - zt(1:nv)))/maxval(abs(zt(1:nv))), &
+                    maxval(abs(zn(nv + 1:) - zt(nv + 1:)))/maxval(abs(zt(nv + 1:)))]
+        end associate
+        call check_close(err, maxval(diff), 0.0_dp, 0.0_dp, 1.0e-8_dp, &
+                         'fig07_s2 case 3: Newton and two-loop, relative difference of [v; r]')
+    end subroutine test_single_flip
+
     !> Issue 7 item 2: a Newton step by the Schur complement onto the tractions (fresh, then
     !! by a low-rank update after two contact points change state) solves J x = b as the dense
     !! LDL^T / LU of the complete Jacobian does, to 1e-9 of max |x| (both are backward stable;

@@ -14,8 +14,10 @@
 !!   descent; then the exact line search from the best point along its direction. F is
 !!   piecewise linear along a Newton ray (kinks where a point crosses sigma_z = 0 or
 !!   |sigma_x| = f sigma_z), so the merit is minimised exactly piece by piece. A step to a set
-!!   pattern met in the last 16 iterates (a cycle) is replaced by the exact line search along
-!!   it; a full step that keeps the set pattern is always taken (it solves F = 0);
+!!   pattern met in the last 16 iterates (a cycle) is replaced by the better of the exact line
+!!   search along it and the single-flip step (Murty's fallback for block pivoting: the
+!!   solution for the pattern with only the ray's first crossing point changed, one more
+!!   linear solve); a full step that keeps the set pattern is always taken (it solves F = 0);
 !! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once - its
 !!   line search from the best point does not halve the best merit -, or a damped step no
 !!   longer moves), from the same start: eps_bar scaled by 10^s from
@@ -65,6 +67,17 @@ module newton_method
     real(dp), parameter :: max_decrement = 4.0_dp   !! largest continuation step (decades)
     integer, parameter :: quick_stage = 3           !! a stage this short doubles the step
 
+    !> The linear solver of the Newton steps and what it carries from step to step: the
+    !! Schur complement onto the tractions (fixed for the case), its factorisation (updated
+    !! or renewed across steps) and the tension set of the contact points at the previous
+    !! step (settled_lift_off: tractions in tension at two successive steps may be decoupled
+    !! in the factorisation).
+    type :: step_solver_t
+        type(schur_t) :: sc
+        type(schur_factor_t) :: fac
+        logical, allocatable :: tension_before(:)
+    end type step_solver_t
+
     !> Merit bookkeeping of one Newton stage.
     type :: newton_state_t
         real(dp), allocatable :: res(:)      !! F at the current iterate
@@ -93,38 +106,37 @@ contains
         real(dp), allocatable, intent(in) :: sigma_start(:, :)  !! tractions at the contact
                                             !! points predicting the sets (else: adhesive)
         real(dp), allocatable :: z_start(:)
-        type(schur_t) :: sc
-        type(schur_factor_t) :: fac
+        type(step_solver_t) :: ls
         type(set_terms_t) :: st
         logical, allocatable :: settled(:)
         logical :: converged
         sol%method = 'NEWTON'
-        call new_schur(d, sys, sc)
-        sc%decouple = m%simplify
+        call new_schur(d, sys, ls%sc)
+        ls%sc%decouple = m%simplify
         if (allocated(sigma_start)) then
             call set_terms(sys, sys%law, sol%pts, sigma_start, st)
             call log_note(sol, 'start: sets of the nested coarser mesh')
             ! the coarser mesh's converged sets count as the step before the start
-            fac%tension_before = in_tension(sigma_start(2, :))
-            settled = settled_lift_off(sol%pts, sigma_start, d%n, fac)
+            ls%tension_before = in_tension(sigma_start(2, :))
+            settled = settled_lift_off(sol%pts, sigma_start, d%n, ls)
         else
             allocate (st%first(sol%pts%n + 1), st%row(0), st%col(0), st%val(0))
             st%first = 1
             allocate (settled(d%n), source=.false.)
         end if
-        call solve_for_sets(d, sys, sc, fac, st, settled, sol, err)
+        call solve_for_sets(d, sys, ls, st, settled, sol, err)
         if (allocated(err)) return
         z_start = sol%z
-        call newton_stage(d, sys, sc, fac, sys%law, 1, min(plain_limit, m%max_inner), &
+        call newton_stage(d, sys, ls, sys%law, 1, min(plain_limit, m%max_inner), &
                           .false., sol, converged, err)
         if (allocated(err)) return
         if (.not. converged) then
             call log_note(sol, 'plain Newton stalled: continuation')
             sol%z = z_start
-            call continuation(m, d, sys, sc, fac, sol, err)
+            call continuation(m, d, sys, ls, sol, err)
             if (allocated(err)) return
         end if
-        call refine_equilibrium(d, sys, sc, fac, sol, err)
+        call refine_equilibrium(d, sys, ls, sol, err)
     end subroutine solve_newton
 
     !> Iterative refinement of the converged solution in double-double, z + z_lo, where its
@@ -136,11 +148,10 @@ contains
     !! step brings it to 1e-15. Ordinary cases end at their own double floor, far below
     !! refine_from (input/plate_nondim.dat: 8e-14 to 1.2e-11 at N_e 20 to 1000): one
     !! residual, no solve.
-    subroutine refine_equilibrium(d, sys, sc, fac, sol, err)
+    subroutine refine_equilibrium(d, sys, ls, sol, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(schur_factor_t), intent(inout) :: fac
+        type(step_solver_t), intent(inout) :: ls
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         integer, parameter :: max_refine = 3
@@ -167,7 +178,7 @@ contains
             if (equilibrium <= merge(refine_from, refine_tol, step == 1) .or. &
                 equilibrium > 0.5_dp*previous .or. step > max_refine) exit steps
             previous = equilibrium
-            call newton_direction(d, sys, sc, fac, sys%law, sol, res, dz, err)
+            call newton_direction(d, sys, ls, sys%law, sol, res, dz, err)
             if (allocated(err)) return
             z_before = reshape([sol%z, sol%z_lo], [d%n, 2])
             held = (real(sol%z, xp) + real(sol%z_lo, xp)) + real(dz, xp)
@@ -179,11 +190,10 @@ contains
     !> The start: the solution for the set terms st, J_st z = [q; 0] (F is linear on each set
     !! pattern and F(0) = -[q; 0], so one solve gives it). No set terms: bonded bilateral
     !! contact A0 z = [q; 0], the paper's adhesive start.
-    subroutine solve_for_sets(d, sys, sc, fac, st, settled, sol, err)
+    subroutine solve_for_sets(d, sys, ls, st, settled, sol, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(schur_factor_t), intent(inout) :: fac   !! the factorised Schur complement
+        type(step_solver_t), intent(inout) :: ls
         type(set_terms_t), intent(in) :: st
         logical, intent(in) :: settled(:)   !! settled lift-off tractions (settled_lift_off)
         type(solution_t), intent(inout) :: sol
@@ -194,8 +204,8 @@ contains
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q
         rhs(d%fixed) = 0.0_dp
-        if (sc%ready) then
-            call schur_step(sys, sc, st, fac, settled, rhs, sol%z, sol, factorised, err)
+        if (ls%sc%ready) then
+            call schur_step(sys, ls, st, settled, rhs, sol%z, sol, factorised, err)
         else
             call jacobian_with_terms(d, sys, st, a)
             call solve_equilibrated(a, rhs, sol%z, st%symmetric, err)
@@ -209,12 +219,11 @@ contains
     !! sol%z, the decrement doubled after a quick stage; a stage that fails is retried from
     !! the last converged one with half the decrement, a first stage that fails from a
     !! regularisation two decades larger (up to eps_bar = 0.5).
-    subroutine continuation(m, d, sys, sc, fac, sol, err)
+    subroutine continuation(m, d, sys, ls, sol, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(schur_factor_t), intent(inout) :: fac
+        type(step_solver_t), intent(inout) :: ls
         type(solution_t), intent(inout) :: sol
         type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: z_good(:)
@@ -230,7 +239,7 @@ contains
         stages: do
             stage = stage + 1
             solves_before = sol%n_solves
-            call newton_stage(d, sys, sc, fac, stage_law(m, sys, level), stage, m%max_inner, &
+            call newton_stage(d, sys, ls, stage_law(m, sys, level), stage, m%max_inner, &
                               .true., sol, converged, err)
             if (allocated(err)) return
             if (converged) then
@@ -274,12 +283,11 @@ contains
     !! the merit below the best point's, the iteration returns to that point and takes the
     !! exact line-search step along the direction computed there (so the merit decreases at
     !! least every watchdog + 1 steps, and a cycle of set patterns cannot repeat).
-    subroutine newton_stage(d, sys, sc, fac, law, stage, max_iter, patient, sol, converged, &
+    subroutine newton_stage(d, sys, ls, law, stage, max_iter, patient, sol, converged, &
                             err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(schur_factor_t), intent(inout) :: fac
+        type(step_solver_t), intent(inout) :: ls
         type(law_t), intent(in) :: law
         integer, intent(in) :: stage, max_iter
         logical, intent(in) :: patient     !! else give up when the watchdog first runs out
@@ -299,11 +307,12 @@ contains
                     <= refine_tol*maxval(abs(sys%q))
         iterations: do iter = 1, max_iter
             if (converged) exit iterations
-            call newton_direction(d, sys, sc, fac, law, sol, s%res, dz, err)
+            call newton_direction(d, sys, ls, law, sol, s%res, dz, err)
             if (allocated(err)) return
             if (s%relaxed == 0) s%dz_best = dz
             z_old = sol%z
-            call take_step(d, sys, law, sol, s, dz, t)
+            call take_step(d, sys, ls, law, sol, s, dz, t, err)
+            if (allocated(err)) return
             incr = relative_change(d, sol%z, z_old)
             new_code = set_pattern(law, point_tractions(sol%pts, sol%z))
             if (t <= 0.0_dp .or. (t < 1.0_dp .and. incr <= stall_increment)) then
@@ -357,11 +366,10 @@ contains
 
     !> The generalised Newton direction J dz = -F at sol%z (one linear solve): by the Schur
     !! complement onto the tractions (schur_solver) when it is ready, else dense.
-    subroutine newton_direction(d, sys, sc, fac, law, sol, res, dz, err)
+    subroutine newton_direction(d, sys, ls, law, sol, res, dz, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(schur_factor_t), intent(inout) :: fac  !! kept across steps: low-rank updates
+        type(step_solver_t), intent(inout) :: ls
         type(law_t), intent(in) :: law
         type(solution_t), intent(inout) :: sol
         real(dp), intent(in) :: res(:)
@@ -372,10 +380,10 @@ contains
         logical :: symmetric, factorised
         allocate (dz(d%n))
         factorised = .true.
-        if (sc%ready) then
+        if (ls%sc%ready) then
             call set_terms(sys, law, sol%pts, point_tractions(sol%pts, sol%z), st)
-            call schur_step(sys, sc, st, fac, &
-                            settled_lift_off(sol%pts, point_tractions(sol%pts, sol%z), d%n, fac), &
+            call schur_step(sys, ls, st, &
+                            settled_lift_off(sol%pts, point_tractions(sol%pts, sol%z), d%n, ls), &
                             -res, dz, sol, factorised, err)
         else
             call complete_jacobian(d, sys, law, sol%pts, point_tractions(sol%pts, sol%z), a, &
@@ -390,18 +398,18 @@ contains
 
     !> The traction unknowns (global numbers) of settled lift-off: every contact point where
     !! the function is nonzero is in the tension set at the tractions sigma and was at the
-    !! previous step (recorded in fac%tension_before, which this updates).
-    function settled_lift_off(pts, sigma, n, fac) result(settled)
+    !! previous step (recorded in ls%tension_before, which this updates).
+    function settled_lift_off(pts, sigma, n, ls) result(settled)
         type(contact_points_t), intent(in) :: pts
         real(dp), intent(in) :: sigma(:, :)
         integer, intent(in) :: n
-        type(schur_factor_t), intent(inout) :: fac
+        type(step_solver_t), intent(inout) :: ls
         logical :: settled(n)
         logical :: tension(pts%n), supported(n)
         integer :: p, k, l
         tension = in_tension(sigma(2, :))
         settled = .false.
-        if (allocated(fac%tension_before)) then
+        if (allocated(ls%tension_before)) then
             settled = .true.
             supported = .false.
             points: do p = 1, pts%n
@@ -410,25 +418,24 @@ contains
                         if (pts%val(l, k, p) == 0.0_dp) cycle
                         associate (j => pts%idx(l, k, p))
                             supported(j) = .true.
-                            settled(j) = settled(j) .and. tension(p) .and. fac%tension_before(p)
+                            settled(j) = settled(j) .and. tension(p) .and. ls%tension_before(p)
                         end associate
                     end do
                 end do
             end do points
             settled = settled .and. supported
         end if
-        fac%tension_before = tension
+        ls%tension_before = tension
     end function settled_lift_off
 
     !> J x = b by the Schur complement: the kept block updated or factorised (schur_prepare,
     !! the settled lift-off tractions decoupled where that pays), factorised afresh and in
     !! full when a low-rank update or the decoupling left the refined solve inaccurate.
     !! Counts the steps solved with decoupling in sol (solution_t%decoupled: the most).
-    subroutine schur_step(sys, sc, st, fac, settled, b, x, sol, factorised, err)
+    subroutine schur_step(sys, ls, st, settled, b, x, sol, factorised, err)
         type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
+        type(step_solver_t), intent(inout) :: ls
         type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(inout) :: fac
         logical, intent(in) :: settled(:)     !! global unknowns (settled_lift_off)
         real(dp), intent(in) :: b(:)
         real(dp), intent(out) :: x(:)
@@ -436,34 +443,41 @@ contains
         logical, intent(out) :: factorised
         type(error_t), allocatable, intent(out) :: err
         logical :: accurate
-        call schur_prepare(sc, st, fac, factorised, err, settled)
-        if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, b, x, err, accurate)
-        if (allocated(err)) return
-        if (.not. accurate) then
-            call schur_factorise(sc, st, fac, err)
-            factorised = .true.
-            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, b, x, err)
+        associate (sc => ls%sc, fac => ls%fac)
+            call schur_prepare(sc, st, fac, factorised, err, settled)
+            if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, b, x, err, accurate)
             if (allocated(err)) return
-        end if
-        if (fac%n_decoupled == 0) return
-        sol%n_decoupled_steps = sol%n_decoupled_steps + 1
-        if (fac%n_decoupled > sol%decoupled(1)) sol%decoupled = [fac%n_decoupled, sc%nk]
+            if (.not. accurate) then
+                call schur_factorise(sc, st, fac, err)
+                factorised = .true.
+                if (.not. allocated(err)) call schur_solve(sys, sc, st, fac, b, x, err)
+                if (allocated(err)) return
+            end if
+            if (fac%n_decoupled == 0) return
+            sol%n_decoupled_steps = sol%n_decoupled_steps + 1
+            if (fac%n_decoupled > sol%decoupled(1)) sol%decoupled = [fac%n_decoupled, sc%nk]
+        end associate
     end subroutine schur_step
 
     !> The full step when it keeps the set pattern (it then solves F = 0), when it lowers the
     !! best merit, or while the watchdog allows, unless its
-    !! set pattern was met before in this stage (a cycle): then the exact line search along
-    !! the step (half the step if that finds no descent). When the watchdog has run out: the
-    !! exact line search from the best point along its direction. t = 0: no descent there.
-    subroutine take_step(d, sys, law, sol, s, dz, t)
+    !! set pattern was met before in this stage (a cycle): then the better of the exact line
+    !! search along the step (half the step if that finds no descent) and the single-flip
+    !! step (single_flip_step). When the watchdog has run out: the exact line search from the
+    !! best point along its direction. t = 0: no descent there.
+    subroutine take_step(d, sys, ls, law, sol, s, dz, t, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
+        type(step_solver_t), intent(inout) :: ls
         type(law_t), intent(in) :: law
         type(solution_t), intent(inout) :: sol
         type(newton_state_t), intent(inout) :: s
         real(dp), intent(in) :: dz(:)
         real(dp), intent(out) :: t
+        type(error_t), allocatable, intent(out) :: err
         integer, allocatable :: code(:)
+        real(dp), allocatable :: z_flip(:), res_flip(:)
+        real(dp) :: phi_flip
         logical :: descent, cycled, searched
         integer :: k
         t = 1.0_dp
@@ -481,10 +495,25 @@ contains
             sol%z = sol%z + dz
             s%relaxed = 0
         else if (cycled) then
+            call single_flip_step(d, sys, ls, law, sol, dz, z_flip, err)
+            if (allocated(err)) return
             call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t)
             if (t <= 0.0_dp) t = 0.5_dp
             sol%z = sol%z + t*dz
             s%relaxed = s%relaxed + 1
+            if (allocated(z_flip)) then
+                allocate (res_flip(d%n))
+                call complete_residual(d, sys, law, sol%pts, z_flip, res_flip)
+                phi_flip = merit(d, sys, law, sol%pts, s, z_flip, res_flip)
+                call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
+                s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
+                if (phi_flip < s%phi) then
+                    sol%z = z_flip
+                    s%res = res_flip
+                    s%phi = phi_flip
+                    t = 1.0_dp
+                end if
+            end if
         else if (descent .or. s%relaxed < watchdog) then
             sol%z = sol%z + dz
             s%relaxed = s%relaxed + 1
@@ -509,6 +538,35 @@ contains
             s%relaxed = 0
         end if
     end subroutine take_step
+
+    !> Murty's single-pivot fallback for block pivoting that cycles (a point at a kink flipping
+    !! back and forth with its neighbours, each full step changing several sets at once, e.g.
+    !! paper case fig07_s2#3 near the beam's lifted end): the solution for the set pattern of
+    !! the ray's first piece past its first kink, the current pattern with only the first
+    !! point to cross changed (F is linear on a pattern: one linear solve). Not allocated
+    !! when the ray has no kink.
+    subroutine single_flip_step(d, sys, ls, law, sol, dz, z_flip, err)
+        type(discretization_t), intent(in) :: d
+        type(system_t), intent(in) :: sys
+        type(step_solver_t), intent(inout) :: ls
+        type(law_t), intent(in) :: law
+        type(solution_t), intent(inout) :: sol
+        real(dp), intent(in) :: dz(:)
+        real(dp), allocatable, intent(out) :: z_flip(:)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: knots(:), z_held(:)
+        type(set_terms_t) :: st
+        logical, allocatable :: settled(:)
+        knots = ray_kinks(law, point_tractions(sol%pts, sol%z), point_tractions(sol%pts, dz))
+        if (size(knots) <= 2) return
+        call set_terms(sys, law, sol%pts, &
+                       point_tractions(sol%pts, sol%z + 0.5_dp*(knots(2) + knots(3))*dz), st)
+        allocate (settled(d%n), source=.false.)
+        z_held = sol%z
+        call solve_for_sets(d, sys, ls, st, settled, sol, err)
+        call move_alloc(sol%z, z_flip)
+        sol%z = z_held
+    end subroutine single_flip_step
 
     !> Set pattern of the complete problem at the tractions sigma: 1 for tension (penalty),
     !! plus +-2 for slipping with that sign (interface_law decides both, independently). On

@@ -88,8 +88,6 @@ module schur_solver
         integer, allocatable :: dec(:)       !! kept positions decoupled, factorised in
         real(dp), allocatable :: lu_dec(:, :)  !! lu_dec on their own
         integer, allocatable :: ipiv_dec(:)
-        logical, allocatable :: tension_before(:)  !! tension set of the contact points at the
-                                             !! previous Newton step (newton_method: settled)
     end type schur_factor_t
 
     integer, parameter :: block_columns = 64  !! columns of C per banded solve in new_schur
@@ -291,24 +289,10 @@ contains
         end do
     end subroutine form_s0
 
-    !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU); the
-    !! kept positions marked in decoupled (if any) factorised as a block of their own, their
-    !! couplings to the others dropped (factorise_block). Only the
-    !! caller's record of the previous tension set survives from the old factorisation.
+    !> S0 plus the set terms, scaled and factorised (LDL^T when symmetric, else LU), into a
+    !! fresh fac; the kept positions marked in decoupled (if any) factorised as a block of
+    !! their own, their couplings to the others dropped.
     subroutine schur_factorise(sc, st, fac, err, decoupled)
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(inout) :: fac
-        type(error_t), allocatable, intent(out) :: err
-        logical, intent(in), optional :: decoupled(:)   !! (nk)
-        logical, allocatable :: tension_before(:)
-        if (allocated(fac%tension_before)) call move_alloc(fac%tension_before, tension_before)
-        call factorise_block(sc, st, fac, err, decoupled)
-        if (allocated(tension_before)) call move_alloc(tension_before, fac%tension_before)
-    end subroutine schur_factorise
-
-    !> schur_factorise on a fresh fac.
-    subroutine factorise_block(sc, st, fac, err, decoupled)
         type(schur_t), intent(in) :: sc
         type(set_terms_t), intent(in) :: st
         type(schur_factor_t), intent(out) :: fac
@@ -336,7 +320,7 @@ contains
         end if
         if (allocated(err)) return
         call factorise_scaled(fac%symmetric, fac%lu, fac%ipiv, err)
-    end subroutine factorise_block
+    end subroutine schur_factorise
 
     !> 1/sqrt|diagonal| (1 where 0) of S0 plus the set terms: the symmetric scaling of the
     !! kept block.
