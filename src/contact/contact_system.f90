@@ -29,7 +29,7 @@ module contact_system
     use sparse_matrix, only: columns_t, triplets_t, compressed, transposed, triplets_of, &
                              columns_times, columns_times_extended, dense_column, &
                              scatter_column, clear_column, &
-                             packed_lower, packed_times, packed_column, packed_entry, &
+                             pack_lower, packed_times, packed_column, packed_entry, &
                              packed_position
     implicit none
     private
@@ -200,7 +200,7 @@ contains
         do i = 1, pts%n
             call add_point_mass(pts, i, 1, -sys%c*m%eps_bar, t_mat, d%nv)
         end do
-        b0 = packed_lower(t_mat)
+        call pack_lower(t_mat, b0)
         deallocate (t_mat)
         call set_base_matrix(sys, d%nv, stiffness_entries(section_of(m), d), &
                              coupling_entries(m, d), b0)

@@ -29,7 +29,7 @@ module model_reduction
     use contact_system, only: system_t, contact_points_t, set_base_matrix, a0_diagonal, &
                               diagonal_scaling
     use sparse_matrix, only: columns_t, triplets_t, new_triplets, add_entry, packed_column, &
-                             packed_lower
+                             pack_lower
     use rigid_body, only: new_rigid
     implicit none
     private
@@ -249,7 +249,7 @@ contains
                 end do rows
             end associate
         end do columns
-        b0_packed = packed_lower(b0)
+        call pack_lower(b0, b0_packed)
         deallocate (b0)
         call set_base_matrix(sr, dr%nv, restricted(sys%k, red, 0, 0, 0, 0), &
                              restricted(sys%mm, red, d%nv, 0, dr%nv, 0), b0_packed)

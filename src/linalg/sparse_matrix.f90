@@ -31,7 +31,7 @@ module sparse_matrix
     public :: new_triplets, add_entry, compressed, triplets_of, transposed
     public :: columns_times, columns_times_extended, dense_column, dense_of
     public :: scatter_column, clear_column
-    public :: packed_lower, packed_column, packed_times, packed_add, packed_entry
+    public :: pack_lower, packed_column, packed_times, packed_add, packed_entry
     public :: packed_position, unpack_lower
 
 contains
@@ -223,9 +223,11 @@ contains
     end function dense_of
 
     !> The lower triangle of the symmetric a, packed by columns (LAPACK 'L' packed storage).
-    pure function packed_lower(a) result(ap)
+    !! A subroutine, not a function: `ap = f(a)` held the result twice (a temporary and its
+    !! copy), 32 MB at N_e = 1000 next to T, the peak of a plate case's memory.
+    pure subroutine pack_lower(a, ap)
         real(dp), intent(in) :: a(:, :)
-        real(dp), allocatable :: ap(:)
+        real(dp), allocatable, intent(out) :: ap(:)
         integer :: j, n, k
         n = size(a, 1)
         allocate (ap(n*(n + 1)/2))
@@ -234,7 +236,7 @@ contains
             ap(k + 1:k + n - j + 1) = a(j:n, j)
             k = k + n - j + 1
         end do
-    end function packed_lower
+    end subroutine pack_lower
 
     !> The symmetric matrix held in ap (n x n, lower packed) into a full n x n array.
     pure subroutine unpack_lower(ap, a)
