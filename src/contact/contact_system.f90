@@ -28,7 +28,7 @@ module contact_system
     use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
     use sparse_matrix, only: columns_t, triplets_t, compressed, transposed, triplets_of, &
                              columns_times, columns_times_extended, dense_column, &
-                             scatter_column, clear_column, &
+                             scatter_column, &
                              pack_lower, packed_times, packed_column, packed_entry, &
                              packed_position
     implicit none
@@ -141,7 +141,7 @@ module contact_system
     public :: point_tractions, complete_residual, complete_jacobian, scaled_norm
     public :: jacobian_with_terms
     public :: jacobian_diagonal, linear_part, set_terms, a0_times, set_base_matrix, &
-              a0_lower_column, clear_a0_lower_column
+              a0_lower_column
     public :: equilibrium_residual
     public :: use_rigid_coordinates, a0_column, a0_dense, a0_diagonal, diagonal_scaling
 
@@ -291,43 +291,33 @@ contains
     end function a0_column
 
     !> Column j of A0 without the part of B0 above the diagonal (those rows are 0), written
-    !! into col, which is zero on entry; clear_a0_lower_column(sys, j, col) makes it zero
-    !! again. The Schur set-up reads every column of A0 once or twice: writing only the
-    !! nonzeros, not n rows per column (an O(n^2) memset, a tenth of the plate's solve at
-    !! N_e = 1000), is what makes these two routines. The upper part of a packed column is a
-    !! strided gather, which cost more than the Schur complement's other set-up work at
-    !! N_e = 1000 (output/bench/linalg_before_after.md): the rows below j are what is read.
-    pure subroutine a0_lower_column(sys, j, col)
+    !! into col, which is zero on entry; the same call with clear makes it zero again. The
+    !! Schur set-up reads every column of A0 once or twice: writing only the nonzeros, not n
+    !! rows per column (an O(n^2) memset, a tenth of the plate's solve at N_e = 1000), is why
+    !! col is the caller's. The upper part of a packed column is a strided gather, which cost
+    !! more than the Schur complement's other set-up work at N_e = 1000
+    !! (output/bench/linalg_before_after.md): the rows below j are what is read.
+    pure subroutine a0_lower_column(sys, j, col, clear)
         type(system_t), intent(in) :: sys
         integer, intent(in) :: j
         real(dp), intent(inout) :: col(:)   !! (nv + nr), zero on entry
+        logical, intent(in) :: clear
         associate (nv => sys%nv)
             if (j <= nv) then
-                call scatter_column(sys%k, j, col(1:nv))
-                call scatter_column(sys%mm, j, col(nv + 1:))
+                call scatter_column(sys%k, j, col(1:nv), clear)
+                call scatter_column(sys%mm, j, col(nv + 1:), clear)
             else
-                call scatter_column(sys%mt, j - nv, col(1:nv))
-                col(j:) = sys%b0(packed_position(sys%nr, j - nv, j - nv): &
-                                 packed_position(sys%nr, sys%nr, j - nv))
+                call scatter_column(sys%mt, j - nv, col(1:nv), clear)
+                if (clear) then
+                    col(j:) = 0.0_dp
+                else
+                    col(j:) = sys%b0(packed_position(sys%nr, j - nv, j - nv): &
+                                     packed_position(sys%nr, sys%nr, j - nv))
+                end if
             end if
         end associate
     end subroutine a0_lower_column
 
-    !> col zero again after a0_lower_column(sys, j, col).
-    pure subroutine clear_a0_lower_column(sys, j, col)
-        type(system_t), intent(in) :: sys
-        integer, intent(in) :: j
-        real(dp), intent(inout) :: col(:)
-        associate (nv => sys%nv)
-            if (j <= nv) then
-                call clear_column(sys%k, j, col(1:nv))
-                call clear_column(sys%mm, j, col(nv + 1:))
-            else
-                call clear_column(sys%mt, j - nv, col(1:nv))
-                col(j:) = 0.0_dp
-            end if
-        end associate
-    end subroutine clear_a0_lower_column
 
     !> A0 as a dense array (n^2 numbers: only for the methods that factorise it whole).
     pure function a0_dense(sys) result(a)

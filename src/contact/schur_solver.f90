@@ -36,7 +36,6 @@ module schur_solver
     use model, only: FIELD_U, FIELD_PSI
     use discretization, only: discretization_t
     use contact_system, only: system_t, set_terms_t, a0_times, a0_lower_column, &
-                              clear_a0_lower_column, &
                               diagonal_scaling
     use band_solve, only: band_cholesky_solve, band_cholesky_solve_rows
     use sparse_matrix, only: packed_position, unpack_lower
@@ -194,23 +193,24 @@ contains
         allocate (col(sys%nv + sys%nr), source=0.0_dp)
         sc%kd = 0
         columns: do j = 1, sc%ni
-            call a0_lower_column(sys, sc%inner(j), col)   ! inner unknowns: whole columns
+            ! inner unknowns: whole columns
+            call a0_lower_column(sys, sc%inner(j), col, clear=.false.)
             do i = sc%ni, j + sc%kd + 1, -1
                 if (col(sc%inner(i)) /= 0.0_dp) then
                     sc%kd = i - j
                     exit
                 end if
             end do
-            call clear_a0_lower_column(sys, sc%inner(j), col)
+            call a0_lower_column(sys, sc%inner(j), col, clear=.true.)
         end do columns
         allocate (sc%kband(sc%kd + 1, sc%ni))
         do j = 1, sc%ni
-            call a0_lower_column(sys, sc%inner(j), col)
+            call a0_lower_column(sys, sc%inner(j), col, clear=.false.)
             sc%kband(:, j) = 0.0_dp
             do i = j, min(sc%ni, j + sc%kd)
                 sc%kband(1 + i - j, j) = col(sc%inner(i))
             end do
-            call clear_a0_lower_column(sys, sc%inner(j), col)
+            call a0_lower_column(sys, sc%inner(j), col, clear=.true.)
         end do
         call dpbtrf('L', sc%ni, sc%kd, sc%kband, sc%kd + 1, info)
         sc%ready = info == 0
@@ -226,7 +226,8 @@ contains
         passes: do pass = 1, 2      ! count, then fill
             nnz = 0
             kept_columns: do l = 1, sc%nk
-                call a0_lower_column(sys, sc%kept(l), col)   ! only inner rows are read
+                ! only the inner rows are read
+                call a0_lower_column(sys, sc%kept(l), col, clear=.false.)
                 inner_rows: do i = 1, sc%ni
                     if (col(sc%inner(i)) == 0.0_dp) cycle inner_rows
                     nnz = nnz + 1
@@ -235,7 +236,7 @@ contains
                     sc%c_col(nnz) = l
                     sc%c_val(nnz) = col(sc%inner(i))
                 end do inner_rows
-                call clear_a0_lower_column(sys, sc%kept(l), col)
+                call a0_lower_column(sys, sc%kept(l), col, clear=.true.)
             end do kept_columns
             if (pass == 1) allocate (sc%c_row(nnz), sc%c_col(nnz), sc%c_val(nnz))
         end do passes
@@ -268,11 +269,11 @@ contains
             ! across the block per step of the substitution)
             allocate (wt(j2 - j1 + 1, sc%ni))
             do j = j1, j2
-                call a0_lower_column(sys, sc%kept(j), col)   ! kept(j:) >= kept(j)
+                call a0_lower_column(sys, sc%kept(j), col, clear=.false.)   ! kept(j:) >= kept(j)
                 wt(j - j1 + 1, :) = col(sc%inner)
                 sc%s0(packed_position(sc%nk, j, j):packed_position(sc%nk, sc%nk, j)) = &
                     col(sc%kept(j:))
-                call clear_a0_lower_column(sys, sc%kept(j), col)
+                call a0_lower_column(sys, sc%kept(j), col, clear=.true.)
             end do
             call band_cholesky_solve_rows(sc%kband, sc%kd, wt)
             columns: do j = j1, j2

@@ -30,7 +30,7 @@ module sparse_matrix
 
     public :: new_triplets, add_entry, compressed, triplets_of, transposed
     public :: columns_times, columns_times_extended, dense_column, dense_of
-    public :: scatter_column, clear_column
+    public :: scatter_column
     public :: pack_lower, packed_column, packed_times, packed_add, packed_entry
     public :: packed_position, unpack_lower
 
@@ -190,27 +190,18 @@ contains
     end function dense_column
 
     !> Column j of c written into col at its nonzero rows only (col holds the caller's zeros
-    !! elsewhere; clear_column puts them back): O(nonzeros) where dense_column is O(nrow).
-    pure subroutine scatter_column(c, j, col)
+    !! elsewhere): O(nonzeros) where dense_column is O(nrow). With clear, those rows are set
+    !! to zero again instead.
+    pure subroutine scatter_column(c, j, col, clear)
         type(columns_t), intent(in) :: c
         integer, intent(in) :: j
         real(dp), intent(inout) :: col(:)   !! (c%nrow)
+        logical, intent(in) :: clear
         integer :: k
         do k = c%ptr(j), c%ptr(j + 1) - 1
-            col(c%row(k)) = c%val(k)
+            col(c%row(k)) = merge(0.0_dp, c%val(k), clear)
         end do
     end subroutine scatter_column
-
-    !> col zero again at the rows where scatter_column(c, j, col) wrote.
-    pure subroutine clear_column(c, j, col)
-        type(columns_t), intent(in) :: c
-        integer, intent(in) :: j
-        real(dp), intent(inout) :: col(:)   !! (c%nrow)
-        integer :: k
-        do k = c%ptr(j), c%ptr(j + 1) - 1
-            col(c%row(k)) = 0.0_dp
-        end do
-    end subroutine clear_column
 
     !> c as a dense array.
     pure function dense_of(c) result(a)
