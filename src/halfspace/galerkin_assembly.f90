@@ -170,9 +170,13 @@ module galerkin_assembly
     type :: cluster_tree_t
         integer :: n = 0
         integer, allocatable :: first(:), last(:), child(:, :)
+        integer, allocatable :: parent(:)          !! 0 for the root
+        integer, allocatable :: leaf_of(:)         !! leaf_of(e): the leaf holding element e
         real(dp), allocatable :: lo(:), hi(:)
         integer :: n_blocks = 0
         integer, allocatable :: blocks(:, :)
+        !> The blocks whose cy is cluster c: by_cy(cy_start(c):cy_start(c + 1) - 1)
+        integer, allocatable :: by_cy(:), cy_start(:)
         type(moments_t), allocatable :: side(:, :)        !! side(k, c): orders(k) on c
         type(cluster_rows_t), allocatable :: rows(:, :)   !! rows(i, c)
         !> Chebyshev moments of the functions of cluster c: a(row, q + 1, i) = int g W T_q
@@ -203,7 +207,8 @@ contains
         type(work_t) :: work
         type(chebyshev_t) :: cheb
         type(cluster_tree_t) :: tree
-        logical, allocatable :: in_block(:, :)
+        logical, allocatable :: skip(:, :)         !! skip(e1, thread): the pair (e1, e2) of the
+                                                   !! thread's column e2 is in a block
         logical :: use_blocks
         type(work_t), allocatable :: works(:)
         real(dp), allocatable :: column_loc(:, :, :, :, :)
@@ -225,9 +230,7 @@ contains
         if (present(pairwise)) use_blocks = use_blocks .and. .not. pairwise
         if (use_blocks) then
             call new_chebyshev(cheb)
-            call new_blocks(bx, cheb, tree, in_block)
-        else
-            allocate (in_block(bx%ne, 1), source=.false.)
+            call new_blocks(bx, cheb, tree)
         end if
         n_threads = 1
         !$ if (.not. in_order .and. .not. omp_in_parallel() .and. bx%ne >= min_parallel) &
@@ -240,6 +243,7 @@ contains
         n_colours = 1
         if (.not. in_order) n_colours = column_stride(work)
         allocate (column_loc(n_loc, n_loc, bx%ne, 0:1, n_threads))
+        allocate (skip(bx%ne, n_threads), source=.false.)
         ! columns outer: the pair (e1, e2) adds to the columns of e2's functions only, and the
         ! columns e2 of one colour (e2 mod n_colours) share no function, so they are added to T
         ! in parallel without races; every entry receives its terms in the same order (colour
@@ -259,10 +263,10 @@ contains
             source_elements: do e2 = first, last, step
                 thread = 1
                 !$ thread = omp_get_thread_num() + 1
-                call integrate_column(kernel, bx, bz, e2, shift_ok, &
-                                      in_block(:, merge(e2, 1, use_blocks)), works(thread), &
-                                      column_loc(:, :, :, :, thread))
-                call add_column(e2, in_block(:, merge(e2, 1, use_blocks)), works(thread), &
+                if (use_blocks) call blocked_rows(tree, e2, skip(:, thread))
+                call integrate_column(kernel, bx, bz, e2, shift_ok, skip(:, thread), &
+                                      works(thread), column_loc(:, :, :, :, thread))
+                call add_column(e2, skip(:, thread), works(thread), &
                                 column_loc(:, :, :, mod(e2, 2), thread), t_mat)
             end do source_elements
             !$omp end parallel do
@@ -1198,20 +1202,21 @@ contains
 
     ! ---------------------------------------------------------------- interpolated blocks
 
-    !> The cluster tree (contiguous elements halved by count down to leaf_max), the admissible
-    !! blocks (cx left of cy, gap >= block_ratio times the longer, and fewer kernel values
-    !! than block_cost per element pair) and in_block(e1, e2) for their element pairs.
-    subroutine new_blocks(bx, cheb, tree, in_block)
+    !> The cluster tree (contiguous elements halved by count down to leaf_max) and the
+    !! admissible blocks (cx left of cy, gap >= block_ratio times the longer, and fewer kernel
+    !! values than block_cost per element pair), listed by cy (blocked_rows).
+    subroutine new_blocks(bx, cheb, tree)
         type(basis_t), intent(in) :: bx
         type(chebyshev_t), intent(in) :: cheb
         type(cluster_tree_t), intent(out) :: tree
-        logical, allocatable, intent(out) :: in_block(:, :)
-        integer :: c, n, mid
+        integer, allocatable :: next(:)
+        integer :: c, n, mid, b
         allocate (tree%first(2*bx%ne), tree%last(2*bx%ne), tree%child(2, 2*bx%ne), &
-                  tree%lo(2*bx%ne), tree%hi(2*bx%ne))
+                  tree%lo(2*bx%ne), tree%hi(2*bx%ne), tree%parent(2*bx%ne), tree%leaf_of(bx%ne))
         tree%n = 1
         tree%first(1) = 1
         tree%last(1) = bx%ne
+        tree%parent(1) = 0
         c = 0
         grow: do while (c < tree%n)
             c = c + 1
@@ -1219,17 +1224,36 @@ contains
             tree%hi(c) = bx%x(tree%last(c))
             tree%child(:, c) = 0
             n = tree%last(c) - tree%first(c) + 1
-            if (n <= leaf_max) cycle grow
+            if (n <= leaf_max) then
+                tree%leaf_of(tree%first(c):tree%last(c)) = c
+                cycle grow
+            end if
             mid = tree%first(c) + n/2 - 1
             tree%child(:, c) = [tree%n + 1, tree%n + 2]
+            tree%parent(tree%n + 1:tree%n + 2) = c
             tree%first(tree%n + 1:tree%n + 2) = [tree%first(c), mid + 1]
             tree%last(tree%n + 1:tree%n + 2) = [mid, tree%last(c)]
             tree%n = tree%n + 2
         end do grow
         allocate (tree%blocks(4, 4*bx%ne))
-        allocate (in_block(bx%ne, bx%ne), source=.false.)
         tree%n_blocks = 0
         call split_pair(1, 1)
+        ! the blocks by cy (a counting sort)
+        allocate (tree%cy_start(tree%n + 1), source=0)
+        allocate (tree%by_cy(tree%n_blocks))
+        count_cy: do b = 1, tree%n_blocks
+            tree%cy_start(tree%blocks(2, b) + 1) = tree%cy_start(tree%blocks(2, b) + 1) + 1
+        end do count_cy
+        tree%cy_start(1) = 1
+        offsets: do c = 1, tree%n
+            tree%cy_start(c + 1) = tree%cy_start(c + 1) + tree%cy_start(c)
+        end do offsets
+        next = tree%cy_start(1:tree%n)
+        place: do b = 1, tree%n_blocks
+            c = tree%blocks(2, b)
+            tree%by_cy(next(c)) = b
+            next(c) = next(c) + 1
+        end do place
     contains
         recursive subroutine split_pair(cx, cy)
             integer, intent(in) :: cx, cy
@@ -1257,8 +1281,6 @@ contains
                         if (tree%n_blocks == size(tree%blocks, 2)) call grow_blocks()
                         tree%n_blocks = tree%n_blocks + 1
                         tree%blocks(:, tree%n_blocks) = [cx, cy, kx, ky]
-                        in_block(tree%first(cx):tree%last(cx), tree%first(cy):tree%last(cy)) &
-                            = .true.
                         return
                     end if
                 end if
@@ -1281,34 +1303,61 @@ contains
         end subroutine grow_blocks
     end subroutine new_blocks
 
+    !> skip(e1) = the pair (e1, e2) is in a block: the blocks whose cy holds e2 are those of
+    !! the ancestors of e2's leaf (each element pair is in at most one block).
+    pure subroutine blocked_rows(tree, e2, skip)
+        type(cluster_tree_t), intent(in) :: tree
+        integer, intent(in) :: e2
+        logical, intent(out) :: skip(:)
+        integer :: c, q, cx
+        skip = .false.
+        c = tree%leaf_of(e2)
+        ancestors: do while (c /= 0)
+            blocks_of_c: do q = tree%cy_start(c), tree%cy_start(c + 1) - 1
+                cx = tree%blocks(1, tree%by_cy(q))
+                skip(tree%first(cx):tree%last(cx)) = .true.
+            end do blocks_of_c
+            c = tree%parent(c)
+        end do ancestors
+    end subroutine blocked_rows
+
     !> The moments of the functions of cluster c against its Lagrange polynomials of
     !! orders(k), with the field measure W (field side) and without (source side), over the
     !! part of their support in c: m(row, a) = int g W l_a, from the Chebyshev moments
     !! (chebyshev_moments) through l_a = (2/m) sum'_{q<m} T_q(t_a) T_q.
-    subroutine cluster_moments(kernel, bx, cheb, tree, c, k, work, mark)
+    subroutine cluster_moments(kernel, bx, cheb, tree, c, k, field, work, mark)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
         type(chebyshev_t), intent(in) :: cheb
         type(cluster_tree_t), intent(inout) :: tree
         integer, intent(in) :: c, k
+        logical, intent(in) :: field               !! the field side (c is the X of a block),
+                                                   !! else the source side (the Y): only the
+                                                   !! moments a block uses are formed
         type(work_t), intent(inout) :: work
         integer, intent(inout) :: mark(:)          !! zero on entry and exit
         integer :: p, i, n_rows
-        if (allocated(tree%side(k, c)%field)) return
+        if (field .and. allocated(tree%side(k, c)%field)) return
+        if (.not. field .and. allocated(tree%side(k, c)%source)) return
         p = orders(k)
         call chebyshev_moments(kernel, bx, tree, c, work, mark)
         n_rows = size(tree%cheb_field(c)%a, 1)
-        allocate (tree%side(k, c)%field(n_rows, p, tree%n_stored), &
-                  tree%side(k, c)%source(n_rows, p, tree%n_stored))
         ! m(row, a) = sum_q mu(row, q) to_weights(a, q)
-        fields: do i = 1, tree%n_stored
-            call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_field(c)%a(1, 1, i), n_rows, &
-                       cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, tree%side(k, c)%field(1, 1, i), &
-                       n_rows)
-            call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_source(c)%a(1, 1, i), n_rows, &
-                       cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
-                       tree%side(k, c)%source(1, 1, i), n_rows)
-        end do fields
+        if (field) then
+            allocate (tree%side(k, c)%field(n_rows, p, tree%n_stored))
+            field_moments: do i = 1, tree%n_stored
+                call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_field(c)%a(1, 1, i), &
+                           n_rows, cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
+                           tree%side(k, c)%field(1, 1, i), n_rows)
+            end do field_moments
+        else
+            allocate (tree%side(k, c)%source(n_rows, p, tree%n_stored))
+            source_moments: do i = 1, tree%n_stored
+                call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_source(c)%a(1, 1, i), &
+                           n_rows, cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
+                           tree%side(k, c)%source(1, 1, i), n_rows)
+            end do source_moments
+        end if
     end subroutine cluster_moments
 
     !> The functions of field i (1 = bx, 2 = bz) with support in cluster c (tree%rows: their
@@ -1510,8 +1559,8 @@ contains
             ky = tree%blocks(4, b)
             px = orders(kx)
             py = orders(ky)
-            call cluster_moments(kernel, bx, cheb, tree, cx, kx, work, mark)
-            call cluster_moments(kernel, bx, cheb, tree, cy, ky, work, mark)
+            call cluster_moments(kernel, bx, cheb, tree, cx, kx, .true., work, mark)
+            call cluster_moments(kernel, bx, cheb, tree, cy, ky, .false., work, mark)
             gx(1:px) = 0.5_dp*(tree%lo(cx) + tree%hi(cx)) + &
                        0.5_dp*(tree%hi(cx) - tree%lo(cx))*cheb%cosines(1:px, kx)
             gy(1:py) = 0.5_dp*(tree%lo(cy) + tree%hi(cy)) + &
