@@ -584,17 +584,18 @@ contains
         real(dp), intent(out) :: x(:)              !! x(i), i <= n
         real(dp), intent(out), optional :: bf(:, :)  !! bf(i, r), r <= n_fun(e)
         real(dp), intent(out), optional :: bs(:, :)  !! bs(i, r)
-        real(dp) :: xi, b, h, w
+        real(dp) :: xi, b, h, w, wf
         integer :: i, r
         h = bx%x(e) - bx%x(e - 1)
         nodes: do i = 1, n
             xi = 2.0_dp*work%tab%v(i, n) - 1.0_dp
             x(i) = bx%x(e - 1) + h*work%tab%v(i, n)
             w = h*work%tab%w(i, n)
+            if (present(bf)) wf = w*kernel%field_weight(x(i))
             functions: do r = 1, work%n_fun(e)
                 b = work%poly(1, r, e) + xi*(work%poly(2, r, e) + xi*work%poly(3, r, e))
                 if (present(bs)) bs(i, r) = b*w
-                if (present(bf)) bf(i, r) = b*(w*kernel%field_weight(x(i)))
+                if (present(bf)) bf(i, r) = b*wf
             end do functions
         end do nodes
     end subroutine element_nodes
