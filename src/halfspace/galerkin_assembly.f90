@@ -113,13 +113,6 @@ module galerkin_assembly
         integer :: comp_s(n_loc) = 0
     end type pair_map_t
 
-    !> Nodes of one GL rule on every element and the weighted local functions there.
-    type :: order_table_t
-        real(dp), allocatable :: x(:, :)           !! x(i, e): node i on element e
-        real(dp), allocatable :: bf(:, :, :)       !! bf(i, r, e) = g_r(x_i) h w_i W(x_i), field
-        real(dp), allocatable :: bs(:, :, :)       !! bs(i, r, e) = g_r(x_i) h w_i, source
-    end type order_table_t
-
     !> Work arrays reused over the element pairs; one per thread.
     type :: work_t
         type(gauss_tables_t) :: tab
@@ -134,8 +127,6 @@ module galerkin_assembly
         integer, allocatable :: n_fun(:)           !! functions nonzero on element e
         integer, allocatable :: comp(:, :)         !! their field (1 = bx, 2 = bz)
         integer, allocatable :: glob(:, :)         !! their global number in T
-        type(order_table_t) :: by_order(n_max)     !! nodes and weighted functions, by order
-        logical, allocatable :: tabulated(:, :)    !! tabulated(n, e): by_order(n) done on e
         real(dp), allocatable :: poly(:, :, :)     !! poly(:, r, e): g_r = c1 + c2 xi + c3 xi^2
         integer, allocatable :: same(:, :)         !! same(r, e): the first local function of e
                                                    !! equal to g_r (bx and bz of one family)
@@ -148,6 +139,10 @@ module galerkin_assembly
         integer, allocatable :: far(:, :)          !! (e1, n1, n2) of the far pairs of a column
         integer, allocatable :: by_n2(:, :)        !! the same (e1, n1), sorted by n2
         real(dp), allocatable :: gx(:)             !! field nodes of a far batch
+        real(dp), allocatable :: gbf(:, :)         !! gbf(k, r): the weighted functions of the
+                                                   !! field element of node k (element_nodes)
+        real(dp) :: sx(n_max) = 0.0_dp             !! source nodes of a far batch
+        real(dp) :: sbs(n_max, n_loc) = 0.0_dp     !! the weighted source functions there
         real(dp), allocatable :: g(:, :, :, :)     !! kernel on the batch grid, g(k, l, i, j)
         real(dp), allocatable :: y(:, :, :)        !! y(k, i, c) = sum_l g(k, l, i, .) bs(c, l)
         type(error_t), allocatable :: err          !! failure of this thread's last column
@@ -175,14 +170,23 @@ module galerkin_assembly
     type :: cluster_tree_t
         integer :: n = 0
         integer, allocatable :: first(:), last(:), child(:, :)
+        integer, allocatable :: parent(:)          !! 0 for the root
+        integer, allocatable :: leaf_of(:)         !! leaf_of(e): the leaf holding element e
         real(dp), allocatable :: lo(:), hi(:)
         integer :: n_blocks = 0
         integer, allocatable :: blocks(:, :)
+        !> The blocks whose cy is cluster c: by_cy(cy_start(c):cy_start(c + 1) - 1)
+        integer, allocatable :: by_cy(:), cy_start(:)
         type(moments_t), allocatable :: side(:, :)        !! side(k, c): orders(k) on c
         type(cluster_rows_t), allocatable :: rows(:, :)   !! rows(i, c)
         !> Chebyshev moments of the functions of cluster c: a(row, q + 1, i) = int g W T_q
         !! (field) and int g T_q (source), q < n_cheb
         type(chebyshev_moments_t), allocatable :: cheb_field(:), cheb_source(:)
+        !> Fields whose moments are stored (the last index of cheb_field%a, side%field, ...):
+        !! 1 when the bz functions repeat the bx functions on every element (P1/P1, P2/P2,
+        !! S2/S2: the moments of the two fields are the same numbers, formed and kept once),
+        !! else 2; field i is stored at min(i, n_stored)
+        integer :: n_stored = 2
     end type cluster_tree_t
 
 contains
@@ -203,7 +207,8 @@ contains
         type(work_t) :: work
         type(chebyshev_t) :: cheb
         type(cluster_tree_t) :: tree
-        logical, allocatable :: in_block(:, :)
+        logical, allocatable :: skip(:, :)         !! skip(e1, thread): the pair (e1, e2) of the
+                                                   !! thread's column e2 is in a block
         logical :: use_blocks
         type(work_t), allocatable :: works(:)
         real(dp), allocatable :: column_loc(:, :, :, :, :)
@@ -225,9 +230,7 @@ contains
         if (present(pairwise)) use_blocks = use_blocks .and. .not. pairwise
         if (use_blocks) then
             call new_chebyshev(cheb)
-            call new_blocks(bx, cheb, tree, in_block)
-        else
-            allocate (in_block(bx%ne, 1), source=.false.)
+            call new_blocks(bx, cheb, tree)
         end if
         n_threads = 1
         !$ if (.not. in_order .and. .not. omp_in_parallel() .and. bx%ne >= min_parallel) &
@@ -240,6 +243,7 @@ contains
         n_colours = 1
         if (.not. in_order) n_colours = column_stride(work)
         allocate (column_loc(n_loc, n_loc, bx%ne, 0:1, n_threads))
+        allocate (skip(bx%ne, n_threads), source=.false.)
         ! columns outer: the pair (e1, e2) adds to the columns of e2's functions only, and the
         ! columns e2 of one colour (e2 mod n_colours) share no function, so they are added to T
         ! in parallel without races; every entry receives its terms in the same order (colour
@@ -259,10 +263,10 @@ contains
             source_elements: do e2 = first, last, step
                 thread = 1
                 !$ thread = omp_get_thread_num() + 1
-                call integrate_column(kernel, bx, bz, e2, shift_ok, &
-                                      in_block(:, merge(e2, 1, use_blocks)), works(thread), &
-                                      column_loc(:, :, :, :, thread))
-                call add_column(e2, in_block(:, merge(e2, 1, use_blocks)), works(thread), &
+                if (use_blocks) call blocked_rows(tree, e2, skip(:, thread))
+                call integrate_column(kernel, bx, bz, e2, shift_ok, skip(:, thread), &
+                                      works(thread), column_loc(:, :, :, :, thread))
+                call add_column(e2, skip(:, thread), works(thread), &
                                 column_loc(:, :, :, mod(e2, 2), thread), t_mat)
             end do source_elements
             !$omp end parallel do
@@ -361,10 +365,10 @@ contains
     pure subroutine new_batch_arrays(bx, work)
         type(basis_t), intent(in) :: bx
         type(work_t), intent(inout) :: work
-        call reserve(work, 1024)
-        allocate (work%tabulated(n_max, bx%ne), source=.false.)
+        call reserve(work, 256)
         allocate (work%far(3, bx%ne), work%by_n2(2, bx%ne), work%gx(max_batch), &
-                  work%g(batch_rows, 4, 2, 2), work%y(batch_rows, 2, n_loc))
+                  work%gbf(batch_rows, n_loc), work%g(batch_rows, 4, 2, 2), &
+                  work%y(batch_rows, 2, n_loc))
     end subroutine new_batch_arrays
 
     !> The least stride s such that elements e and e + s have no function in common, for
@@ -566,35 +570,35 @@ contains
         der(bx%n_local + 1:bx%n_local + bz%n_local) = d(1:bz%n_local)
     end subroutine end_values
 
-    !> Nodes of the n-point GL rule on element e and the local functions there, weighted for
-    !! the field side (h w W(x)) and for the source side (h w); once per order and element (a
-    !! translation-invariant kernel needs few elements at each order).
-    pure subroutine need_tables(kernel, bx, n, e, work)
+    !> Nodes x(i) of the n-point GL rule on element e and its local functions there, weighted
+    !! for the field side (bf = g_r h w_i W(x_i)) and for the source side (bs = g_r h w_i).
+    !! Formed where they are used (a far batch, a leaf's moments), not tabulated for every
+    !! order and element: a few multiplications per node against the tens of kernel
+    !! evaluations each node serves, and tables of every order on every element (0.6 MB at
+    !! N_e = 100, 12 MB at 1000) are fresh pages at every assembly of a case.
+    pure subroutine element_nodes(kernel, bx, work, n, e, x, bf, bs)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
+        type(work_t), intent(in) :: work           !! GL tables (rule n ready), polynomials
         integer, intent(in) :: n, e
-        type(work_t), intent(inout) :: work
-        real(dp) :: xi, b(n_loc), h
-        integer :: i
-        if (.not. allocated(work%by_order(n)%x)) then
-            call need_order(work%tab, n)
-            associate (tbl => work%by_order(n))
-                allocate (tbl%x(n, bx%ne), tbl%bf(n, n_loc, bx%ne), tbl%bs(n, n_loc, bx%ne))
-            end associate
-        end if
-        if (work%tabulated(n, e)) return
+        real(dp), intent(out) :: x(:)              !! x(i), i <= n
+        real(dp), intent(out), optional :: bf(:, :)  !! bf(i, r), r <= n_fun(e)
+        real(dp), intent(out), optional :: bs(:, :)  !! bs(i, r)
+        real(dp) :: xi, b, h, w, wf
+        integer :: i, r
         h = bx%x(e) - bx%x(e - 1)
-        associate (tbl => work%by_order(n))
-            nodes: do i = 1, n
-                xi = 2.0_dp*work%tab%v(i, n) - 1.0_dp
-                tbl%x(i, e) = bx%x(e - 1) + h*work%tab%v(i, n)
-                b = work%poly(1, :, e) + xi*(work%poly(2, :, e) + xi*work%poly(3, :, e))
-                tbl%bs(i, :, e) = b*(h*work%tab%w(i, n))
-                tbl%bf(i, :, e) = b*(h*work%tab%w(i, n)*kernel%field_weight(tbl%x(i, e)))
-            end do nodes
-        end associate
-        work%tabulated(n, e) = .true.
-    end subroutine need_tables
+        nodes: do i = 1, n
+            xi = 2.0_dp*work%tab%v(i, n) - 1.0_dp
+            x(i) = bx%x(e - 1) + h*work%tab%v(i, n)
+            w = h*work%tab%w(i, n)
+            if (present(bf)) wf = w*kernel%field_weight(x(i))
+            functions: do r = 1, work%n_fun(e)
+                b = work%poly(1, r, e) + xi*(work%poly(2, r, e) + xi*work%poly(3, r, e))
+                if (present(bs)) bs(i, r) = b*w
+                if (present(bf)) bf(i, r) = b*wf
+            end do functions
+        end do nodes
+    end subroutine element_nodes
 
     !> Functions nonzero on element e: count, field (1 = bx, 2 = bz) and global number.
     pure subroutine element_numbers(bx, bz, e, n, comp, glob)
@@ -782,13 +786,14 @@ contains
         real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
         type(error_t), allocatable, intent(out) :: err
         integer :: q, n1, k0
-        if (.not. work%tabulated(n2, e2)) call need_tables(kernel, bx, n2, e2, work)
+        call need_order(work%tab, n2)
+        call element_nodes(kernel, bx, work, n2, e2, work%sx, bs=work%sbs)
         k0 = 0
         field_nodes: do q = first, last
             n1 = work%by_n2(2, q)
-            if (.not. work%tabulated(n1, work%by_n2(1, q))) &
-                call need_tables(kernel, bx, n1, work%by_n2(1, q), work)
-            work%gx(k0 + 1:k0 + n1) = work%by_order(n1)%x(:, work%by_n2(1, q))
+            call need_order(work%tab, n1)
+            call element_nodes(kernel, bx, work, n1, work%by_n2(1, q), work%gx(k0 + 1:k0 + n1), &
+                               bf=work%gbf(k0 + 1:k0 + n1, :))
             k0 = k0 + n1
         end do field_nodes
         if (size(work%g, 2) < n2) then
@@ -797,7 +802,7 @@ contains
             deallocate (work%g)
             allocate (work%g(batch_rows, n2, 2, 2))
         end if
-        call kernel%grid_values(work%gx(1:k0), work%by_order(n2)%x(:, e2), &
+        call kernel%grid_values(work%gx(1:k0), work%sx(1:n2), &
                                 work%g(1:k0, 1:n2, :, :), err)
         if (allocated(err)) return
         work%n_kernel = work%n_kernel + int(k0*n2, int64)
@@ -817,10 +822,9 @@ contains
             j = work%comp(c, e2)
             components: do i = 1, 2
                 if (kernel%constant_coupling .and. i /= j) cycle components
-                work%y(1:k0, i, c) = work%g(1:k0, 1, i, j)*work%by_order(n2)%bs(1, c, e2)
+                work%y(1:k0, i, c) = work%g(1:k0, 1, i, j)*work%sbs(1, c)
                 source_nodes: do l = 2, n2
-                    work%y(1:k0, i, c) = work%y(1:k0, i, c) + &
-                                         work%g(1:k0, l, i, j)*work%by_order(n2)%bs(l, c, e2)
+                    work%y(1:k0, i, c) = work%y(1:k0, i, c) + work%g(1:k0, l, i, j)*work%sbs(l, c)
                 end do source_nodes
             end do components
         end do source_functions
@@ -840,7 +844,7 @@ contains
         pairs: do q = first, last
             e1 = work%by_n2(1, q)
             n1 = work%by_n2(2, q)
-            associate (bf => work%by_order(n1)%bf, y => work%y)
+            associate (bf => work%gbf, y => work%y)
                 columns: do c = 1, work%n_fun(e2)
                     j = work%comp(c, e2)
                     rows: do r = 1, work%n_fun(e1)
@@ -852,7 +856,7 @@ contains
                         end if
                         total = 0.0_dp
                         nodes: do k = 1, n1
-                            total = total + bf(k, r, e1)*y(k0 + k, i, c)
+                            total = total + bf(k0 + k, r)*y(k0 + k, i, c)
                         end do nodes
                         loc(r, c, e1) = total
                     end do rows
@@ -1199,20 +1203,21 @@ contains
 
     ! ---------------------------------------------------------------- interpolated blocks
 
-    !> The cluster tree (contiguous elements halved by count down to leaf_max), the admissible
-    !! blocks (cx left of cy, gap >= block_ratio times the longer, and fewer kernel values
-    !! than block_cost per element pair) and in_block(e1, e2) for their element pairs.
-    subroutine new_blocks(bx, cheb, tree, in_block)
+    !> The cluster tree (contiguous elements halved by count down to leaf_max) and the
+    !! admissible blocks (cx left of cy, gap >= block_ratio times the longer, and fewer kernel
+    !! values than block_cost per element pair), listed by cy (blocked_rows).
+    subroutine new_blocks(bx, cheb, tree)
         type(basis_t), intent(in) :: bx
         type(chebyshev_t), intent(in) :: cheb
         type(cluster_tree_t), intent(out) :: tree
-        logical, allocatable, intent(out) :: in_block(:, :)
-        integer :: c, n, mid
+        integer, allocatable :: next(:)
+        integer :: c, n, mid, b
         allocate (tree%first(2*bx%ne), tree%last(2*bx%ne), tree%child(2, 2*bx%ne), &
-                  tree%lo(2*bx%ne), tree%hi(2*bx%ne))
+                  tree%lo(2*bx%ne), tree%hi(2*bx%ne), tree%parent(2*bx%ne), tree%leaf_of(bx%ne))
         tree%n = 1
         tree%first(1) = 1
         tree%last(1) = bx%ne
+        tree%parent(1) = 0
         c = 0
         grow: do while (c < tree%n)
             c = c + 1
@@ -1220,17 +1225,36 @@ contains
             tree%hi(c) = bx%x(tree%last(c))
             tree%child(:, c) = 0
             n = tree%last(c) - tree%first(c) + 1
-            if (n <= leaf_max) cycle grow
+            if (n <= leaf_max) then
+                tree%leaf_of(tree%first(c):tree%last(c)) = c
+                cycle grow
+            end if
             mid = tree%first(c) + n/2 - 1
             tree%child(:, c) = [tree%n + 1, tree%n + 2]
+            tree%parent(tree%n + 1:tree%n + 2) = c
             tree%first(tree%n + 1:tree%n + 2) = [tree%first(c), mid + 1]
             tree%last(tree%n + 1:tree%n + 2) = [mid, tree%last(c)]
             tree%n = tree%n + 2
         end do grow
         allocate (tree%blocks(4, 4*bx%ne))
-        allocate (in_block(bx%ne, bx%ne), source=.false.)
         tree%n_blocks = 0
         call split_pair(1, 1)
+        ! the blocks by cy (a counting sort)
+        allocate (tree%cy_start(tree%n + 1), source=0)
+        allocate (tree%by_cy(tree%n_blocks))
+        count_cy: do b = 1, tree%n_blocks
+            tree%cy_start(tree%blocks(2, b) + 1) = tree%cy_start(tree%blocks(2, b) + 1) + 1
+        end do count_cy
+        tree%cy_start(1) = 1
+        offsets: do c = 1, tree%n
+            tree%cy_start(c + 1) = tree%cy_start(c + 1) + tree%cy_start(c)
+        end do offsets
+        next = tree%cy_start(1:tree%n)
+        place: do b = 1, tree%n_blocks
+            c = tree%blocks(2, b)
+            tree%by_cy(next(c)) = b
+            next(c) = next(c) + 1
+        end do place
     contains
         recursive subroutine split_pair(cx, cy)
             integer, intent(in) :: cx, cy
@@ -1258,8 +1282,6 @@ contains
                         if (tree%n_blocks == size(tree%blocks, 2)) call grow_blocks()
                         tree%n_blocks = tree%n_blocks + 1
                         tree%blocks(:, tree%n_blocks) = [cx, cy, kx, ky]
-                        in_block(tree%first(cx):tree%last(cx), tree%first(cy):tree%last(cy)) &
-                            = .true.
                         return
                     end if
                 end if
@@ -1282,33 +1304,61 @@ contains
         end subroutine grow_blocks
     end subroutine new_blocks
 
+    !> skip(e1) = the pair (e1, e2) is in a block: the blocks whose cy holds e2 are those of
+    !! the ancestors of e2's leaf (each element pair is in at most one block).
+    pure subroutine blocked_rows(tree, e2, skip)
+        type(cluster_tree_t), intent(in) :: tree
+        integer, intent(in) :: e2
+        logical, intent(out) :: skip(:)
+        integer :: c, q, cx
+        skip = .false.
+        c = tree%leaf_of(e2)
+        ancestors: do while (c /= 0)
+            blocks_of_c: do q = tree%cy_start(c), tree%cy_start(c + 1) - 1
+                cx = tree%blocks(1, tree%by_cy(q))
+                skip(tree%first(cx):tree%last(cx)) = .true.
+            end do blocks_of_c
+            c = tree%parent(c)
+        end do ancestors
+    end subroutine blocked_rows
+
     !> The moments of the functions of cluster c against its Lagrange polynomials of
     !! orders(k), with the field measure W (field side) and without (source side), over the
     !! part of their support in c: m(row, a) = int g W l_a, from the Chebyshev moments
     !! (chebyshev_moments) through l_a = (2/m) sum'_{q<m} T_q(t_a) T_q.
-    subroutine cluster_moments(kernel, bx, cheb, tree, c, k, work, mark)
+    subroutine cluster_moments(kernel, bx, cheb, tree, c, k, field, work, mark)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
         type(chebyshev_t), intent(in) :: cheb
         type(cluster_tree_t), intent(inout) :: tree
         integer, intent(in) :: c, k
+        logical, intent(in) :: field               !! the field side (c is the X of a block),
+                                                   !! else the source side (the Y): only the
+                                                   !! moments a block uses are formed
         type(work_t), intent(inout) :: work
         integer, intent(inout) :: mark(:)          !! zero on entry and exit
         integer :: p, i, n_rows
-        if (allocated(tree%side(k, c)%field)) return
+        if (field .and. allocated(tree%side(k, c)%field)) return
+        if (.not. field .and. allocated(tree%side(k, c)%source)) return
         p = orders(k)
         call chebyshev_moments(kernel, bx, tree, c, work, mark)
         n_rows = size(tree%cheb_field(c)%a, 1)
-        allocate (tree%side(k, c)%field(n_rows, p, 2), tree%side(k, c)%source(n_rows, p, 2))
         ! m(row, a) = sum_q mu(row, q) to_weights(a, q)
-        fields: do i = 1, 2
-            call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_field(c)%a(1, 1, i), n_rows, &
-                       cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, tree%side(k, c)%field(1, 1, i), &
-                       n_rows)
-            call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_source(c)%a(1, 1, i), n_rows, &
-                       cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
-                       tree%side(k, c)%source(1, 1, i), n_rows)
-        end do fields
+        if (field) then
+            allocate (tree%side(k, c)%field(n_rows, p, tree%n_stored))
+            field_moments: do i = 1, tree%n_stored
+                call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_field(c)%a(1, 1, i), &
+                           n_rows, cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
+                           tree%side(k, c)%field(1, 1, i), n_rows)
+            end do field_moments
+        else
+            allocate (tree%side(k, c)%source(n_rows, p, tree%n_stored))
+            source_moments: do i = 1, tree%n_stored
+                call dgemm('N', 'T', n_rows, p, p, 1.0_dp, tree%cheb_source(c)%a(1, 1, i), &
+                           n_rows, cheb%to_weights(1, 1, k), n_cheb, 0.0_dp, &
+                           tree%side(k, c)%source(1, 1, i), n_rows)
+            end do source_moments
+        end if
     end subroutine cluster_moments
 
     !> The functions of field i (1 = bx, 2 = bz) with support in cluster c (tree%rows: their
@@ -1353,10 +1403,10 @@ contains
             mark(tree%rows(i, c)%glob(1:n)) = 0
         end do components
         n_rows = maxval(tree%rows(:, c)%n)
-        allocate (tree%cheb_field(c)%a(n_rows, n_cheb, 2), &
-                  tree%cheb_source(c)%a(n_rows, n_cheb, 2), source=0.0_dp)
+        allocate (tree%cheb_field(c)%a(n_rows, n_cheb, tree%n_stored), &
+                  tree%cheb_source(c)%a(n_rows, n_cheb, tree%n_stored), source=0.0_dp)
         if (tree%child(1, c) == 0) call leaf_moments(kernel, bx, tree, c, work, pf, ps)
-        fields: do i = 1, 2
+        fields: do i = 1, tree%n_stored
             n = tree%rows(i, c)%n
             mark(tree%rows(i, c)%glob(1:n)) = [(q, q=1, n)]
             if (tree%child(1, c) /= 0) then
@@ -1412,30 +1462,29 @@ contains
         type(work_t), intent(inout) :: work
         real(dp), intent(out) :: pf(:, :, :), ps(:, :, :)   !! (n_loc, n_cheb, leaf_max)
         integer, parameter :: np = moment_points
-        real(dp) :: t(np), tq(np, n_cheb), scale, mid
+        real(dp) :: x(np), bf(np, n_loc), bs(np, n_loc), t(np), tq(np, n_cheb), scale, mid
         integer :: e, r, q, k
         scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
         mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
+        call need_order(work%tab, np)
         elements: do e = tree%first(c), tree%last(c)
             k = e - tree%first(c) + 1
-            if (.not. work%tabulated(np, e)) call need_tables(kernel, bx, np, e, work)
-            associate (tbl => work%by_order(np))
-                t = scale*(tbl%x(:, e) - mid)
-                tq(:, 1) = 1.0_dp
-                tq(:, 2) = t
-                do q = 3, n_cheb
-                    tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
-                end do
-                functions: do r = 1, work%n_fun(e)
-                    if (work%same(r, e) /= r) then
-                        pf(r, :, k) = pf(work%same(r, e), :, k)
-                        ps(r, :, k) = ps(work%same(r, e), :, k)
-                        cycle functions
-                    end if
-                    pf(r:r, :, k) = matmul(transpose(tbl%bf(:, r:r, e)), tq)
-                    ps(r:r, :, k) = matmul(transpose(tbl%bs(:, r:r, e)), tq)
-                end do functions
-            end associate
+            call element_nodes(kernel, bx, work, np, e, x, bf, bs)
+            t = scale*(x - mid)
+            tq(:, 1) = 1.0_dp
+            tq(:, 2) = t
+            do q = 3, n_cheb
+                tq(:, q) = 2.0_dp*t*tq(:, q - 1) - tq(:, q - 2)
+            end do
+            functions: do r = 1, work%n_fun(e)
+                if (work%same(r, e) /= r) then
+                    pf(r, :, k) = pf(work%same(r, e), :, k)
+                    ps(r, :, k) = ps(work%same(r, e), :, k)
+                    cycle functions
+                end if
+                pf(r:r, :, k) = matmul(transpose(bf(:, r:r)), tq)
+                ps(r:r, :, k) = matmul(transpose(bs(:, r:r)), tq)
+            end do functions
         end do elements
     end subroutine leaf_moments
 
@@ -1466,6 +1515,22 @@ contains
         end do degrees
     end subroutine chebyshev_transfer
 
+    !> The bz functions repeat the bx functions on every element (work%same): the two fields'
+    !! moments are the same numbers (cluster_tree_t%n_stored).
+    pure logical function repeated_fields(bx, work)
+        type(basis_t), intent(in) :: bx
+        type(work_t), intent(in) :: work
+        integer :: e, r
+        repeated_fields = .false.
+        elements: do e = 1, size(work%n_fun)
+            if (work%n_fun(e) /= 2*bx%n_local) return
+            functions: do r = 1, bx%n_local
+                if (work%same(bx%n_local + r, e) /= r) return
+            end do functions
+        end do elements
+        repeated_fields = .true.
+    end function repeated_fields
+
     !> Add the admissible blocks to T (A of T = A + A^T), one after the other: the kernel at
     !! the px x py Chebyshev points of the two clusters, and the block of each diagonal
     !! component Mx K My^T by two products (BLAS); the constant coupling components in
@@ -1486,6 +1551,8 @@ contains
         allocate (tree%side(n_orders, tree%n), tree%rows(2, tree%n), tree%cheb_field(tree%n), &
                   tree%cheb_source(tree%n))
         allocate (cy_mat(n_cheb, 64), l_mat(64, 64))
+        tree%n_stored = 2
+        if (repeated_fields(bx, work)) tree%n_stored = 1
         blocks: do b = 1, tree%n_blocks
             cx = tree%blocks(1, b)
             cy = tree%blocks(2, b)
@@ -1493,8 +1560,8 @@ contains
             ky = tree%blocks(4, b)
             px = orders(kx)
             py = orders(ky)
-            call cluster_moments(kernel, bx, cheb, tree, cx, kx, work, mark)
-            call cluster_moments(kernel, bx, cheb, tree, cy, ky, work, mark)
+            call cluster_moments(kernel, bx, cheb, tree, cx, kx, .true., work, mark)
+            call cluster_moments(kernel, bx, cheb, tree, cy, ky, .false., work, mark)
             gx(1:px) = 0.5_dp*(tree%lo(cx) + tree%hi(cx)) + &
                        0.5_dp*(tree%hi(cx) - tree%lo(cx))*cheb%cosines(1:px, kx)
             gy(1:py) = 0.5_dp*(tree%lo(cy) + tree%hi(cy)) + &
@@ -1515,9 +1582,10 @@ contains
                 end if
                 ! K My^T (px x ny), then Mx (K My^T) (nx x ny)
                 call dgemm('N', 'T', px, ny, py, 1.0_dp, g(1, 1, i, i), n_cheb, &
-                           tree%side(ky, cy)%source(1, 1, i), size(tree%side(ky, cy)%source, 1), &
-                           0.0_dp, cy_mat, size(cy_mat, 1))
-                call dgemm('N', 'N', nx, ny, px, 1.0_dp, tree%side(kx, cx)%field(1, 1, i), &
+                           tree%side(ky, cy)%source(1, 1, min(i, tree%n_stored)), &
+                           size(tree%side(ky, cy)%source, 1), 0.0_dp, cy_mat, size(cy_mat, 1))
+                call dgemm('N', 'N', nx, ny, px, 1.0_dp, &
+                           tree%side(kx, cx)%field(1, 1, min(i, tree%n_stored)), &
                            size(tree%side(kx, cx)%field, 1), cy_mat, size(cy_mat, 1), 0.0_dp, &
                            l_mat, size(l_mat, 1))
                 associate (rows => tree%rows(i, cx)%glob, cols => tree%rows(i, cy)%glob)
@@ -1536,8 +1604,8 @@ contains
                 nx = tree%rows(i, cx)%n
                 ny = tree%rows(j, cy)%n
                 associate (rows => tree%rows(i, cx)%glob, cols => tree%rows(j, cy)%glob, &
-                           mx => tree%cheb_field(cx)%a(:, 1, i), &
-                           my => tree%cheb_source(cy)%a(:, 1, j))
+                           mx => tree%cheb_field(cx)%a(:, 1, min(i, tree%n_stored)), &
+                           my => tree%cheb_source(cy)%a(:, 1, min(j, tree%n_stored)))
                     coupling_columns: do jj = 1, ny
                         t_mat(rows(1:nx), cols(jj)) = t_mat(rows(1:nx), cols(jj)) + &
                             (kernel%coupling(i)*mx(1:nx))*my(jj)

@@ -54,7 +54,9 @@ module singular_quadrature
     integer, parameter :: n_max = 32        !! largest GL rule tabulated
     real(dp), parameter :: snap_ulps = 1024.0_dp  !! snapped_to_nodes: a point this close to a
                                                   !! node (in units of eps |x|) is the node
-    integer, parameter :: n_log = 24        !! points of the product-log rule
+    integer, parameter :: n_log = 24        !! points of the product-log rule, at most
+    integer, parameter :: n_log_min = 12    !! ... at least (log_points)
+    real(dp), parameter :: log_digits = 20.0_dp  !! log10(1/error) of log_points (rho^-n)
     integer, parameter :: n_inner = 12      !! inner GL points of the pair rules
     real(dp), parameter :: target_digits = 8.5_dp  !! log10(1/error) per direction, error rho^-2n
     real(dp), parameter :: near_ratio = 0.5_dp     !! gap/size below which the pair rule is used
@@ -102,15 +104,15 @@ module singular_quadrature
         end function log_length_i
     end interface
 
-    !> GL rules on [0, 1] for n = 1..n_max and the product-log weights of the n_log rule.
+    !> GL rules on [0, 1] for n = 1..n_max and the product-log weights of the rules of
+    !! n <= n_log points.
     type :: gauss_tables_t
         real(dp) :: v(n_max, n_max) = 0.0_dp   !! v(i, n): node i of the n-point rule
         real(dp) :: w(n_max, n_max) = 0.0_dp   !! w(i, n): its weight
-        real(dp) :: wl(n_log) = 0.0_dp         !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n_log))
-        real(dp) :: wq(n_log) = 0.0_dp         !! wl_i - w_i ln v_i (add_log_piece), tabulated
-                                               !! so that a log piece costs no logarithms
+        real(dp) :: wq(n_log, n_log) = 0.0_dp  !! wq(i, n) = wl_i - w_i ln v_i (add_log_piece),
+                                               !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n));
+                                               !! tabulated: a log piece costs no logarithms
         logical :: ready(n_max) = .false.      !! rule n tabulated (lazy tables fill on demand)
-        logical :: log_ready = .false.         !! wl tabulated
     end type gauss_tables_t
 
     !> Points of a double integral over (x, xi) with weights for F (w) and for P (wc).
@@ -158,33 +160,32 @@ contains
         end do rules
     end subroutine new_gauss_tables
 
-    !> Make sure the n-point rule (and, for n = n_log, the product-log weights) is tabulated.
+    !> Make sure the n-point rule (and, for n <= n_log, its product-log weights) is tabulated.
     pure subroutine need_order(tab, n)
         type(gauss_tables_t), intent(inout) :: tab
         integer, intent(in) :: n
-        real(dp) :: xi(n_max), wt(n_max), leg(0:n_log - 1), mom(0:n_log - 1)
+        real(dp) :: xi(n_max), wt(n_max), leg(0:n_log - 1), mom(0:n_log - 1), wl
         integer :: i, j
-        if (.not. tab%ready(n)) then
-            call gauss_legendre(n, xi(1:n), wt(1:n))
-            tab%v(1:n, n) = 0.5_dp*(xi(1:n) + 1.0_dp)
-            tab%w(1:n, n) = 0.5_dp*wt(1:n)
-            tab%ready(n) = .true.
-        end if
-        if (n /= n_log .or. tab%log_ready) return
+        if (tab%ready(n)) return
+        call gauss_legendre(n, xi(1:n), wt(1:n))
+        tab%v(1:n, n) = 0.5_dp*(xi(1:n) + 1.0_dp)
+        tab%w(1:n, n) = 0.5_dp*wt(1:n)
+        tab%ready(n) = .true.
+        if (n > n_log) return
+        ! wl_i = w_i sum_j (2j + 1) P_j(v_i) int_0^1 P_j ln v dv (interpolatory: exact for A of
+        ! degree < n), int_0^1 P_j(2v - 1) ln v dv = -1 (j = 0), (-1)^(j+1)/(j (j + 1))
         mom(0) = -1.0_dp
-        moments: do j = 1, n_log - 1
+        moments: do j = 1, n - 1
             mom(j) = real((-1)**(j + 1), dp)/real(j*(j + 1), dp)
         end do moments
-        nodes: do i = 1, n_log
-            call shifted_legendre(n_log - 1, tab%v(i, n_log), leg)
-            tab%wl(i) = 0.0_dp
-            do j = 0, n_log - 1
-                tab%wl(i) = tab%wl(i) + real(2*j + 1, dp)*leg(j)*mom(j)
+        nodes: do i = 1, n
+            call shifted_legendre(n - 1, tab%v(i, n), leg(0:n - 1))
+            wl = 0.0_dp
+            do j = 0, n - 1
+                wl = wl + real(2*j + 1, dp)*leg(j)*mom(j)
             end do
-            tab%wl(i) = tab%wl(i)*tab%w(i, n_log)
-            tab%wq(i) = tab%wl(i) - tab%w(i, n_log)*log(tab%v(i, n_log))
+            tab%wq(i, n) = wl*tab%w(i, n) - tab%w(i, n)*log(tab%v(i, n))
         end do nodes
-        tab%log_ready = .true.
     end subroutine need_order
 
     !> P_j(2v - 1), j = 0..n, by the three-term recurrence.
@@ -215,6 +216,25 @@ contains
             n = min(n_max, max(4, ceiling(target_digits/log10(rho))))
         end if
     end function points_for_ratio
+
+    !> Points of the product-log rule of a log piece [0, len] whose split (P, Q) is analytic
+    !! within u0 >= len of the singular point (log_length): the rule is interpolatory in P,
+    !! error about rho^-n with rho the Bernstein ellipse of [0, len] through u = -u0. The
+    !! rings' nearest singularity is at 2 u0 (a larger rho); the strip's at i u0, where rho is
+    !! up to a fifth smaller for the pieces that get fewer than n_log points (u0/len > 1.2),
+    !! within the margin of log_digits. n_log points for a piece of the whole length u0 (the
+    !! rule of before), fewer for the short pieces of small elements away from the axis.
+    !! log_digits and the floor n_log_min cover the growth of P's coefficients with the pole
+    !! order of the across integrals (module galerkin_assembly) and were set by comparing T
+    !! with the n_log rule everywhere (output/bench/assembly_before_after.md, sixth step: at
+    !! most 4.3e-16 of the largest entry, plate and beam).
+    pure integer function log_points(ratio) result(n)
+        real(dp), intent(in) :: ratio          !! u0 / len >= 1
+        real(dp) :: c, rho
+        c = 1.0_dp + 2.0_dp*ratio
+        rho = c + sqrt(c*c - 1.0_dp)
+        n = min(n_log, max(n_log_min, ceiling(log_digits/log10(rho))))
+    end function log_points
 
     !> Measure of the field integral W(x) (split_kernel_t%measure).
     pure real(dp) function split_field_weight(self, x)
@@ -310,7 +330,7 @@ contains
                 return
             end if
             hi = min(u0, d_end)
-            call add_log_piece(tab, x0, dir, hi, line)
+            call add_log_piece(tab, x0, dir, hi, u0, line)
             lo = hi
         end if
         geometric: do while (lo < d_end)
@@ -323,15 +343,17 @@ contains
     end subroutine add_ray
 
     !> Product-log piece u in [0, len]:
-    !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i (tab%wq).
-    pure subroutine add_log_piece(tab, x0, dir, len, line)
+    !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i (tab%wq), n
+    !! points from the distance u0 over which the split is analytic (log_points).
+    pure subroutine add_log_piece(tab, x0, dir, len, u0, line)
         type(gauss_tables_t), intent(inout) :: tab
-        real(dp), intent(in) :: x0, dir, len
+        real(dp), intent(in) :: x0, dir, len, u0
         type(line_rule_t), intent(inout) :: line
-        integer :: i
-        call need_order(tab, n_log)
-        nodes: do i = 1, n_log
-            call push_line(line, x0, dir*len*tab%v(i, n_log), len*tab%w(i, n_log), len*tab%wq(i))
+        integer :: i, n
+        n = log_points(u0/len)
+        call need_order(tab, n)
+        nodes: do i = 1, n
+            call push_line(line, x0, dir*len*tab%v(i, n), len*tab%w(i, n), len*tab%wq(i, n))
         end do nodes
     end subroutine add_log_piece
 
