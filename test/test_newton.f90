@@ -414,6 +414,7 @@ contains
         call check_close(err, maxval(abs(nd_all(m, tab, 'Sigma_x^h'))), 1.386299_dp, &
                          1.0e-6_dp, 0.0_dp, 'fig07_ref case 5: max |Sigma_x|')
     end subroutine test_fig07_case5
+
     !> input/paper/fig07_s2.dat case 3 (beam, rho 0.0025, S2 tractions, N_e 20): the full
     !! Newton steps cycle near the lifted end, three points at sigma_z ~ 0 flipping between
     !! tension and slip together; the plain iteration stalled and the continuation restarted

@@ -204,6 +204,7 @@ contains
         rhs = 0.0_dp
         rhs(1:d%nv) = sys%q
         rhs(d%fixed) = 0.0_dp
+        factorised = .true.
         if (ls%sc%ready) then
             call schur_step(sys, ls, st, settled, rhs, sol%z, sol, factorised, err)
         else
@@ -212,7 +213,7 @@ contains
         end if
         if (allocated(err)) return
         sol%n_solves = sol%n_solves + 1
-        sol%n_factorisations = sol%n_factorisations + 1
+        if (factorised) sol%n_factorisations = sol%n_factorisations + 1
     end subroutine solve_for_sets
 
     !> Stages from eps_bar = max(10^3 eps_bar, 1e-3) down to the deck's (stage_law) from
@@ -299,7 +300,7 @@ contains
         integer, allocatable :: code(:), new_code(:)
         real(dp) :: t, incr, phi_exact, equilibrium
         integer :: iter
-        logical :: exact
+        logical :: exact, flipped
         phi_exact = huge(1.0_dp)
         call start_state(d, sys, law, sol, s)
         code = set_pattern(law, point_tractions(sol%pts, sol%z))
@@ -311,7 +312,7 @@ contains
             if (allocated(err)) return
             if (s%relaxed == 0) s%dz_best = dz
             z_old = sol%z
-            call take_step(d, sys, ls, law, sol, s, dz, t, err)
+            call take_step(d, sys, ls, law, sol, s, dz, t, flipped, err)
             if (allocated(err)) return
             incr = relative_change(d, sol%z, z_old)
             new_code = set_pattern(law, point_tractions(sol%pts, sol%z))
@@ -320,15 +321,18 @@ contains
                 call log_step(sol, stage, iter, law, new_code, code, incr, -1.0_dp, t)
                 exit iterations
             end if
-            call log_step(sol, stage, iter, law, new_code, code, incr, s%phi, t)
-            exact = t == 1.0_dp .and. s%relaxed == 0 .and. &
+            call log_step(sol, stage, iter, law, new_code, code, incr, s%phi, t, flipped)
+            ! a single-flip step solved another pattern than code's: not exact by its sets
+            exact = t == 1.0_dp .and. s%relaxed == 0 .and. .not. flipped .and. &
                     (all(new_code == code) .or. incr <= round_off)
-            ! an exact step solves F = 0 up to the accuracy of the solve: a stiff structure
-            ! may need further steps (iterative refinement with the accurate residual)
+            ! an exact step solves F = 0 up to the accuracy of the solve: with the merit at
+            ! round-off it is the answer (4.2a of a stiff structure is refined afterwards in
+            ! extended precision: refine_equilibrium); otherwise (an inaccurate solve) further
+            ! steps, while 4.2a's residual is above refine_tol and halves
             equilibrium = maxval(abs(s%res(1:d%nv)))/max(maxval(abs(sys%q)), tiny(1.0_dp))
+            converged = s%phi <= round_off .or. (exact .and. (equilibrium <= refine_tol .or. &
+                                                              equilibrium > 0.5_dp*phi_exact))
             exact = exact .or. s%phi <= round_off
-            converged = exact .and. (equilibrium <= refine_tol .or. &
-                                     equilibrium > 0.5_dp*phi_exact)
             if (converged .and. equilibrium > phi_exact) then
                 ! the refinement has reached round-off and made it worse: keep the better
                 ! exact step (the state is recomputed from z by the caller)
@@ -465,7 +469,7 @@ contains
     !! search along the step (half the step if that finds no descent) and the single-flip
     !! step (single_flip_step). When the watchdog has run out: the exact line search from the
     !! best point along its direction. t = 0: no descent there.
-    subroutine take_step(d, sys, ls, law, sol, s, dz, t, err)
+    subroutine take_step(d, sys, ls, law, sol, s, dz, t, flipped, err)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(step_solver_t), intent(inout) :: ls
@@ -474,13 +478,15 @@ contains
         type(newton_state_t), intent(inout) :: s
         real(dp), intent(in) :: dz(:)
         real(dp), intent(out) :: t
+        logical, intent(out) :: flipped    !! the single-flip step was taken
         type(error_t), allocatable, intent(out) :: err
         integer, allocatable :: code(:)
         real(dp), allocatable :: z_flip(:), res_flip(:)
         real(dp) :: phi_flip
-        logical :: descent, cycled, searched
+        logical :: descent, cycled, searched, evaluated
         integer :: k
         t = 1.0_dp
+        flipped = .false.
         call complete_residual(d, sys, law, sol%pts, sol%z + dz, s%res)
         s%phi = merit(d, sys, law, sol%pts, s, sol%z + dz, s%res)
         code = set_pattern(law, point_tractions(sol%pts, sol%z + dz))
@@ -490,13 +496,13 @@ contains
             cycled = cycled .or. all(s%seen(:, k) == code)
         end do
         searched = .false.
+        evaluated = .false.     ! s%res, s%phi already at the new sol%z
         if (all(code == s%seen(:, modulo(s%n_seen - 1, size(s%seen, 2)) + 1))) then
             ! the full step keeps the sets its Jacobian was built with: it solves F = 0
             sol%z = sol%z + dz
             s%relaxed = 0
         else if (cycled) then
-            call single_flip_step(d, sys, ls, law, sol, dz, z_flip, err)
-            if (allocated(err)) return
+            call single_flip_step(d, sys, ls, law, sol, dz, z_flip)
             call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t)
             if (t <= 0.0_dp) t = 0.5_dp
             sol%z = sol%z + t*dz
@@ -507,11 +513,13 @@ contains
                 phi_flip = merit(d, sys, law, sol%pts, s, z_flip, res_flip)
                 call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
                 s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
+                evaluated = .true.
                 if (phi_flip < s%phi) then
                     sol%z = z_flip
                     s%res = res_flip
                     s%phi = phi_flip
                     t = 1.0_dp
+                    flipped = .true.
                 end if
             end if
         else if (descent .or. s%relaxed < watchdog) then
@@ -522,7 +530,7 @@ contains
             sol%z = s%z_best + t*s%dz_best
             searched = .true.
         end if
-        if (t < 1.0_dp .or. searched) then
+        if ((t < 1.0_dp .or. searched) .and. .not. evaluated) then
             call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
             s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
         end if
@@ -542,10 +550,11 @@ contains
     !> Murty's single-pivot fallback for block pivoting that cycles (a point at a kink flipping
     !! back and forth with its neighbours, each full step changing several sets at once, e.g.
     !! paper case fig07_s2#3 near the beam's lifted end): the solution for the set pattern of
-    !! the ray's first piece past its first kink, the current pattern with only the first
-    !! point to cross changed (F is linear on a pattern: one linear solve). Not allocated
-    !! when the ray has no kink.
-    subroutine single_flip_step(d, sys, ls, law, sol, dz, z_flip, err)
+    !! the ray's first piece past its first kink, the current pattern with only the points
+    !! that cross first changed (F is linear on a pattern: one linear solve). Not allocated
+    !! when the ray has no kink or the solve fails (a fallback, not a step the case needs:
+    !! the factorisation is then dropped, the next step factorises afresh).
+    subroutine single_flip_step(d, sys, ls, law, sol, dz, z_flip)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(step_solver_t), intent(inout) :: ls
@@ -553,18 +562,30 @@ contains
         type(solution_t), intent(inout) :: sol
         real(dp), intent(in) :: dz(:)
         real(dp), allocatable, intent(out) :: z_flip(:)
-        type(error_t), allocatable, intent(out) :: err
         real(dp), allocatable :: knots(:), z_held(:)
         type(set_terms_t) :: st
+        type(error_t), allocatable :: err
+        type(schur_factor_t) :: fresh
         logical, allocatable :: settled(:)
+        integer :: k
         knots = ray_kinks(law, point_tractions(sol%pts, sol%z), point_tractions(sol%pts, dz))
         if (size(knots) <= 2) return
+        ! points that cross together (a symmetric structure) share a kink: the piece past
+        ! it ends at the next distinct one
+        k = 3
+        do while (knots(k) <= knots(2) .and. k < size(knots))
+            k = k + 1
+        end do
         call set_terms(sys, law, sol%pts, &
-                       point_tractions(sol%pts, sol%z + 0.5_dp*(knots(2) + knots(3))*dz), st)
+                       point_tractions(sol%pts, sol%z + 0.5_dp*(knots(2) + knots(k))*dz), st)
         allocate (settled(d%n), source=.false.)
         z_held = sol%z
         call solve_for_sets(d, sys, ls, st, settled, sol, err)
-        call move_alloc(sol%z, z_flip)
+        if (allocated(err)) then
+            ls%fac = fresh
+        else
+            call move_alloc(sol%z, z_flip)
+        end if
         sol%z = z_held
     end subroutine single_flip_step
 
@@ -698,13 +719,15 @@ contains
     end subroutine segment_minimum
 
     !> One line of the log for a Newton step (residual < 0: the step was rejected).
-    subroutine log_step(sol, stage, iter, law, new_code, code, incr, residual, t)
+    subroutine log_step(sol, stage, iter, law, new_code, code, incr, residual, t, flipped)
         type(solution_t), intent(inout) :: sol
         integer, intent(in) :: stage, iter
         type(law_t), intent(in) :: law
         integer, intent(in) :: new_code(:), code(:)
         real(dp), intent(in) :: incr, residual, t
+        logical, intent(in), optional :: flipped   !! a single-flip step (take_step)
         type(iteration_record_t) :: rec
+        logical :: flip
         rec%outer = stage
         rec%inner = iter
         rec%n_tension = count(modulo(new_code, 2) == 1)
@@ -712,8 +735,12 @@ contains
         rec%n_changed = count(new_code /= code)
         rec%increment = incr
         rec%residual = residual
+        flip = .false.
+        if (present(flipped)) flip = flipped
         if (residual < 0.0_dp) then
             write (rec%note, '(a,es8.1)') 'stalled: no descent, eps_bar ', law%eps
+        else if (flip) then
+            rec%note = 'single-flip step (a cycle of sets)'
         else if (t < 1.0_dp) then
             write (rec%note, '(a,es10.3)') 'damped step x', t
         else if (stage > 1) then
