@@ -27,10 +27,10 @@
 !!   is retried from the last converged one with half the decrement; a failed first stage
 !!   from two decades more regularisation; the case ends with status 2 when the decrement falls
 !!   below 1/8 decade or the first stage fails at eps_bar = 0.5.
-!! A stage has converged when a full step leaves the sets it was computed with unchanged (F is
-!! then linear between the iterates and the step solves F = 0) or the merit is at round-off,
-!! and the residual of 4.2a is below 1e-12 of the load or no longer halves (further exact
-!! steps refine the solution of a stiff structure). The converged solution is then held in
+!! A stage has converged when the merit is at round-off, or when a full step leaves the sets
+!! it was computed with unchanged (F is then linear between the iterates and the step solves
+!! F = 0 up to the accuracy of the solve) and the residual of 4.2a is below 1e-12 of the load
+!! or no longer halves (further exact steps after an inaccurate solve). The converged solution is then held in
 !! double-double and refined with 4.2a in extended precision (refine_equilibrium: thin,
 !! stiff structures on fine meshes, whose v' in double cannot meet 4.2a to 1e-8).
 module newton_method
