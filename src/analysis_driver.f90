@@ -113,11 +113,13 @@ contains
             call announce_size(err_unit, deck%stem, cases(1))
             if (time_needed(case_unknowns(cases(1))) >= 2.0_dp) big_case_unit = err_unit
         end if
-        ! a sweep's cases always use single-threaded BLAS, however many run at once: the
-        ! summation order, and so every digit, is then the same in serial, parallel and
-        ! sharded runs
+        ! every case uses single-threaded BLAS, a single case too: the summation order, and so
+        ! every digit, is then the same in serial, parallel and sharded runs and on any number
+        ! of cores (a single plate case printed other last digits on two BLAS threads); on two
+        ! cores OpenBLAS's threads saved 4 to 10 % at N_e = 1000 only, and nothing measurable
+        ! below (output/bench/blas_threads.md)
         blas_before = blas_thread_count()
-        if (n > 1) call set_blas_threads(1)
+        call set_blas_threads(1)
         ! a sweep's cases on one mesh share T (flexibility_cache); one case holds no extra copy
         call enable_flexibility_cache(count(selected) > 1)
         call system_clock(clock_start)
@@ -135,7 +137,7 @@ contains
         end do cases_loop
         !$omp end parallel do
         call enable_flexibility_cache(.false.)
-        if (n > 1) call set_blas_threads(blas_before)
+        call set_blas_threads(blas_before)
         do i = 1, n
             if (selected(i)) call report_case(log_unit, err_unit, deck%path, out_dir, results(i), &
                                               status)

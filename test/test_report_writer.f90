@@ -9,6 +9,7 @@ module test_report_writer
     use deck_reader, only: deck_t, parse_deck
     use analysis_driver, only: run_analysis, run_options_t
     use figure_templates, only: panel_template, sweep_template
+    use blas_threads, only: set_blas_threads, blas_thread_count
     implicit none
     private
     public :: collect_report_writer
@@ -25,7 +26,8 @@ contains
                  new_unittest('sweep_summary', test_sweep), &
                  new_unittest('sweep_first_case_fails', test_sweep_first_fails), &
                  new_unittest('embedded_templates_match', test_templates), &
-                 new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep)]
+                 new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep), &
+                 new_unittest('single_case_independent_of_blas_threads', test_blas_threads)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -262,6 +264,40 @@ contains
             'cmp -s $f build/test_sweep_sh/$b || exit 1; done', exitstat=exit_status)
         call check(err, exit_status == 0, 'parallel or sharded sweep differs from the serial one')
     end subroutine test_parallel_sweep
+
+    !> A single case gives the same files, byte for byte, whatever number of threads OpenBLAS
+    !! was given before the run: the driver runs every case's BLAS on one thread. Before it
+    !! did, a plate on N_e = 100 differed in the last printed digit of 39 data rows between one
+    !! and two BLAS threads (the threaded LDL^T sums in another order). On a one-core machine
+    !! OpenBLAS never threads and the test cannot tell; CI has two cores.
+    subroutine test_blas_threads(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: status, k, exit_status, blas_before
+        character(len=*), parameter :: runs(2) = ['build/test_blas_1', 'build/test_blas_2']
+        character(len=80), allocatable :: lines(:)
+        call execute_command_line('rm -rf build/test_blas_1 build/test_blas_2')
+        lines = plate_deck(' ', [character(len=80) ::])
+        lines(6) = card('MESH', ['100'])
+        call parse_deck('bt.dat', lines, deck, err)
+        if (allocated(err)) return
+        deck%stem = 'bt'
+        opt%figures = .false.
+        blas_before = blas_thread_count()
+        do k = 1, 2
+            call set_blas_threads(merge(1, max(2, blas_before), k == 1))
+            call run_analysis(deck, runs(k), output_unit, error_unit, status, opt)
+            call check(err, status == EXIT_OK, 'plate case on N_e = 100 did not solve')
+            if (allocated(err)) exit
+        end do
+        call set_blas_threads(blas_before)
+        if (allocated(err)) return
+        call execute_command_line('cmp -s build/test_blas_1/bt.dat build/test_blas_2/bt.dat '// &
+                                  '&& cmp -s build/test_blas_1/bt.json build/test_blas_2/bt.json', &
+                                  exitstat=exit_status)
+        call check(err, exit_status == 0, 'the case''s files depend on the BLAS thread count')
+    end subroutine test_blas_threads
 
     !> The gnuplot templates embedded in the program (src/report/figure_templates.f90) are the
     !! files scripts/gnuplot/*.gp line for line: after editing a template, run

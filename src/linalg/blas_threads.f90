@@ -1,7 +1,7 @@
-!> The number of threads OpenBLAS uses inside one LAPACK call. A sweep that solves its cases
-!! in parallel (one case per OpenMP thread) keeps each case's BLAS on one thread, so the cores
-!! are not oversubscribed; a single large case uses them all. OpenBLAS is the BLAS/LAPACK that
-!! fpm.toml links.
+!> The number of threads OpenBLAS uses inside one LAPACK call. The driver runs every case's
+!! BLAS on one thread (analysis_driver::run_analysis): a sweep's cases in parallel do not
+!! oversubscribe the cores, and every digit is the same however many cores run
+!! (output/bench/blas_threads.md). OpenBLAS is the BLAS/LAPACK that fpm.toml links.
 module blas_threads
     use iso_c_binding, only: c_int
     implicit none
