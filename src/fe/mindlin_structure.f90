@@ -79,25 +79,29 @@ contains
         type(discretization_t), intent(in) :: d
         type(triplets_t) :: k
         integer :: e, n_full, n_shear
+        real(dp), allocatable :: xi_full(:), w_full(:), xi_shear(:), w_shear(:)
         k = new_triplets(d%nv, d%nv, 4*d%msh%ne*(2*max_local)**2)
         n_full = maxval(d%basis(FIELD_U:FIELD_PSI)%degree) + merge(2, 1, sec%plate)
         n_shear = max(d%basis(FIELD_W)%degree, d%basis(FIELD_PSI)%degree)
+        ! the rules once, not once per element (they were 4 % of a small case's time)
+        allocate (xi_full(n_full), w_full(n_full), xi_shear(n_shear), w_shear(n_shear))
+        call gauss_legendre(n_full, xi_full, w_full)
+        call gauss_legendre(n_shear, xi_shear, w_shear)
         elements: do e = 1, d%msh%ne
-            call add_membrane_bending(sec, d, e, n_full, k)
-            call add_shear(sec, d, e, n_shear, k)
+            call add_membrane_bending(sec, d, e, xi_full, w_full, k)
+            call add_shear(sec, d, e, xi_shear, w_shear, k)
         end do elements
     end function stiffness_entries
 
-    !> Membrane and bending terms of element e (exact Gauss rule, n points).
-    pure subroutine add_membrane_bending(sec, d, e, n, k)
+    !> Membrane and bending terms of element e (the exact Gauss rule xi, w on [-1, 1]).
+    pure subroutine add_membrane_bending(sec, d, e, xi, w, k)
         type(section_t), intent(in) :: sec
         type(discretization_t), intent(in) :: d
-        integer, intent(in) :: e, n
+        integer, intent(in) :: e
+        real(dp), intent(in) :: xi(:), w(:)
         type(triplets_t), intent(inout) :: k
-        real(dp) :: xi(n), w(n)
         integer :: q
-        call gauss_legendre(n, xi, w)
-        gauss_points: do q = 1, n
+        gauss_points: do q = 1, size(xi)
             call add_strain_energy(sec, d%basis(FIELD_U), d%offset(FIELD_U), e, xi(q), w(q), &
                                    sec%axial, k)
             call add_strain_energy(sec, d%basis(FIELD_PSI), d%offset(FIELD_PSI), e, xi(q), &
@@ -134,17 +138,17 @@ contains
         end do
     end subroutine add_strain_energy
 
-    !> Shear term  shear * (w' - psi)(dw' - dpsi)  with the reduced rule of n points.
-    pure subroutine add_shear(sec, d, e, n, k)
+    !> Shear term  shear * (w' - psi)(dw' - dpsi)  with the reduced Gauss rule xi, w.
+    pure subroutine add_shear(sec, d, e, xi, w, k)
         type(section_t), intent(in) :: sec
         type(discretization_t), intent(in) :: d
-        integer, intent(in) :: e, n
+        integer, intent(in) :: e
+        real(dp), intent(in) :: xi(:), w(:)
         type(triplets_t), intent(inout) :: k
-        real(dp) :: xi(n), w(n), b_vec(2*max_local), x, wt
+        real(dp) :: b_vec(2*max_local), x, wt
         real(dp) :: val(max_local), der(max_local)
         integer :: idx_w(max_local), idx_p(max_local), dofs(2*max_local), q, i, j, nw, np
-        call gauss_legendre(n, xi, w)
-        gauss_points: do q = 1, n
+        gauss_points: do q = 1, size(xi)
             call eval_basis(d%basis(FIELD_W), e, xi(q), idx_w, val, der, x)
             nw = d%basis(FIELD_W)%n_local
             b_vec(1:nw) = der(1:nw)
@@ -177,28 +181,30 @@ contains
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(triplets_t) :: mm
+        integer, parameter :: n = 4    ! exact for degree 2 x degree 2 x r
+        real(dp) :: xi(n), w(n)
         integer :: e
         mm = new_triplets(d%nr, d%nv, 12*d%msh%ne*max_local**2)
+        call gauss_legendre(n, xi, w)
         elements: do e = 1, d%msh%ne
-            call add_mass_block(m, d, e, FIELD_SX, FIELD_U, 1.0_dp, mm)
-            call add_mass_block(m, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*m%h, mm)
-            call add_mass_block(m, d, e, FIELD_SZ, FIELD_W, 1.0_dp, mm)
+            call add_mass_block(m, d, e, FIELD_SX, FIELD_U, 1.0_dp, xi, w, mm)
+            call add_mass_block(m, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*m%h, xi, w, mm)
+            call add_mass_block(m, d, e, FIELD_SZ, FIELD_W, 1.0_dp, xi, w, mm)
         end do elements
     end function coupling_entries
 
     !> factor * int g_a f_b (weight 1 or 2 pi r) on element e into the (row_field, col_field) block.
-    pure subroutine add_mass_block(m, d, e, row_field, col_field, factor, mm)
+    pure subroutine add_mass_block(m, d, e, row_field, col_field, factor, xi, w, mm)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         integer, intent(in) :: e, row_field, col_field
         real(dp), intent(in) :: factor
+        real(dp), intent(in) :: xi(:), w(:)     !! Gauss rule on [-1, 1] (coupling_entries)
         type(triplets_t), intent(inout) :: mm
-        integer, parameter :: n = 4    ! exact for degree 2 x degree 2 x r
-        real(dp) :: xi(n), w(n), vr(max_local), vc(max_local), dr(max_local), x, wt
+        real(dp) :: vr(max_local), vc(max_local), dr(max_local), x, wt
         integer :: ir(max_local), ic(max_local), q, i, j, row0
-        call gauss_legendre(n, xi, w)
         row0 = d%offset(row_field) - d%nv
-        do q = 1, n
+        do q = 1, size(xi)
             call eval_basis(d%basis(row_field), e, xi(q), ir, vr, dr, x)
             call eval_basis(d%basis(col_field), e, xi(q), ic, vc, dr, x)
             wt = factor*w(q)*0.5_dp*(d%msh%x(e) - d%msh%x(e - 1))

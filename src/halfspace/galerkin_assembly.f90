@@ -71,7 +71,8 @@ module galerkin_assembly
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
     use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
-                                   new_gauss_tables, need_order, build_pair_rule, build_line_rule, &
+                                   shared_gauss_tables, need_order, build_pair_rule, &
+                                   build_line_rule, &
                                    check_bases, near_ratio, n_max
     implicit none
     private
@@ -218,7 +219,7 @@ contains
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
-        call copy_gauss_tables(work%tab)
+        call shared_gauss_tables(work%tab)
         call new_work(kernel, bx, bz, work, far_digits)
         call translates(kernel, bx, work%poly, shift_ok)
         ! translated pairs are copied from the previous column: one thread does the columns in
@@ -294,24 +295,7 @@ contains
         if (present(n_kernel)) n_kernel = sum(works%n_kernel)
     end subroutine assemble_split_kernel
 
-    !> All GL rules and the product-log weights, tabulated once per process (the same numbers
-    !! at every assembly; computing the rules took 2 % of an assembly at N_e = 50). The
-    !! assembly may run inside a parallel sweep: the first one fills the tables in a critical
-    !! section.
-    subroutine copy_gauss_tables(tab)
-        type(gauss_tables_t), intent(out) :: tab
-        type(gauss_tables_t), save :: rules
-        logical, save :: ready = .false.
-        !$omp critical (galerkin_gauss_rules)
-        if (.not. ready) then
-            call new_gauss_tables(rules)
-            ready = .true.
-        end if
-        tab = rules
-        !$omp end critical (galerkin_gauss_rules)
-    end subroutine copy_gauss_tables
-
-    !> Work of one thread (its GL tables already copied: copy_gauss_tables): the numbering and
+    !> Work of one thread (its GL tables already copied: shared_gauss_tables): the numbering and
     !! polynomials of every element, the far-rule limits and the element moments.
     pure subroutine new_work(kernel, bx, bz, work, far_digits)
         class(split_kernel_t), intent(in) :: kernel

@@ -43,7 +43,7 @@ module singular_quadrature
     private
 
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
-    public :: new_gauss_tables, need_order, build_pair_rule, build_line_rule
+    public :: new_gauss_tables, shared_gauss_tables, need_order, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
     public :: check_bases, near_ratio, n_max, points_for_ratio
@@ -112,7 +112,7 @@ module singular_quadrature
         real(dp) :: wq(n_log, n_log) = 0.0_dp  !! wq(i, n) = wl_i - w_i ln v_i (add_log_piece),
                                                !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n));
                                                !! tabulated: a log piece costs no logarithms
-        logical :: ready(n_max) = .false.      !! rule n tabulated (lazy tables fill on demand)
+        logical :: ready(n_max) = .false.      !! rule n tabulated (need_order)
     end type gauss_tables_t
 
     !> Points of a double integral over (x, xi) with weights for F (w) and for P (wc).
@@ -146,19 +146,32 @@ module singular_quadrature
 
 contains
 
-    !> Tabulate GL rules on [0, 1] and the product-log weights (see module header); with
-    !! lazy = .true. nothing is tabulated yet and each rule is made when first needed.
-    pure subroutine new_gauss_tables(tab, lazy)
+    !> Tabulate GL rules on [0, 1] and the product-log weights (see module header); the
+    !! program takes its copies from shared_gauss_tables.
+    pure subroutine new_gauss_tables(tab)
         type(gauss_tables_t), intent(out) :: tab
-        logical, intent(in), optional :: lazy
         integer :: n
-        if (present(lazy)) then
-            if (lazy) return
-        end if
         rules: do n = 1, n_max
             call need_order(tab, n)
         end do rules
     end subroutine new_gauss_tables
+
+    !> A copy of all GL rules and product-log weights, tabulated once per process (the same
+    !! numbers at every assembly and tabulation; computing the rules took 2 % of an assembly
+    !! at N_e = 50 and, rule by rule on demand, 2 % of a 1000-case sweep's stations). Callers
+    !! may run inside a parallel sweep: the first one fills the tables in a critical section.
+    subroutine shared_gauss_tables(tab)
+        type(gauss_tables_t), intent(out) :: tab
+        type(gauss_tables_t), save :: rules
+        logical, save :: ready = .false.
+        !$omp critical (shared_gauss_rules)
+        if (.not. ready) then
+            call new_gauss_tables(rules)
+            ready = .true.
+        end if
+        tab = rules
+        !$omp end critical (shared_gauss_rules)
+    end subroutine shared_gauss_tables
 
     !> Make sure the n-point rule (and, for n <= n_log, its product-log weights) is tabulated.
     pure subroutine need_order(tab, n)

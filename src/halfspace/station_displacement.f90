@@ -103,7 +103,7 @@ contains
         call check_displacement_arguments(bx, bz, size(rx), size(rz), size(x_eval), size(u), &
                                           size(w), err)
         if (allocated(err)) return
-        call new_gauss_tables(tab, lazy=.true.)
+        call shared_gauss_tables(tab)
         call new_chebyshev(cheb)
         sig = traction_polynomials(bx, bz, rx, rz)
         call build_tree(bx, tree)

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Before/after timing of two fricon executables on the same decks, run alternately on one
+# thread each (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1, -j 1, --no-figures): for each deck the
+# least wall time and the least processor time (user + system) of REPS runs of each build, and
+# whether the two builds wrote the same files, byte for byte. Prints a Markdown table. The
+# timer (/usr/bin/time) resolves 10 ms: give decks of about half a second or more (a sweep).
+#
+#   bash scripts/bench_ab.sh BEFORE_BIN AFTER_BIN REPS DECK...
+#
+# BEFORE_BIN, AFTER_BIN: e.g. release builds of two commits copied out of build/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+before=$(readlink -f "$1")
+after=$(readlink -f "$2")
+reps=$3
+shift 3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg)."
+echo "Command: \`bash scripts/bench_ab.sh BEFORE AFTER $reps $*\`: the least of $reps runs of each build, alternately."
+echo
+echo "| deck | before wall s | after wall s | before cpu s | after cpu s | after / before (cpu) | same files |"
+echo "|---|---:|---:|---:|---:|---:|---|"
+for deck in "$@"; do
+    : >"$work/times"
+    for i in $(seq "$reps"); do
+        for tag in before after; do
+            bin=$before
+            [ "$tag" = after ] && bin=$after
+            rm -rf "$work/$tag"
+            OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/time -f "$tag %e %U %S" \
+                "$bin" -q --no-figures -j 1 -o "$work/$tag" "$deck" >/dev/null 2>>"$work/times" || true
+        done
+    done
+    same=no
+    diff -rq "$work/before" "$work/after" >/dev/null 2>&1 && same=yes
+    grep -E '^(before|after) ' "$work/times" | awk -v d="$deck" -v same="$same" '
+        { c = $3 + $4
+          if (!($1 in w) || $2 < w[$1]) w[$1] = $2
+          if (!($1 in u) || c < u[$1]) u[$1] = c }
+        END { ratio = "-"
+              if (u["before"] > 0) ratio = sprintf("%.2f", u["after"] / u["before"])
+              printf "| %s | %.2f | %.2f | %.2f | %.2f | %s | %s |\n", d, w["before"], w["after"],
+                     u["before"], u["after"], ratio, same }'
+done
