@@ -9,11 +9,22 @@
 #
 # BEFORE_BIN, AFTER_BIN: e.g. release builds of two commits copied out of build/.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+if [ $# -lt 4 ]; then
+    echo "usage: bash scripts/bench_ab.sh BEFORE_BIN AFTER_BIN REPS DECK..." >&2
+    exit 1
+fi
+# paths as the caller gave them, before changing folder
 before=$(readlink -f "$1")
 after=$(readlink -f "$2")
 reps=$3
 shift 3
+decks=()
+for deck in "$@"; do decks+=("$(readlink -f "$deck")"); done
+for bin in "$before" "$after"; do
+    [ -x "$bin" ] || { echo "bench_ab: not an executable: $bin" >&2; exit 1; }
+done
+[ -x /usr/bin/time ] || { echo "bench_ab: /usr/bin/time is missing (Debian package time)" >&2; exit 1; }
+cd "$(dirname "$0")/.."
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg)."
@@ -21,20 +32,25 @@ echo "Command: \`bash scripts/bench_ab.sh BEFORE AFTER $reps $*\`: the least of 
 echo
 echo "| deck | before wall s | after wall s | before cpu s | after cpu s | after / before (cpu) | same files |"
 echo "|---|---:|---:|---:|---:|---:|---|"
-for deck in "$@"; do
+for deck in "${decks[@]}"; do
     : >"$work/times"
-    for i in $(seq "$reps"); do
+    failed=0
+    for _ in $(seq "$reps"); do
         for tag in before after; do
             bin=$before
             [ "$tag" = after ] && bin=$after
-            rm -rf "$work/$tag"
-            OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/time -f "$tag %e %U %S" \
-                "$bin" -q --no-figures -j 1 -o "$work/$tag" "$deck" >/dev/null 2>>"$work/times" || true
+            rm -rf "${work:?}/$tag"
+            # a run that fails (exit status other than 0) is counted and its table row marked
+            if ! OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/time -f "$tag %e %U %S" \
+                "$bin" -q --no-figures -j 1 -o "$work/$tag" "$deck" >/dev/null 2>>"$work/times"; then
+                failed=$((failed + 1))
+            fi
         done
     done
     same=no
     diff -rq "$work/before" "$work/after" >/dev/null 2>&1 && same=yes
-    grep -E '^(before|after) ' "$work/times" | awk -v d="$deck" -v same="$same" '
+    [ "$failed" -gt 0 ] && same="$same; $failed runs FAILED"
+    grep -E '^(before|after) ' "$work/times" | awk -v d="${deck#"$PWD"/}" -v same="$same" '
         { c = $3 + $4
           if (!($1 in w) || $2 < w[$1]) w[$1] = $2
           if (!($1 in u) || c < u[$1]) u[$1] = c }

@@ -10,22 +10,39 @@
 # blas_threads.png (figure), and checks that each case's data file is the same, byte for
 # byte, from AFTER_BIN with the default threads and from BEFORE_BIN on one thread.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+if [ $# -lt 2 ]; then
+    echo "usage: bash scripts/bench_threads.sh BEFORE_BIN AFTER_BIN [REPS]" >&2
+    exit 1
+fi
+# paths as the caller gave them, before changing folder
 before=$(readlink -f "$1")
 after=$(readlink -f "$2")
 reps=${3:-7}
+for bin in "$before" "$after"; do
+    [ -x "$bin" ] || { echo "bench_threads: not an executable: $bin" >&2; exit 1; }
+done
+cd "$(dirname "$0")/.."
 out=output/bench
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
+# the results are written in $work and moved into $out only when every run has succeeded
+md=$work/blas_threads.md
+dat=$work/blas_threads.dat
 
-# wall microseconds of one run; the outputs go to $work/<tag>
+# wall microseconds of one run; the outputs go to $work/<tag>; a failed run stops the script
+# with its messages (the committed results stay as they were)
 run() {
     local tag=$1 bin=$2
     shift 2
     local s e
     s=$(date +%s%N)
-    env "$@" "$bin" -q --no-figures -o "$work/$tag" "$work/deck.dat" >/dev/null 2>&1
+    if ! env -u OMP_NUM_THREADS -u OPENBLAS_NUM_THREADS "$@" "$bin" -q --no-figures \
+        -o "$work/$tag" "$work/deck.dat" >/dev/null 2>"$work/stderr"; then
+        echo "bench_threads: $bin failed on $work/deck.dat:" >&2
+        cat "$work/stderr" >&2
+        exit 1
+    fi
     e=$(date +%s%N)
     echo $(((e - s) / 1000))
 }
@@ -48,9 +65,8 @@ least() { sort -n | head -n 1; }
     echo
     echo "| deck | N_e | before ms | after ms | after / before | before, 1 thread ms | same data file |"
     echo "|---|---:|---:|---:|---:|---:|---|"
-} >"$out/blas_threads.md"
-: >"$out/blas_threads.dat"
-echo "# deck_index N_e before_ms after_ms before_1thread_ms" >>"$out/blas_threads.dat"
+} >"$md"
+echo "# deck_index N_e before_ms after_ms before_1thread_ms" >"$dat"
 
 k=0
 for deck in input/plate_nondim.dat input/beam_nondim.dat; do
@@ -60,9 +76,9 @@ for deck in input/plate_nondim.dat input/beam_nondim.dat; do
         : >"$work/b"
         : >"$work/a"
         : >"$work/s"
-        for i in $(seq "$reps"); do
-            run before "$before" X=1 >>"$work/b"
-            run after "$after" X=1 >>"$work/a"
+        for _ in $(seq "$reps"); do
+            run before "$before" >>"$work/b"
+            run after "$after" >>"$work/a"
             run single "$before" OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 >>"$work/s"
         done
         b=$(least <"$work/b")
@@ -72,13 +88,14 @@ for deck in input/plate_nondim.dat input/beam_nondim.dat; do
         cmp -s "$work/after/deck.dat" "$work/single/deck.dat" && same=yes
         awk -v d="$deck" -v n="$ne" -v b="$b" -v a="$a" -v s="$s" -v same="$same" 'BEGIN {
             printf "| %s | %d | %.1f | %.1f | %.2f | %.1f | %s |\n", d, n, b / 1000, a / 1000,
-                   a / b, s / 1000, same }' >>"$out/blas_threads.md"
+                   a / b, s / 1000, same }' >>"$md"
         echo "$k $ne $(awk -v b="$b" -v a="$a" -v s="$s" 'BEGIN { print b / 1000, a / 1000, s / 1000 }')" \
-            >>"$out/blas_threads.dat"
+            >>"$dat"
     done
 done
-echo >>"$out/blas_threads.md"
-echo "Load average after: $(cut -d' ' -f1-3 /proc/loadavg)." >>"$out/blas_threads.md"
+echo >>"$md"
+echo "Load average after: $(cut -d' ' -f1-3 /proc/loadavg)." >>"$md"
+mv "$md" "$dat" "$out/"
 
 if command -v gnuplot >/dev/null 2>&1; then
     gnuplot <<GP

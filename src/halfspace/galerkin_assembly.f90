@@ -71,8 +71,7 @@ module galerkin_assembly
     use errors, only: error_t, add_context
     use shape_functions, only: basis_t, eval_basis, max_local
     use singular_quadrature, only: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t, &
-                                   shared_gauss_tables, need_order, build_pair_rule, &
-                                   build_line_rule, &
+                                   shared_gauss_tables, build_pair_rule, build_line_rule, &
                                    check_bases, near_ratio, n_max
     implicit none
     private
@@ -280,8 +279,9 @@ contains
         if (use_blocks) then
             ! dgemm on one BLAS thread: OpenBLAS's threaded kernels sum in an order that depends
             ! on the thread count, and T must not depend on it (found by review: T changed with
-            ! OPENBLAS_NUM_THREADS). A sweep already runs each case's BLAS on one thread, so
-            ! the thread count is only touched in a single case, never concurrently.
+            ! OPENBLAS_NUM_THREADS). The program's driver runs every case's BLAS on one thread
+            ! already; this guard is for direct callers (tests, examples), which call it
+            ! outside any parallel region, so the count is never touched concurrently.
             blas_count = blas_thread_count()
             if (blas_count > 1) call set_blas_threads(1)
             call add_blocks(kernel, bx, cheb, tree, works(1), t_mat, err)
@@ -305,7 +305,6 @@ contains
         real(dp) :: q, digits
         integer :: e
         work%n_across = across_points(kernel, bx, bz)
-        call need_order(work%tab, work%n_across)
         call number_elements(bx, bz, work)
         digits = default_far_digits
         if (present(far_digits)) digits = far_digits
@@ -329,7 +328,6 @@ contains
         integer, parameter :: n = 3
         real(dp) :: h, xi, x, b(n_loc)
         integer :: e, i
-        call need_order(work%tab, n)
         allocate (work%moment(n_loc, 2, bx%ne), source=0.0_dp)
         elements: do e = 1, bx%ne
             h = bx%x(e) - bx%x(e - 1)
@@ -563,7 +561,7 @@ contains
     pure subroutine element_nodes(kernel, bx, work, n, e, x, bf, bs)
         class(split_kernel_t), intent(in) :: kernel
         type(basis_t), intent(in) :: bx
-        type(work_t), intent(in) :: work           !! GL tables (rule n ready), polynomials
+        type(work_t), intent(in) :: work           !! GL tables, polynomials
         integer, intent(in) :: n, e
         real(dp), intent(out) :: x(:)              !! x(i), i <= n
         real(dp), intent(out), optional :: bf(:, :)  !! bf(i, r), r <= n_fun(e)
@@ -770,12 +768,10 @@ contains
         real(dp), contiguous, intent(inout) :: loc(:, :, :)    !! loc(r, c, e1)
         type(error_t), allocatable, intent(out) :: err
         integer :: q, n1, k0
-        call need_order(work%tab, n2)
         call element_nodes(kernel, bx, work, n2, e2, work%sx, bs=work%sbs)
         k0 = 0
         field_nodes: do q = first, last
             n1 = work%by_n2(2, q)
-            call need_order(work%tab, n1)
             call element_nodes(kernel, bx, work, n1, work%by_n2(1, q), work%gx(k0 + 1:k0 + n1), &
                                bf=work%gbf(k0 + 1:k0 + n1, :))
             k0 = k0 + n1
@@ -1450,7 +1446,6 @@ contains
         integer :: e, r, q, k
         scale = 2.0_dp/(tree%hi(c) - tree%lo(c))
         mid = 0.5_dp*(tree%lo(c) + tree%hi(c))
-        call need_order(work%tab, np)
         elements: do e = tree%first(c), tree%last(c)
             k = e - tree%first(c) + 1
             call element_nodes(kernel, bx, work, np, e, x, bf, bs)

@@ -43,7 +43,7 @@ module singular_quadrature
     private
 
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
-    public :: new_gauss_tables, shared_gauss_tables, need_order, build_pair_rule, build_line_rule
+    public :: shared_gauss_tables, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
     public :: check_bases, near_ratio, n_max, points_for_ratio
@@ -112,7 +112,6 @@ module singular_quadrature
         real(dp) :: wq(n_log, n_log) = 0.0_dp  !! wq(i, n) = wl_i - w_i ln v_i (add_log_piece),
                                                !! int_0^1 A(v) ln v dv ~= sum wl_i A(v(i, n));
                                                !! tabulated: a log piece costs no logarithms
-        logical :: ready(n_max) = .false.      !! rule n tabulated (need_order)
     end type gauss_tables_t
 
     !> Points of a double integral over (x, xi) with weights for F (w) and for P (wc).
@@ -152,7 +151,7 @@ contains
         type(gauss_tables_t), intent(out) :: tab
         integer :: n
         rules: do n = 1, n_max
-            call need_order(tab, n)
+            call tabulate_order(tab, n)
         end do rules
     end subroutine new_gauss_tables
 
@@ -173,17 +172,15 @@ contains
         !$omp end critical (shared_gauss_rules)
     end subroutine shared_gauss_tables
 
-    !> Make sure the n-point rule (and, for n <= n_log, its product-log weights) is tabulated.
-    pure subroutine need_order(tab, n)
+    !> Tabulate the n-point rule (and, for n <= n_log, its product-log weights).
+    pure subroutine tabulate_order(tab, n)
         type(gauss_tables_t), intent(inout) :: tab
         integer, intent(in) :: n
         real(dp) :: xi(n_max), wt(n_max), leg(0:n_log - 1), mom(0:n_log - 1), wl
         integer :: i, j
-        if (tab%ready(n)) return
         call gauss_legendre(n, xi(1:n), wt(1:n))
         tab%v(1:n, n) = 0.5_dp*(xi(1:n) + 1.0_dp)
         tab%w(1:n, n) = 0.5_dp*wt(1:n)
-        tab%ready(n) = .true.
         if (n > n_log) return
         ! wl_i = w_i sum_j (2j + 1) P_j(v_i) int_0^1 P_j ln v dv (interpolatory: exact for A of
         ! degree < n), int_0^1 P_j(2v - 1) ln v dv = -1 (j = 0), (-1)^(j+1)/(j (j + 1))
@@ -199,7 +196,7 @@ contains
             end do
             tab%wq(i, n) = wl*tab%w(i, n) - tab%w(i, n)*log(tab%v(i, n))
         end do nodes
-    end subroutine need_order
+    end subroutine tabulate_order
 
     !> P_j(2v - 1), j = 0..n, by the three-term recurrence.
     pure subroutine shifted_legendre(n, v, leg)
@@ -295,7 +292,7 @@ contains
     !! each with the points its distance from x0 asks, or from x_pole if that is nearer (a
     !! pole of F outside [a, b]).
     pure subroutine build_line_rule(tab, a, b, x0, u0, line, x_pole)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: a, b          !! interval, a < b
         real(dp), intent(in) :: x0            !! singular point (anywhere)
         real(dp), intent(in) :: u0            !! longest log piece
@@ -318,7 +315,7 @@ contains
     !> Append the rule for s = x0 + dir u, u in [d_start, d_end], singular at u = 0 and, if
     !! given, at u = u_pole (outside the ray).
     pure subroutine add_ray(tab, x0, dir, d_start, d_end, u0, line, u_pole)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: x0, dir, d_start, d_end, u0
         type(line_rule_t), intent(inout) :: line
         real(dp), intent(in), optional :: u_pole
@@ -359,12 +356,11 @@ contains
     !! int_0^len (P ln u + Q) du = sum len w_i F_i + len (wl_i - w_i ln v_i) P_i (tab%wq), n
     !! points from the distance u0 over which the split is analytic (log_points).
     pure subroutine add_log_piece(tab, x0, dir, len, u0, line)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: x0, dir, len, u0
         type(line_rule_t), intent(inout) :: line
         integer :: i, n
         n = log_points(u0/len)
-        call need_order(tab, n)
         nodes: do i = 1, n
             call push_line(line, x0, dir*len*tab%v(i, n), len*tab%w(i, n), len*tab%wq(i, n))
         end do nodes
@@ -372,12 +368,11 @@ contains
 
     !> Plain n-point GL piece u in [lo, hi].
     pure subroutine add_gauss_piece(tab, x0, dir, lo, hi, n, line)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: x0, dir, lo, hi
         integer, intent(in) :: n
         type(line_rule_t), intent(inout) :: line
         integer :: i
-        call need_order(tab, n)
         nodes: do i = 1, n
             call push_line(line, x0, dir*(lo + (hi - lo)*tab%v(i, n)), (hi - lo)*tab%w(i, n), &
                            0.0_dp)
@@ -440,7 +435,7 @@ contains
     !! u0: longest log piece next to the diagonal; ratio_rule: use ratio coordinates (coincident
     !! elements at the origin of a kernel homogeneous of degree 0).
     pure subroutine build_pair_rule(tab, a1, b1, a2, b2, u0, ratio_rule, rule, line)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: a1, b1          !! field element
         real(dp), intent(in) :: a2, b2          !! source element
         real(dp), intent(in) :: u0              !! longest log piece
@@ -461,13 +456,11 @@ contains
     end subroutine build_pair_rule
 
     pure subroutine add_tensor(tab, a1, b1, a2, b2, n1, n2, rule)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: a1, b1, a2, b2
         integer, intent(in) :: n1, n2
         type(point_rule_t), intent(inout) :: rule
         integer :: i, j
-        call need_order(tab, n1)
-        call need_order(tab, n2)
         field: do i = 1, n1
             source: do j = 1, n2
                 call push_point(rule, a1 + (b1 - a1)*tab%v(i, n1), a2 + (b2 - a2)*tab%v(j, n2), &
@@ -479,13 +472,12 @@ contains
     !> Relative coordinates u = x - xi over pieces of u between the kinks of the inner range
     !! x in [max(a1, a2 + u), min(b1, b2 + u)] and the diagonal u = 0.
     pure subroutine add_relative(tab, a1, b1, a2, b2, u0, rule, line)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: a1, b1, a2, b2, u0
         type(point_rule_t), intent(inout) :: rule
         type(line_rule_t), intent(inout) :: line
         real(dp) :: cuts(5), tiny_len, lo, hi, x_lo, x_hi, len, x
         integer :: n_cut, i, k, j
-        call need_order(tab, n_inner)
         tiny_len = 1.0e-14_dp*((b1 - a1) + (b2 - a2))
         cuts = [a1 - b2, a1 - a2, b1 - b2, 0.0_dp, b1 - a2]
         call sort_ascending(cuts)
@@ -517,13 +509,12 @@ contains
     !> Ratio coordinates on [0, h]^2: xi = x t (xi < x) and x = xi t (x < xi), t in [0, 1],
     !! ln|x - xi| = ln(outer) + ln(1 - t); product-log rule next to t = 1.
     pure subroutine add_ratio(tab, h, rule, line)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         real(dp), intent(in) :: h
         type(point_rule_t), intent(inout) :: rule
         type(line_rule_t), intent(inout) :: line
         real(dp) :: outer, w_outer
         integer :: i, k
-        call need_order(tab, n_inner)
         call build_line_rule(tab, 0.0_dp, 1.0_dp, 1.0_dp, 0.5_dp, line)
         outer_nodes: do i = 1, n_inner
             outer = h*tab%v(i, n_inner)

@@ -192,7 +192,7 @@ contains
     !! T_q sigma; another child's through its Lagrange weights of order n_cheb, T_q of the parent
     !! being a polynomial of degree < n_cheb on the child: int T_q sigma = sum_j T_q(t_j) W_j.
     pure subroutine fill_moments(tab, basis, sig, cheb, tree)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         type(basis_t), intent(in) :: basis
         type(traction_poly_t), intent(in) :: sig
         type(chebyshev_t), intent(in) :: cheb
@@ -242,7 +242,7 @@ contains
     !! xi = scale (s - mid): Gauss rule of n_cheb/2 + 1 points per element, exact for the
     !! degree n_cheb + 1 of T_q sigma.
     pure subroutine add_element_moments(tab, basis, sig, first, last, mid, scale, mux, muz)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         type(basis_t), intent(in) :: basis
         type(traction_poly_t), intent(in) :: sig
         integer, intent(in) :: first, last
@@ -251,7 +251,6 @@ contains
         integer, parameter :: n = n_cheb/2 + 1
         real(dp) :: t_q(n, n_cheb), h, sx(n), sz(n)
         integer :: e
-        call need_order(tab, n)
         elements: do e = first, last
             h = basis%x(e) - basis%x(e - 1)
             call tractions_at(sig, e, tab%v(1:n, n), sx, sz)
@@ -302,7 +301,7 @@ contains
     pure subroutine gather_points(kernel, tab, basis, sig, cheb, tree, x0, stack, line, plain, &
                                   logs)
         class(split_kernel_t), intent(in) :: kernel
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         type(basis_t), intent(in) :: basis
         type(traction_poly_t), intent(in) :: sig
         type(chebyshev_t), intent(in) :: cheb
@@ -369,14 +368,13 @@ contains
 
     !> The n-point GL rule on element e, sigma times its weights, to plain.
     pure subroutine add_gauss_points(tab, basis, sig, e, n, plain)
-        type(gauss_tables_t), intent(inout) :: tab
+        type(gauss_tables_t), intent(in) :: tab
         type(basis_t), intent(in) :: basis
         type(traction_poly_t), intent(in) :: sig
         integer, intent(in) :: e, n
         type(point_list_t), intent(inout) :: plain
         real(dp) :: h
         integer :: n0, n1
-        call need_order(tab, n)
         call make_room(plain, n, n0, n1)
         h = basis%x(e) - basis%x(e - 1)
         plain%s(n0:n1) = basis%x(e - 1) + h*tab%v(1:n, n)
