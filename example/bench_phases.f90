@@ -490,7 +490,56 @@ contains
         do ip = 1, nm
             call put(u, count_row(r, ip))
         end do
+        call write_targets(u, r)
     end subroutine write_case_tables
+
+    !> Issue 7's targets at each mesh, as read in doc/CHOICES.md ("Issue 7's performance
+    !! targets"): T under 10 % of the case (item 3); the solve without T at most 3 times one
+    !! linear solve of the final system from scratch (Schur set-up + factorisation; item 2);
+    !! the whole solve_contact under 5 ms at N_e = 20 and under 2 s at N_e = 1000 (item 2).
+    subroutine write_targets(u, r)
+        integer, intent(in) :: u
+        type(case_times_t), intent(in) :: r
+        character(len=:), allocatable :: share_row, ratio_row, time_row
+        character(len=16) :: buf
+        real(dp) :: share, ratio
+        integer :: i
+        share_row = '| T share of the case < 10 % (item 3) |'
+        ratio_row = '| solve / one linear solve <= 3 (item 2) |'
+        time_row = '| whole solve_contact < 5 ms (N_e 20), < 2 s (N_e 1000) (item 2) |'
+        do i = 1, size(r%ne)
+            share = r%t(P_T, i)/sum(r%t(:, i))
+            write (buf, '(f5.1," %")') 100.0_dp*share
+            share_row = share_row//' '//trim(adjustl(buf))//' '//verdict(share < 0.1_dp)//' |'
+            ratio = sum(r%t(P_KM:P_CHECKS, i))/(r%info(I_SCHUR_SETUP, i) + r%info(I_SCHUR_FACT, i))
+            write (buf, '(f5.1)') ratio
+            ratio_row = ratio_row//' '//trim(adjustl(buf))//' '//verdict(ratio <= 3.0_dp)//' |'
+            select case (r%ne(i))
+            case (20)
+                time_row = time_row//' '//ms(r%info(I_WHOLE, i))//' ms '// &
+                           verdict(r%info(I_WHOLE, i) < 5.0e-3_dp)//' |'
+            case (1000)
+                time_row = time_row//' '//ms(r%info(I_WHOLE, i))//' ms '// &
+                           verdict(r%info(I_WHOLE, i) < 2.0_dp)//' |'
+            case default
+                time_row = time_row//' - |'
+            end select
+        end do
+        call put(u, '')
+        call put(u, '| issue 7 target |'//join_ne(r%ne, ' |'))
+        call put(u, '|---|'//repeat('---:|', size(r%ne)))
+        call put(u, share_row)
+        call put(u, ratio_row)
+        call put(u, time_row)
+    end subroutine write_targets
+
+    !> 'met' or 'NOT met'.
+    pure function verdict(met) result(text)
+        logical, intent(in) :: met
+        character(len=:), allocatable :: text
+        text = merge('met    ', 'NOT met', met)
+        text = trim(text)
+    end function verdict
 
     !> '| name | t1 | t2 | ... | p | N_e used | local p | expected | share |'
     function phase_row(name, t, ne, expect, share) result(line)
