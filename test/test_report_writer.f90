@@ -27,7 +27,8 @@ contains
                  new_unittest('sweep_first_case_fails', test_sweep_first_fails), &
                  new_unittest('embedded_templates_match', test_templates), &
                  new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep), &
-                 new_unittest('single_case_independent_of_blas_threads', test_blas_threads)]
+                 new_unittest('single_case_independent_of_blas_threads', test_blas_threads), &
+                 new_unittest('json_summary_parses_with_escaped_title', test_json_title)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -298,6 +299,39 @@ contains
                                   '/$(basename $f) || exit 1; done', exitstat=exit_status)
         call check(err, exit_status == 0, 'the case''s files depend on the BLAS thread count')
     end subroutine test_blas_threads
+
+    !> The JSON design summary of a case whose TITLE holds a double quote and a backslash is
+    !! valid JSON and gives the title back: read by Python's json module (an independent
+    !! parser; Python is on the CI machine, which installs fpm with pip).
+    subroutine test_json_title(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: status, exit_status, u, ios
+        character(len=*), parameter :: title = 'report "test" with a \ backslash'
+        character(len=200) :: line
+        character(len=80), allocatable :: lines(:)
+        call clean_dir()
+        lines = plate_deck(' ', [character(len=80) ::])
+        lines(1) = 'TITLE     '//title
+        call parse_deck('js.dat', lines, deck, err)
+        if (allocated(err)) return
+        deck%stem = 'js'
+        opt%figures = .false.
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK, 'the case did not solve')
+        if (allocated(err)) return
+        call execute_command_line('python3 -c "import json, sys; '// &
+            'print(json.load(open(sys.argv[1]))[''title''])" '//dir//'/js.json > '// &
+            dir//'/js_title.txt', exitstat=exit_status)
+        call check(err, exit_status == 0, 'js.json is not valid JSON (Python''s json module)')
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/js_title.txt', status='old', action='read', iostat=ios)
+        if (ios == 0) read (u, '(a)', iostat=ios) line
+        if (ios == 0) close (u)
+        call check(err, ios == 0 .and. trim(line) == title, &
+                   'title from the JSON: '//trim(line)//' (expected '//title//')')
+    end subroutine test_json_title
 
     !> The gnuplot templates embedded in the program (src/report/figure_templates.f90) are the
     !! files scripts/gnuplot/*.gp line for line: after editing a template, run
