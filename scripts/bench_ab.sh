@@ -13,16 +13,13 @@ if [ $# -lt 4 ]; then
     echo "usage: bash scripts/bench_ab.sh BEFORE_BIN AFTER_BIN REPS DECK..." >&2
     exit 1
 fi
-# paths as the caller gave them, before changing folder
-before=$(readlink -f "$1")
-after=$(readlink -f "$2")
+# shellcheck source=scripts/bench_binaries.sh
+source "$(dirname "$0")/bench_binaries.sh"
+two_binaries bench_ab "$1" "$2"    # paths as the caller gave them, before changing folder
 reps=$3
 shift 3
 decks=()
 for deck in "$@"; do decks+=("$(readlink -f "$deck")"); done
-for bin in "$before" "$after"; do
-    [ -x "$bin" ] || { echo "bench_ab: not an executable: $bin" >&2; exit 1; }
-done
 [ -x /usr/bin/time ] || { echo "bench_ab: /usr/bin/time is missing (Debian package time)" >&2; exit 1; }
 cd "$(dirname "$0")/.."
 work=$(mktemp -d)

@@ -14,13 +14,10 @@ if [ $# -lt 2 ]; then
     echo "usage: bash scripts/bench_threads.sh BEFORE_BIN AFTER_BIN [REPS]" >&2
     exit 1
 fi
-# paths as the caller gave them, before changing folder
-before=$(readlink -f "$1")
-after=$(readlink -f "$2")
+# shellcheck source=scripts/bench_binaries.sh
+source "$(dirname "$0")/bench_binaries.sh"
+two_binaries bench_threads "$1" "$2"    # paths as the caller gave them, before changing folder
 reps=${3:-7}
-for bin in "$before" "$after"; do
-    [ -x "$bin" ] || { echo "bench_threads: not an executable: $bin" >&2; exit 1; }
-done
 cd "$(dirname "$0")/.."
 out=output/bench
 work=$(mktemp -d)
