@@ -37,7 +37,7 @@ module adaptive_solve
                                nearest_node
     use discretization, only: discretization_t, discretise_mesh, load_positions, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
-    use station_results, only: station_table_t, tabulate, contact_extent
+    use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries
@@ -241,15 +241,13 @@ contains
         type(summary_t) :: s
         type(entry_t), allocatable :: e2(:), e4(:)
         type(error_t), allocatable :: err
-        type(model_t) :: mn
         logical :: ok
-        mn = m
-        mn%stations = 0          ! the indicators compare values at the nodes
+        ! the indicators compare values at the nodes, as the design values are read there
         call tabulate(m, d, sol, tab, err)
-        if (.not. allocated(err)) call tabulate(mn, d, sol, tab_nodes, err)
+        if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, tab_nodes, err)
         if (allocated(err)) error stop 'adaptive_solve: a solved case could not be tabulated'
-        s = summarise(m, sol, tab)
-        a%e = summary_entries(m, s, contact_extent(tab, m%length))
+        s = summarise(m, sol, tab_nodes)
+        a%e = summary_entries(m, s, contact_extent(tab_nodes, m%length))
         call locate_boundaries(sol, a%boundary, a%liftoff)
         if (allocated(a%eta)) deallocate (a%eta)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere

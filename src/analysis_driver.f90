@@ -6,9 +6,9 @@ module analysis_driver
     use errors, only: error_t, new_error, add_context, EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use model, only: model_t, MODEL_BEAM, relative_stiffness, METHOD_TWOLOOP
     use deck_reader, only: deck_t, case_count, case_model
-    use discretization, only: discretization_t, new_discretization
+    use discretization, only: discretization_t, new_discretization, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact
-    use station_results, only: station_table_t, tabulate, contact_extent
+    use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries, entry_keys
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
@@ -307,15 +307,16 @@ contains
         type(station_table_t) :: tab
         type(summary_t) :: s
         type(error_t), allocatable :: err
+        real(dp) :: extent
 
         result%name = name
         result%label = label
         result%message = ''
         result%rho = relative_stiffness(m)
         result%warnings = input_warnings(m)
-        call solve_on_mesh(m, progress_unit, d, sol, tab, s, result, err)
+        call solve_on_mesh(m, progress_unit, d, sol, tab, s, extent, result, err)
         if (.not. allocated(err) .and. m%adapt_tol <= 0.0_dp) &
-            call refine_until_admissible(m, progress_unit, d, sol, tab, s, result, err)
+            call refine_until_admissible(m, progress_unit, d, sol, tab, s, extent, result, err)
         if (.not. allocated(err)) call require_admissible(s, err)
         result%elements = m%ne
         if (result%adaptation%adapted) result%elements = result%adaptation%ne
@@ -326,7 +327,13 @@ contains
         else
             result%warnings = [character(len=warning_length) :: result%warnings, &
                                settlement_warnings(m, s%w_max%value)]
-            result%entries = summary_entries(m, s, contact_extent(tab, m%length))
+            if (m%adapt_tol <= 0.0_dp .and. .not. loads_on_nodes(m, d%msh)) &
+                result%warnings = [character(len=warning_length) :: result%warnings, &
+                                   'a POINT, RING or MOMENT load lies between two nodes of '// &
+                                   'the mesh: results near it converge at first order only '// &
+                                   '(so do their error estimates); MESH grading LOADS puts '// &
+                                   'a node at every load']
+            result%entries = summary_entries(m, s, extent)
             if (result%adaptation%adapted) then
                 call take_adapted_estimates(result)
             else if (estimates) then
@@ -339,16 +346,20 @@ contains
         !$omp end critical (fricon_output)
     end subroutine solve_case
 
-    !> Discretise m, solve (ADAPT: adaptively), tabulate at the stations and summarise.
-    subroutine solve_on_mesh(m, progress_unit, d, sol, tab, s, result, err)
+    !> Discretise m, solve (ADAPT: adaptively), tabulate at the stations and summarise (from
+    !! the design table: every node, patch edge and load position; tabulate_design).
+    subroutine solve_on_mesh(m, progress_unit, d, sol, tab, s, extent, result, err)
         type(model_t), intent(in) :: m
         integer, intent(in) :: progress_unit
         type(discretization_t), intent(out) :: d
         type(solution_t), intent(out) :: sol
         type(station_table_t), intent(out) :: tab
         type(summary_t), intent(out) :: s
+        real(dp), intent(out) :: extent            !! contact extent t (contact_extent)
         type(case_result_t), intent(inout) :: result
         type(error_t), allocatable, intent(out) :: err
+        type(station_table_t) :: design
+        extent = -1.0_dp
         call new_discretization(m, d, err)
         if (.not. allocated(err)) then
             if (m%adapt_tol > 0.0_dp) then
@@ -362,7 +373,10 @@ contains
         result%n_outer = sol%n_outer
         result%n_inner = sol%n_inner
         if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
-        if (.not. allocated(err)) s = summarise(m, sol, tab)
+        if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, design, err)
+        if (allocated(err)) return
+        s = summarise(m, sol, design)
+        extent = contact_extent(design, m%length)
     end subroutine solve_on_mesh
 
     !> A case solved with the law of the complete problem (its residual checks passed) whose
@@ -371,13 +385,14 @@ contains
     !! (doc/CHOICES.md, "Very soft beams"). It is solved again with twice the elements of the
     !! same MESH family, up to max_doublings times and max_auto_elements, and the report says
     !! so; require_admissible then judges the last mesh. The results are the refined mesh's.
-    subroutine refine_until_admissible(m, progress_unit, d, sol, tab, s, result, err)
+    subroutine refine_until_admissible(m, progress_unit, d, sol, tab, s, extent, result, err)
         type(model_t), intent(inout) :: m
         integer, intent(in) :: progress_unit
         type(discretization_t), intent(inout) :: d
         type(solution_t), intent(inout) :: sol
         type(station_table_t), intent(inout) :: tab
         type(summary_t), intent(inout) :: s
+        real(dp), intent(inout) :: extent
         type(case_result_t), intent(inout) :: result
         type(error_t), allocatable, intent(out) :: err
         integer, parameter :: max_doublings = 3
@@ -394,7 +409,7 @@ contains
                 exit doublings
             if (.not. finer_fits(m)) exit doublings
             m%ne = 2*m%ne
-            call solve_on_mesh(m, progress_unit, d, sol, tab, s, result, err)
+            call solve_on_mesh(m, progress_unit, d, sol, tab, s, extent, result, err)
             if (allocated(err)) exit doublings
         end do doublings
         if (m%ne == ne_deck) return

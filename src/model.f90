@@ -67,7 +67,7 @@ module model
     end type model_t
 
     public :: complete_model, flexural_rigidity, total_vertical_load, friction_compliance
-    public :: relative_stiffness, soil_shear_modulus
+    public :: relative_stiffness, soil_shear_modulus, has_concentrated_load
 
 contains
 
@@ -123,6 +123,15 @@ contains
         friction_compliance = 1.0_dp/(4.0_dp*pi*soil_shear_modulus(m))
         if (m%kind == MODEL_PLATE) friction_compliance = friction_compliance*m%length
     end function friction_compliance
+
+    !> A POINT or RING load acts: the contact pressure is singular under it (log), so its
+    !! largest station value depends on the mesh.
+    pure logical function has_concentrated_load(m)
+        type(model_t), intent(in) :: m
+        has_concentrated_load = .false.
+        if (allocated(m%loads)) has_concentrated_load = &
+            any(m%loads%kind == LOAD_POINT .or. m%loads%kind == LOAD_RING)
+    end function has_concentrated_load
 
     !> Sum of the vertical forces of all loads (moments excluded).
     pure real(dp) function total_vertical_load(m)

@@ -28,6 +28,8 @@ set output png
 if (csv) { set datafile separator comma; skip_rows = 1 } else { set datafile separator whitespace; skip_rows = 0 }
 set datafile missing NaN
 
+# the peak labels sit on an opaque box: a steep curve beside its clipped marker may cross them
+set style textbox opaque noborder margins 0.5,0.3
 # ---- edges, clip levels ------------------------------------------------------------------
 stats data skip skip_rows u c_x nooutput
 x_lo = STATS_min
@@ -83,8 +85,10 @@ do for [k=1:n_loads] {
 }
 # the kind of each concentrated load, written beside its arrow on the settlement panel
 load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] eq 'R') ? 'ring' : (load_kind[k] eq 'M') ? 'M' : ''
+# (left of the arrow for a moment, and for a load in the right tenth, where the word would
+# run into the frame)
 do for [k=1:n_loads] {
-    if (load_kind[k] eq 'M') {
+    if (load_kind[k] eq 'M' || load_x1[k] > x_hi - 0.1*(x_hi - x_lo)) {
         set label 300+k load_word(k) at first load_x1[k], graph 0.955 right offset -0.6,0 front tc rgb c_load
     } else {
         set label 300+k load_word(k) at first load_x1[k], graph 0.955 left offset 0.6,0 front tc rgb c_load
@@ -127,11 +131,11 @@ if (line_width > 0) {
 }
 if (p_cut) {
     stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? 1/0 : column(c_p)) nooutput
-    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip right offset -1.5,-1.1 front tc rgb '#c00000'
+    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip right offset -1.5,-1.1 front boxed tc rgb '#c00000'
     if (is_beam) {
         stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? column(c_p) : 1/0) nooutput
         if (STATS_max_y > p_clip*1.0001) {
-            set label 202 sprintf(' peak %.4g %s', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip left offset 1.5,-1.1 front tc rgb '#c00000'
+            set label 202 sprintf(' peak %.4g %s', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip left offset 1.5,-1.1 front boxed tc rgb '#c00000'
         }
     }
 }
@@ -145,21 +149,36 @@ unset y2tics
 unset link y2
 set ytics mirror
 
-# 3 shear traction with the friction limit +-f p
+# 3 shear traction with the friction limit +-f p. The limit is drawn unclipped in a y range
+# fixed at 1.15 times the clip level: where it leaves the frame it is seen to lie above the
+# clipped markers (both clipped to one level, a sticking station looked as if on the limit).
+# The true peak is written beside its clipped marker.
 set title s_cut ? sprintf('Shear traction on the soil (clipped at %.4g %s)', s_clip, p_unit) : 'Shear traction on the soil'
 set ylabel lab_s
 if (s_cut) {
     stats data skip skip_rows u c_x:(abs(column(c_s))) nooutput
-    set label 203 sprintf(' peak |%s| %.4g %s ', key_s, STATS_max_y, p_unit) at graph 0.5, graph 0.08 center front tc rgb '#c00000'
+    s_peak_x = STATS_pos_max_y
+    s_peak = STATS_max_y
+    stats data skip skip_rows u ((abs(column(c_x) - s_peak_x) < 1e-12*(x_hi - x_lo + 1)) ? column(c_s) : 1/0) nooutput
+    s_peak_y = (STATS_max > 0) ? s_clip : -s_clip
+    if (s_peak_x > 0.5*(x_lo + x_hi)) {
+        set label 203 sprintf('peak |%s| %.4g %s ', key_s, s_peak, p_unit) at first s_peak_x, first s_peak_y right offset -1.5,(s_peak_y > 0 ? -1.1 : 1.1) front boxed tc rgb '#c00000'
+    } else {
+        set label 203 sprintf(' peak |%s| %.4g %s', key_s, s_peak, p_unit) at first s_peak_x, first s_peak_y left offset 1.5,(s_peak_y > 0 ? -1.1 : 1.1) front boxed tc rgb '#c00000'
+    }
 }
 stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) nooutput
 n_slip = STATS_sum
+# (after the stats: stats keeps to the axis ranges)
+s_span = (s_clip > 0) ? 1.15*s_clip : 1
+set yrange [-s_span:s_span]
 slip_marks = (n_slip > 0) ? "data skip skip_rows u c_x:((column(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps 1.1 lc rgb '#ff7f0e' t 'slipping station'" : "NaN notitle"
 clip_marks = s_cut ? "data skip skip_rows u c_x:((abs(column(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped'" : "NaN notitle"
-envelope = (friction > 0) ? "data skip skip_rows u c_x:(clip_s(friction*column(c_p))) w l dt 3 lw 1.2 lc rgb '#505050' t sprintf('+-f %s (f = %g)', key_p, friction), data skip skip_rows u c_x:(clip_s(-friction*column(c_p))) w l dt 3 lw 1.2 lc rgb '#505050' notitle" : "NaN notitle"
+envelope = (friction > 0) ? "data skip skip_rows u c_x:(friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' t sprintf('+-f %s (f = %g)', key_p, friction), data skip skip_rows u c_x:(-friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' notitle" : "NaN notitle"
 plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \
      @slip_marks, @clip_marks, @envelope, @zero_line, @dummy_zone, @dummy_load
 unset label 203
+set yrange [*:*]
 
 # 4 bending moments
 set title 'Bending moment (> 0 hogging, top in tension)'
@@ -189,6 +208,10 @@ set y2label lab_n
 set y2tics
 set ytics nomirror
 set autoscale y2
+# a structure with no membrane force (f = 0: no shear traction) gets a fixed axis, not
+# gnuplot's "empty y2 range" warning
+stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? abs(column(c_nt)) : 0)) nooutput
+if (STATS_max == 0) { set y2range [-1:1] }
 if (c_nt > 0) {
     plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 lw 2 lc rgb '#bcbd22' t key_slip, \
          '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc rgb '#1f3f7f' t key_n, \

@@ -8,7 +8,12 @@
 !! and one lifted off is placed midway between them (the resolution of the stations). The
 !! contact pressure at the edge of a footing in contact is singular in theory, so beside the
 !! largest station value the summary gives the pressure at the distance h (the thickness) from
-!! each edge, where the plate/beam model itself starts to hold.
+!! each edge, where the plate/beam model itself starts to hold; it is defined where that point
+!! lies on the base and in contact (an edge that lifts off moves the contact edge inwards,
+!! and the point at h may still carry pressure). A largest sagging (hogging) moment is defined
+!! only where some station sags (hogs): "max hogging" of a raft that sags everywhere is not
+!! the least negative sagging moment. The values are read from the design table
+!! (station_results::tabulate_design: every node, patch edge and load position).
 module design_summary
     use kinds, only: dp, pi
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, total_vertical_load, friction_compliance
@@ -29,6 +34,7 @@ module design_summary
     type, public :: located_t
         real(dp) :: value = 0.0_dp
         real(dp) :: x = 0.0_dp
+        logical :: defined = .true.   !! false: no station has a value of the kind sought
     end type located_t
 
     !> Everything the design summary reports.
@@ -47,7 +53,9 @@ module design_summary
         type(located_t) :: pressure_max               !! largest station pressure [F/L^2]
         real(dp) :: edge_distance = 0.0_dp            !! h [L]
         real(dp) :: edge_pressure(2) = 0.0_dp         !! at h from the left end / the rim [F/L^2]
-        logical :: edge_in_contact(2) = .false.
+        logical :: edge_point_in_contact(2) = .false. !! that point is on the base, in contact
+        logical :: edge_in_contact = .false.          !! an edge of the base is in contact
+                                                      !! (the beam's ends, the plate's rim)
         real(dp) :: centre_pressure = 0.0_dp          !! at x = 0 (plate: the axis) [F/L^2]
         logical :: centre_defined = .false.           !! x = 0 on the base, no concentrated load
         type(located_t) :: m_sag, m_hog               !! beam M, plate M_r [F L or F L / L]
@@ -151,12 +159,15 @@ contains
         s%edge_distance = m%h
         x0 = tab%val(Q_X, 1)
         x1 = tab%val(Q_X, tab%n)
-        if (2.0_dp*m%h < x1 - x0) then
+        s%edge_in_contact = tab%state(tab%n) /= STATE_LIFTOFF
+        if (m%kind == MODEL_BEAM) s%edge_in_contact = s%edge_in_contact .or. &
+                                                      tab%state(1) /= STATE_LIFTOFF
+        if (m%h < x1 - x0) then
             s%edge_pressure(2) = interpolate(tab, tab%val(Q_SZ, :), x1 - m%h)/width
-            s%edge_in_contact(2) = tab%state(tab%n) /= STATE_LIFTOFF
+            s%edge_point_in_contact(2) = in_contact_at(tab, x1 - m%h)
             if (m%kind == MODEL_BEAM) then
                 s%edge_pressure(1) = interpolate(tab, tab%val(Q_SZ, :), x0 + m%h)/width
-                s%edge_in_contact(1) = tab%state(1) /= STATE_LIFTOFF
+                s%edge_point_in_contact(1) = in_contact_at(tab, x0 + m%h)
             end if
         end if
         call centre_value(m, tab, width, s)
@@ -207,17 +218,24 @@ contains
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(inout) :: s
         integer :: i
-        s%m_hog = located_max(tab, tab%val(Q_M, :))
-        s%m_sag = located_max(tab, -tab%val(Q_M, :))
-        s%m_sag%value = -s%m_sag%value
-        if (m%kind /= MODEL_BEAM) then
-            s%mt_hog = located_max(tab, tab%val(Q_MT, :))
-            s%mt_sag = located_max(tab, -tab%val(Q_MT, :))
-            s%mt_sag%value = -s%mt_sag%value
-        end if
+        call moment_extremes(tab, tab%val(Q_M, :), s%m_sag, s%m_hog)
+        if (m%kind /= MODEL_BEAM) call moment_extremes(tab, tab%val(Q_MT, :), s%mt_sag, s%mt_hog)
         i = maxloc(abs(tab%val(Q_Q, :)), dim=1)
         s%q_abs_max = located_t(tab%val(Q_Q, i), tab%val(Q_X, i))
     end subroutine resultant_values
+
+    !> The largest sagging (most negative) and hogging (most positive) moment, each defined
+    !! only where some station has a moment of that sign.
+    pure subroutine moment_extremes(tab, moment, sag, hog)
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: moment(:)
+        type(located_t), intent(out) :: sag, hog
+        hog = located_max(tab, moment)
+        hog%defined = hog%value > 0.0_dp
+        sag = located_max(tab, -moment)
+        sag%value = -sag%value
+        sag%defined = sag%value < 0.0_dp
+    end subroutine moment_extremes
 
     pure subroutine check_values(m, sol, tab, s)
         type(model_t), intent(in) :: m
@@ -258,6 +276,16 @@ contains
         i = maxloc(y, dim=1)
         loc = located_t(y(i), tab%val(Q_X, i))
     end function located_max
+
+    !> Whether x is in contact: the state of the station nearest to x (the contact intervals'
+    !! boundaries lie midway between stations, contact_intervals).
+    pure logical function in_contact_at(tab, x)
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: x
+        integer :: i
+        i = minloc(abs(tab%val(Q_X, :) - x), dim=1)
+        in_contact_at = tab%state(i) /= STATE_LIFTOFF
+    end function in_contact_at
 
     !> Station values `y` linearly interpolated at x (the first bracket that holds x).
     pure real(dp) function interpolate(tab, y, x) result(v)

@@ -6,7 +6,7 @@ module report_writer
     use atomic_files, only: open_temporary, commit_file
     use model, only: model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, flexural_rigidity, &
                      relative_stiffness, soil_shear_modulus, friction_compliance, &
-                     total_vertical_load
+                     total_vertical_load, has_concentrated_load
     use shape_functions, only: interp_name
     use discretization, only: discretization_t
     use contact_solver, only: solution_t
@@ -772,8 +772,17 @@ contains
         write (u, fmt) 'E_f (soil)', m%e_f, trim(m%force_unit)//'/'//trim(m%length_unit)//'^2'
         write (u, fmt) 'G_f (soil)', soil_shear_modulus(m), &
             trim(m%force_unit)//'/'//trim(m%length_unit)//'^2'
-        write (u, fmt) 'EI (beam) or D (plate)', flexural_rigidity(m)
-        write (u, fmt) 'c (friction compliance, SPEC.md 4)', friction_compliance(m)
+        if (m%kind == MODEL_BEAM) then
+            write (u, fmt) 'EI (bending stiffness)', flexural_rigidity(m), &
+                trim(m%force_unit)//' '//trim(m%length_unit)//'^2'
+            write (u, fmt) 'c = 1/(4 pi G_f) (friction compliance)', friction_compliance(m), &
+                trim(m%length_unit)//'^2/'//trim(m%force_unit)
+        else
+            write (u, fmt) 'D (bending stiffness per unit width)', flexural_rigidity(m), &
+                trim(m%force_unit)//' '//trim(m%length_unit)
+            write (u, fmt) 'c = a/(4 pi G_f) (friction compliance)', friction_compliance(m), &
+                trim(m%length_unit)//'^3/'//trim(m%force_unit)
+        end if
         write (u, fmt) 'F (total vertical load)', total_vertical_load(m), trim(m%force_unit)
         write (u, fmt) 'H (total horizontal load)', sum(m%loads%fx), trim(m%force_unit)
         write (u, '(3x,a,i0,a,a,a)', advance='no') 'mesh: N_e = ', d%msh%ne, ', ', &
@@ -931,9 +940,15 @@ contains
                 'of at least 4 elements) and coarse solves that converge'
         end if
         call write_intervals(u, m, s%intervals)
-        write (u, '(3x,a)') 'The pressure at an edge in contact is singular in theory: the station '// &
-            'maximum there depends on the mesh;'
-        write (u, '(3x,a)') 'use the mean pressure and the pressure at d from the edge for design.'
+        if (s%edge_in_contact) then
+            write (u, '(3x,a)') 'The pressure at an edge in contact is singular in theory: the '// &
+                'station maximum there depends on the mesh;'
+            write (u, '(3x,a)') 'use the mean pressure and the pressure at d from the edge '// &
+                'for design.'
+        end if
+        if (has_concentrated_load(m)) write (u, '(3x,a)') &
+            'Under a POINT or RING load the pressure is singular too (logarithmic): its '// &
+            'station maximum depends on the mesh.'
     end subroutine write_summary
 
     pure function order_text(p) result(text)

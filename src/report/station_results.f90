@@ -57,7 +57,7 @@ module station_results
         real(dp) :: most_tensile = 0.0_dp       !! min sigma_z over the stations [F/L or F/L^2]
     end type station_table_t
 
-    public :: tabulate, contact_extent
+    public :: tabulate, tabulate_design, contact_extent
 
 contains
 
@@ -103,14 +103,39 @@ contains
         call pointwise_checks(m, gap_pw, tab)
     end subroutine tabulate
 
-    !> Nodes of the mesh (or `stations` equally spaced points), with every concentrated load
-    !! position inserted twice (left and right limit), replacing a station that coincides.
+    !> The table the design values are read from (design_summary): every node, every patch
+    !! edge and both sides of every concentrated load, whatever stations the OUTPUT card chose
+    !! for the printed table (a peak between two printed stations, e.g. a hogging moment over
+    !! the wall of a tank, would otherwise be missed or read low). The printed table itself
+    !! when it already is that one.
+    subroutine tabulate_design(m, d, sol, tab, design, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
+        type(station_table_t), intent(in) :: tab       !! the printed table (tabulate)
+        type(station_table_t), intent(out) :: design
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: every_node
+        if (m%stations < 2) then
+            design = tab
+            return
+        end if
+        every_node = m
+        every_node%stations = 0
+        call tabulate(every_node, d, sol, design, err)
+    end subroutine tabulate_design
+
+    !> Nodes of the mesh (or `stations` equally spaced points), with every patch edge inside
+    !! the base inserted once (the shear force peaks there: the load stops growing with x)
+    !! and every concentrated load position twice (left and right limit), each replacing a
+    !! station that coincides. A node within rounding of x = 0 (a symmetric mesh's middle,
+    !! -8.9e-16 from its sum of lengths) is the centre itself.
     pure subroutine station_positions(m, d, x, side)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         real(dp), allocatable, intent(out) :: x(:)
         integer, allocatable, intent(out) :: side(:)
-        real(dp), allocatable :: jumps(:)
+        real(dp), allocatable :: jumps(:), edges(:)
         real(dp) :: x0, x1, tol
         integer :: i, j, n_same
         x0 = d%msh%x(0)
@@ -121,8 +146,16 @@ contains
         else
             x = [d%msh%x]      ! (re-based to 1:n; the mesh is x(0:ne))
         end if
+        where (abs(x) <= tol) x = 0.0_dp
         allocate (side(size(x)))
         side = 0
+        edges = patch_edges(m, x0 + tol, x1 - tol)
+        edge_inserts: do j = 1, size(edges)
+            if (any(abs(x - edges(j)) <= tol)) cycle edge_inserts
+            i = count(x < edges(j))
+            x = [x(1:i), edges(j), x(i + 1:)]
+            side = [side(1:i), 0, side(i + 1:)]
+        end do edge_inserts
         jumps = concentrated_positions(m, x0 + tol)
         inserts: do j = 1, size(jumps)
             if (any(abs(x - jumps(j)) <= tol .and. side /= 0)) cycle inserts  ! already split
@@ -147,6 +180,21 @@ contains
             x = [x, m%loads(i)%x1]
         end do
     end function concentrated_positions
+
+    !> The ends of the PATCH loads strictly inside (x_min, x_max).
+    pure function patch_edges(m, x_min, x_max) result(x)
+        type(model_t), intent(in) :: m
+        real(dp), intent(in) :: x_min, x_max
+        real(dp), allocatable :: x(:)
+        integer :: i
+        allocate (x(0))
+        do i = 1, size(m%loads)
+            if (m%loads(i)%kind /= LOAD_PATCH) cycle
+            x = [x, pack([m%loads(i)%x1, m%loads(i)%x2], &
+                         [m%loads(i)%x1, m%loads(i)%x2] > x_min .and. &
+                         [m%loads(i)%x1, m%loads(i)%x2] < x_max)]
+        end do
+    end function patch_edges
 
     pure real(dp) function position_tolerance(d) result(tol)
         type(discretization_t), intent(in) :: d

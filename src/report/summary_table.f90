@@ -6,7 +6,8 @@
 !! pressures in kPa for kN and m) and nondimensional (SPEC §6) for NONDIM decks.
 module summary_table
     use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, total_vertical_load, flexural_rigidity
+    use model, only: model_t, MODEL_BEAM, total_vertical_load, flexural_rigidity, &
+                     has_concentrated_load
     use station_columns, only: units_t, case_units
     use design_summary, only: summary_t
     implicit none
@@ -69,17 +70,17 @@ contains
                  merge(s%contact_length*k%length, s%contact_area*k%length**2, beam)), &
              ent('pressure_mean', 'mean contact pressure V / contact area', k%u_pressure, &
                  s%mean_pressure*k%pressure), &
-             ent('pressure_max', 'max station pressure (edge: mesh dependent)', k%u_pressure, &
+             ent('pressure_max', pressure_max_label(m, s), k%u_pressure, &
                  s%pressure_max%value*k%pressure), &
              ent('pressure_max_x', '  at', k%u_length, s%pressure_max%x*k%length), &
              ent('edge_distance', 'distance d from the edge (= h)', k%u_length, &
                  s%edge_distance*k%length)]
         if (beam) e = [e, ent('pressure_near_left_end', 'pressure at d from the left end', &
-                              k%u_pressure, s%edge_pressure(1)*k%pressure, s%edge_in_contact(1))]
+                              k%u_pressure, s%edge_pressure(1)*k%pressure, s%edge_point_in_contact(1))]
         e = [e, ent(choose(beam, 'pressure_near_right_end', 'pressure_near_rim'), &
                     choose(beam, 'pressure at d from the right end', 'pressure at d from the rim'), &
                     k%u_pressure, s%edge_pressure(2)*k%pressure, &
-                    s%edge_in_contact(2))]
+                    s%edge_point_in_contact(2))]
         e = [e, ent('pressure_centre', choose(beam, 'pressure at the centre x = 0', &
                     'pressure at the centre r = 0'), k%u_pressure, s%centre_pressure*k%pressure, &
                     s%centre_defined)]
@@ -92,6 +93,16 @@ contains
              ent('linear_solves', 'linear solves', '', real(s%linear_solves, dp))]
         e(size(e))%integer_valued = .true.
     end function summary_entries
+
+    !> The largest station pressure is mesh dependent where the pressure is singular: at an
+    !! edge in contact and under a POINT or RING load (the report's notes below the summary).
+    pure function pressure_max_label(m, s) result(label)
+        type(model_t), intent(in) :: m
+        type(summary_t), intent(in) :: s
+        character(len=:), allocatable :: label
+        label = 'max station pressure'
+        if (s%edge_in_contact .or. has_concentrated_load(m)) label = label//' (singular: see below)'
+    end function pressure_max_label
 
     !> The keys of summary_entries for a model (the sweep CSV header).
     pure function entry_keys(m) result(keys)
@@ -112,18 +123,20 @@ contains
         character(len=4) :: sym
         sym = merge('M   ', 'M_r ', m%kind == MODEL_BEAM)
         e = [ent('moment_sagging', 'max sagging '//trim(sym)//' (bottom in tension)', k%u_moment, &
-                 s%m_sag%value*k%moment), &
-             ent('moment_sagging_x', '  at', k%u_length, s%m_sag%x*k%length), &
+                 s%m_sag%value*k%moment, s%m_sag%defined), &
+             ent('moment_sagging_x', '  at', k%u_length, s%m_sag%x*k%length, s%m_sag%defined), &
              ent('moment_hogging', 'max hogging '//trim(sym)//' (top in tension)', k%u_moment, &
-                 s%m_hog%value*k%moment), &
-             ent('moment_hogging_x', '  at', k%u_length, s%m_hog%x*k%length)]
+                 s%m_hog%value*k%moment, s%m_hog%defined), &
+             ent('moment_hogging_x', '  at', k%u_length, s%m_hog%x*k%length, s%m_hog%defined)]
         if (m%kind == MODEL_BEAM) return
         e = [e, ent('hoop_moment_sagging', 'max sagging M_theta', k%u_moment, &
-                    s%mt_sag%value*k%moment), &
-             ent('hoop_moment_sagging_x', '  at', k%u_length, s%mt_sag%x*k%length), &
+                    s%mt_sag%value*k%moment, s%mt_sag%defined), &
+             ent('hoop_moment_sagging_x', '  at', k%u_length, s%mt_sag%x*k%length, &
+                 s%mt_sag%defined), &
              ent('hoop_moment_hogging', 'max hogging M_theta', k%u_moment, &
-                 s%mt_hog%value*k%moment), &
-             ent('hoop_moment_hogging_x', '  at', k%u_length, s%mt_hog%x*k%length)]
+                 s%mt_hog%value*k%moment, s%mt_hog%defined), &
+             ent('hoop_moment_hogging_x', '  at', k%u_length, s%mt_hog%x*k%length, &
+                 s%mt_hog%defined)]
     end function moment_entries
 
     !> Physical display units, or the nondimensional scales of SPEC §6 for a NONDIM deck.
