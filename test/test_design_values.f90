@@ -657,11 +657,13 @@ contains
     end subroutine test_moment_signs
 
     !> With an OUTPUT card the printed table has its stations, but the design values are read
-    !! at every node, patch edge and load position (station_results::tabulate_design).
-    !! input/plate_physical.dat (OUTPUT 21) has its largest hogging M_r between two printed
-    !! stations (asserted): the JSON summary of a run of the program gives the largest over a
-    !! table at every node (tabulated here with the stations card off), not the lower printed
-    !! one (an engineer measured 3.806 printed against 3.969 kN m/m at the nodes).
+    !! at those and at every node, patch edge and load position
+    !! (station_results::tabulate_design). input/plate_physical.dat (OUTPUT 21, no patch edge
+    !! inside the raft) has its largest hogging M_r between two printed stations (asserted):
+    !! the JSON summary of a run of the program gives the larger of the largest over the
+    !! printed stations and over a table at every node (tabulated here with the stations card
+    !! off), which is the nodes' (an engineer measured 3.806 printed, 3.969 kN m/m at the
+    !! nodes).
     subroutine test_design_every_node(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=*), parameter :: dir = 'build/test_design_nodes'
@@ -688,7 +690,8 @@ contains
         call check(err, status == EXIT_OK, 'plate_physical did not solve')
         if (allocated(err)) return
         call check_close(err, json_value(dir//'/plate_physical.json', '"moment_hogging":'), &
-                         hog_nodes, 1.0e-5_dp, 0.0_dp, 'moment_hogging (JSON) against every node')
+                         max(hog_nodes, maxval(c%tab%val(Q_M, :))), 1.0e-5_dp, 0.0_dp, &
+                         'moment_hogging (JSON) against every node and station')
     end subroutine test_design_every_node
 
     !> A ring between nodes (input/tank_raft.dat, P1 UNIFORM: r = 7.5 m between the nodes of

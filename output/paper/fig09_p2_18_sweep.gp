@@ -41,7 +41,7 @@ line_width = 0.00000000000000E+000
 lab_line = ''
 # clip rule: p_clip = max(clip_factor p_mean, clip_inner x the largest pressure
 # at least edge_d from a free edge); p_mean = V / contact area, edge_d = h
-p_mean = 1.63265306122449E+000
+p_mean = 1.64289788933257E+000
 clip_factor = 1.50000000000000E+000
 clip_inner = 1.25000000000000E+000
 edge_d = 1.00000000000000E-001
@@ -56,10 +56,10 @@ labels = ''
 p_means = ''
 files = files.' '.gp_dir.'fig09_p2_18_001.dat'
 labels = labels." 'RHO=0.00025'"
-p_means = p_means.' 1.63265306122449E+000'
+p_means = p_means.' 1.64289788933257E+000'
 files = files.' '.gp_dir.'fig09_p2_18_002.dat'
 labels = labels." 'RHO=0.0025'"
-p_means = p_means.' 1.05960264900662E+000'
+p_means = p_means.' 1.06273062730627E+000'
 sweep_png = gp_dir.'fig09_p2_18_sweep.png'
 title = 'fricon: Fig. 9 (P2, 93 unknowns): N_e 18, U P1, W psi P2 (sweep)'
 # fricon sweep figure: the cases of a SWEEP deck overlaid, six panels, one colour per case.

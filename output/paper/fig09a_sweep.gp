@@ -41,7 +41,7 @@ line_width = 0.00000000000000E+000
 lab_line = ''
 # clip rule: p_clip = max(clip_factor p_mean, clip_inner x the largest pressure
 # at least edge_d from a free edge); p_mean = V / contact area, edge_d = h
-p_mean = 1.77777777777778E+000
+p_mean = 1.78107606679035E+000
 clip_factor = 1.50000000000000E+000
 clip_inner = 1.25000000000000E+000
 edge_d = 1.00000000000000E-001
@@ -56,10 +56,10 @@ labels = ''
 p_means = ''
 files = files.' '.gp_dir.'fig09a_001.dat'
 labels = labels." 'RHO=0.00025'"
-p_means = p_means.' 1.77777777777778E+000'
+p_means = p_means.' 1.78107606679035E+000'
 files = files.' '.gp_dir.'fig09a_002.dat'
 labels = labels." 'RHO=0.0025'"
-p_means = p_means.' 1.20300751879699E+000'
+p_means = p_means.' 1.20603015075377E+000'
 sweep_png = gp_dir.'fig09a_sweep.png'
 title = 'fricon: Fig. 9a: beam N_e 30, U W psi P1 (sweep)'
 # fricon sweep figure: the cases of a SWEEP deck overlaid, six panels, one colour per case.

@@ -13,7 +13,8 @@
 !! and the point at h may still carry pressure). A largest sagging (hogging) moment is defined
 !! only where some station sags (hogs): "max hogging" of a raft that sags everywhere is not
 !! the least negative sagging moment. The values are read from the design table
-!! (station_results::tabulate_design: every node, patch edge and load position).
+!! (station_results::tabulate_design: every node, patch edge and load position, and the
+!! OUTPUT card's stations).
 module design_summary
     use kinds, only: dp, pi
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, total_vertical_load, friction_compliance

@@ -63,16 +63,20 @@ contains
 
     !> Evaluate everything at the stations (every node, or OUTPUT stations equally spaced,
     !! plus both sides of every concentrated load).
-    subroutine tabulate(m, d, sol, tab, err)
+    subroutine tabulate(m, d, sol, tab, err, with_nodes)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         type(station_table_t), intent(out) :: tab
         type(error_t), allocatable, intent(out) :: err
+        logical, intent(in), optional :: with_nodes   !! OUTPUT stations and every node
         real(dp), allocatable :: x(:), u_f(:), w_f(:), rec(:, :), gap_pw(:)
+        logical :: nodes_too
         integer :: i
 
-        call station_positions(m, d, x, tab%side)
+        nodes_too = .false.
+        if (present(with_nodes)) nodes_too = with_nodes
+        call station_positions(m, d, nodes_too, x, tab%side)
         tab%n = size(x)
         allocate (tab%val(n_quantities, tab%n), tab%state(tab%n), tab%flag(tab%n))
         allocate (u_f(tab%n), w_f(tab%n), gap_pw(tab%n))
@@ -104,10 +108,11 @@ contains
     end subroutine tabulate
 
     !> The table the design values are read from (design_summary): every node, every patch
-    !! edge and both sides of every concentrated load, whatever stations the OUTPUT card chose
-    !! for the printed table (a peak between two printed stations, e.g. a hogging moment over
-    !! the wall of a tank, would otherwise be missed or read low). The printed table itself
-    !! when it already is that one.
+    !! edge and both sides of every concentrated load, and the OUTPUT card's stations if it has
+    !! any (a peak between two printed stations, e.g. a hogging moment over the wall of a tank,
+    !! would otherwise be missed or read low; stations finer than the mesh keep locating the
+    !! contact boundaries as finely as they did). The printed table itself when it already is
+    !! that one.
     subroutine tabulate_design(m, d, sol, tab, design, err)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -115,14 +120,11 @@ contains
         type(station_table_t), intent(in) :: tab       !! the printed table (tabulate)
         type(station_table_t), intent(out) :: design
         type(error_t), allocatable, intent(out) :: err
-        type(model_t) :: every_node
         if (m%stations < 2) then
             design = tab
             return
         end if
-        every_node = m
-        every_node%stations = 0
-        call tabulate(every_node, d, sol, design, err)
+        call tabulate(m, d, sol, design, err, with_nodes=.true.)
     end subroutine tabulate_design
 
     !> Nodes of the mesh (or `stations` equally spaced points), with every patch edge inside
@@ -130,9 +132,10 @@ contains
     !! and every concentrated load position twice (left and right limit), each replacing a
     !! station that coincides. A node within rounding of x = 0 (a symmetric mesh's middle,
     !! -8.9e-16 from its sum of lengths) is the centre itself.
-    pure subroutine station_positions(m, d, x, side)
+    pure subroutine station_positions(m, d, nodes_too, x, side)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
+        logical, intent(in) :: nodes_too     !! the OUTPUT stations and every node
         real(dp), allocatable, intent(out) :: x(:)
         integer, allocatable, intent(out) :: side(:)
         real(dp), allocatable :: jumps(:), edges(:)
@@ -143,6 +146,7 @@ contains
         tol = position_tolerance(d)
         if (m%stations >= 2) then
             x = [(x0 + (x1 - x0)*real(i - 1, dp)/real(m%stations - 1, dp), i=1, m%stations)]
+            if (nodes_too) x = merged(x, d%msh%x, tol)
         else
             x = [d%msh%x]      ! (re-based to 1:n; the mesh is x(0:ne))
         end if
@@ -180,6 +184,39 @@ contains
             x = [x, m%loads(i)%x1]
         end do
     end function concentrated_positions
+
+    !> The union of two ascending lists, a point within tol of one already taken left out.
+    pure function merged(a, b, tol) result(x)
+        real(dp), intent(in) :: a(:), b(:), tol
+        real(dp), allocatable :: x(:)
+        real(dp) :: next
+        integer :: i, j, n
+        allocate (x(size(a) + size(b)))
+        i = 1
+        j = 1
+        n = 0
+        do while (i <= size(a) .or. j <= size(b))
+            if (j > size(b)) then
+                next = a(i)
+                i = i + 1
+            else if (i > size(a)) then
+                next = b(j)
+                j = j + 1
+            else if (a(i) <= b(j)) then
+                next = a(i)
+                i = i + 1
+            else
+                next = b(j)
+                j = j + 1
+            end if
+            if (n > 0) then
+                if (next - x(n) <= tol) cycle
+            end if
+            n = n + 1
+            x(n) = next
+        end do
+        x = x(1:n)
+    end function merged
 
     !> The ends of the PATCH loads strictly inside (x_min, x_max).
     pure function patch_edges(m, x_min, x_max) result(x)
