@@ -57,7 +57,8 @@ contains
                  new_unittest('moment_extremes_need_their_sign', test_moment_signs), &
                  new_unittest('design_values_at_every_node_with_output_card', &
                               test_design_every_node), &
-                 new_unittest('estimate_with_ring_between_nodes', test_ring_between_nodes)]
+                 new_unittest('estimate_with_ring_between_nodes', test_ring_between_nodes), &
+                 new_unittest('slip_intervals_hold_the_slipping_stations', test_slip_intervals)]
     end subroutine collect_design_values
 
     !> Read a deck (case 1), optionally change N_e, solve and tabulate.
@@ -730,6 +731,46 @@ contains
         call check(err, e(i)%has_error .and. e(i)%order == 1.0_dp .and. ratio >= 0.5_dp .and. &
                    ratio <= 2.0_dp, 'estimate of max sagging M_r not within 2x of its error')
     end subroutine test_ring_between_nodes
+
+    !> The slip intervals of the summary hold exactly the slipping stations (interface law's
+    !! state): input/beam_physical.dat lifts off at its left end and slips next to it and at its
+    !! right end (asserted from the table, so that both kinds of boundary occur), and every
+    !! station inside a slip interval slips, every other does not; the intervals lie inside the
+    !! contact intervals.
+    subroutine test_slip_intervals(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        type(summary_t) :: s
+        real(dp) :: x
+        logical :: inside, in_contact
+        integer :: i, k
+        call solve_deck('input/beam_physical.dat', 0, c, err)
+        if (allocated(err)) return
+        s = summarise(c%m, c%sol, c%tab)
+        call check(err, c%tab%state(1) == STATE_LIFTOFF .and. c%tab%state(c%tab%n) == STATE_SLIP &
+                   .and. size(s%slip_intervals) == 2, 'beam_physical: lift-off and two slip zones')
+        if (allocated(err)) return
+        do i = 1, c%tab%n
+            x = c%tab%val(Q_X, i)
+            inside = .false.
+            do k = 1, size(s%slip_intervals)
+                inside = inside .or. (x >= s%slip_intervals(k)%x1 .and. x <= s%slip_intervals(k)%x2)
+            end do
+            call check(err, inside .eqv. (c%tab%state(i) == STATE_SLIP), &
+                       'a station and the slip intervals disagree')
+            if (allocated(err)) return
+        end do
+        do k = 1, size(s%slip_intervals)
+            in_contact = .false.
+            do i = 1, size(s%intervals)
+                in_contact = in_contact .or. (s%intervals(i)%contact .and. &
+                    s%slip_intervals(k)%x1 >= s%intervals(i)%x1 .and. &
+                    s%slip_intervals(k)%x2 <= s%intervals(i)%x2)
+            end do
+            call check(err, in_contact, 'a slip interval outside the contact')
+            if (allocated(err)) return
+        end do
+    end subroutine test_slip_intervals
 
     !> Quantity iq of a station table linearly interpolated at x (independent of
     !! design_summary's own interpolation: the bracket found by a search from the left).

@@ -14,6 +14,10 @@ module solution_checks
 
     public :: check_load_admissible, final_checks
 
+    !> What require_checks accepts: equilibrium (4.2a residual, reactions) to this fraction of
+    !! the load, the interface law to this fraction of max |r| (reports print 6 digits).
+    real(dp), parameter, public :: check_limit = 1.0e-5_dp
+
 contains
 
     !> Loads that no unilateral frictional support can carry (SPEC §4): EXIT_ANALYSIS.
@@ -146,7 +150,7 @@ contains
         type(model_t), intent(in) :: m
         type(solution_t), intent(in) :: sol
         type(error_t), allocatable, intent(out) :: err
-        real(dp), parameter :: limit = 1.0e-5_dp   !! of the load (reports print 6 digits)
+        real(dp), parameter :: limit = check_limit
         real(dp) :: scale(3), equilibrium
         character(len=300) :: text
         scale = total_vertical_load(m)*[1.0_dp, 1.0_dp, m%length]

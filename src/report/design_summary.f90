@@ -19,7 +19,7 @@ module design_summary
     use kinds, only: dp, pi
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, total_vertical_load, friction_compliance
     use contact_solver, only: solution_t
-    use interface_law, only: STATE_LIFTOFF, admissible_excess
+    use interface_law, only: STATE_LIFTOFF, STATE_SLIP, admissible_excess
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q, Q_SLIP
     use station_results, only: station_table_t, FLAG_TENSION, FLAG_OVERLAP
     implicit none
@@ -48,6 +48,8 @@ module design_summary
         type(located_t) :: slope_max                  !! largest |dw/dx| between stations [rad]
         type(located_t) :: angular_distortion         !! largest |dw/dx - tilt| [rad]
         type(interval_t), allocatable :: intervals(:) !! contact and lift-off, in order of x
+        type(interval_t), allocatable :: slip_intervals(:) !! where the base slips (contact
+                                                           !! true), in order of x
         real(dp) :: contact_length = 0.0_dp           !! beam: length in contact; plate: 0 [L]
         real(dp) :: contact_area = 0.0_dp             !! [L^2]
         real(dp) :: mean_pressure = 0.0_dp            !! V / contact area [F/L^2]
@@ -141,6 +143,7 @@ contains
         integer :: k
         width = merge(m%b, 1.0_dp, m%kind == MODEL_BEAM)   ! line load -> pressure
         s%intervals = contact_intervals(tab)
+        s%slip_intervals = slip_runs(tab)
         s%contact_length = 0.0_dp
         s%contact_area = 0.0_dp
         do k = 1, size(s%intervals)
@@ -201,18 +204,39 @@ contains
     pure function contact_intervals(tab) result(iv)
         type(station_table_t), intent(in) :: tab
         type(interval_t), allocatable :: iv(:)
-        logical :: touching(tab%n)
+        iv = alternating_runs(tab, tab%state /= STATE_LIFTOFF)
+    end function contact_intervals
+
+    !> The runs of slipping stations (interval_t%contact true), in order of x.
+    pure function slip_runs(tab) result(iv)
+        type(station_table_t), intent(in) :: tab
+        type(interval_t), allocatable :: iv(:)
+        type(interval_t), allocatable :: runs(:)
+        integer :: k
+        runs = alternating_runs(tab, tab%state == STATE_SLIP)
+        allocate (iv(0))
+        do k = 1, size(runs)
+            if (runs(k)%contact) iv = [iv, runs(k)]
+        end do
+    end function slip_runs
+
+    !> Maximal runs of stations of equal flag(i), in order of x (interval_t%contact: the
+    !! flag of the run); boundaries midway between differing stations, the base's ends at
+    !! the ends.
+    pure function alternating_runs(tab, flag) result(iv)
+        type(station_table_t), intent(in) :: tab
+        logical, intent(in) :: flag(:)
+        type(interval_t), allocatable :: iv(:)
         real(dp) :: mid
         integer :: i
-        touching = tab%state /= STATE_LIFTOFF
-        iv = [interval_t(tab%val(Q_X, 1), tab%val(Q_X, tab%n), touching(1))]
+        iv = [interval_t(tab%val(Q_X, 1), tab%val(Q_X, tab%n), flag(1))]
         do i = 2, tab%n
-            if (touching(i) .eqv. touching(i - 1)) cycle
+            if (flag(i) .eqv. flag(i - 1)) cycle
             mid = 0.5_dp*(tab%val(Q_X, i - 1) + tab%val(Q_X, i))
             iv(size(iv))%x2 = mid
-            iv = [iv, interval_t(mid, tab%val(Q_X, tab%n), touching(i))]
+            iv = [iv, interval_t(mid, tab%val(Q_X, tab%n), flag(i))]
         end do
-    end function contact_intervals
+    end function alternating_runs
 
     pure subroutine resultant_values(m, tab, s)
         type(model_t), intent(in) :: m

@@ -10,6 +10,7 @@ module report_writer
     use shape_functions, only: interp_name
     use discretization, only: discretization_t
     use contact_solver, only: solution_t
+    use solution_checks, only: check_limit
     use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
     use station_columns, only: column_t, nondim_columns, physical_columns, case_units, &
                                column_index, units_t, Q_STATE
@@ -173,7 +174,7 @@ contains
                     json_number(e(i)%value, e(i)%defined)//','
             end if
         end do
-        call write_json_intervals(u, m, s%intervals)
+        call write_json_intervals(u, m, s%intervals, s%slip_intervals)
         write (u, '(a)') '  },'
         call write_json_errors(u, e, adapted)
         if (adapted) call write_json_adaptation(u, adaptation)
@@ -239,28 +240,41 @@ contains
         write (u, '(a)') '  },'
     end subroutine write_json_adaptation
 
-    subroutine write_json_intervals(u, m, iv)
+    !> "contact_intervals", "liftoff_intervals" (iv) and "slip_intervals" (slip).
+    subroutine write_json_intervals(u, m, iv, slip)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
-        type(interval_t), intent(in) :: iv(:)
+        type(interval_t), intent(in) :: iv(:), slip(:)
         real(dp) :: scale
         integer :: k
         logical :: first
-        character(len=*), parameter :: kinds(2) = ['contact_intervals', 'liftoff_intervals']
+        character(len=*), parameter :: kinds(3) = [character(len=17) :: 'contact_intervals', &
+                                                   'liftoff_intervals', 'slip_intervals']
         integer :: j
         scale = merge(1.0_dp/m%length, 1.0_dp, m%nondim)
-        do j = 1, 2
-            write (u, '(a)', advance='no') '    "'//kinds(j)//'": ['
+        do j = 1, 3
+            write (u, '(a)', advance='no') '    "'//trim(kinds(j))//'": ['
             first = .true.
-            do k = 1, size(iv)
-                if (iv(k)%contact .neqv. (j == 1)) cycle
-                if (.not. first) write (u, '(a)', advance='no') ', '
-                write (u, '(a)', advance='no') '['//json_number(iv(k)%x1*scale, .true.)//', '// &
-                    json_number(iv(k)%x2*scale, .true.)//']'
-                first = .false.
-            end do
-            write (u, '(a)') merge(']  ', '], ', j == 2)
+            if (j < 3) then
+                do k = 1, size(iv)
+                    if (iv(k)%contact .neqv. (j == 1)) cycle
+                    call pair(iv(k))
+                end do
+            else
+                do k = 1, size(slip)
+                    call pair(slip(k))
+                end do
+            end if
+            write (u, '(a)') merge(']  ', '], ', j == 3)
         end do
+    contains
+        subroutine pair(one)
+            type(interval_t), intent(in) :: one
+            if (.not. first) write (u, '(a)', advance='no') ', '
+            write (u, '(a)', advance='no') '['//json_number(one%x1*scale, .true.)//', '// &
+                json_number(one%x2*scale, .true.)//']'
+            first = .false.
+        end subroutine pair
     end subroutine write_json_intervals
 
     subroutine write_json_checks(u, sol, tab, s)
@@ -272,6 +286,9 @@ contains
         write (u, '(a)') '    "equilibrium": '//json_number(s%equilibrium, .true.)//','
         write (u, '(a)') '    "residual_structure": '//json_number(sol%residual(1), .true.)//','
         write (u, '(a)') '    "residual_interface": '//json_number(sol%residual(2), .true.)//','
+        write (u, '(a)') '    "interface_law_traction_error": '// &
+            json_number(sol%law_residual, .true.)//','
+        write (u, '(a)') '    "check_limit": '//json_number(check_limit, .true.)//','
         write (u, '(a)') '    "complementarity": '//json_number(tab%complementarity, .true.)//','
         write (u, '(a)') '    "compatibility": '//json_number(tab%compatibility, .true.)//','
         write (u, '(a)') '    "friction_admissibility": '//json_number(s%admissibility, .true.)//','
@@ -939,7 +956,7 @@ contains
             write (u, '(3x,a)') '(*) no error estimate: it needs N_e >= 16 (two coarser meshes '// &
                 'of at least 4 elements) and coarse solves that converge'
         end if
-        call write_intervals(u, m, s%intervals)
+        call write_intervals(u, m, s%intervals, s%slip_intervals)
         if (s%edge_in_contact) then
             write (u, '(3x,a)') 'The pressure at an edge in contact is singular in theory: the '// &
                 'station maximum there depends on the mesh;'
@@ -963,10 +980,11 @@ contains
         text = trim(buf)
     end function order_text
 
-    subroutine write_intervals(u, m, iv)
+    subroutine write_intervals(u, m, iv, slip)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         type(interval_t), intent(in) :: iv(:)
+        type(interval_t), intent(in) :: slip(:)     !! where the base slips
         type(units_t) :: un
         real(dp) :: scale
         integer :: k
@@ -978,6 +996,13 @@ contains
             write (u, '(6x,a,f12.5,a,f12.5)') merge('contact  from', 'lift-off from', iv(k)%contact), &
                 iv(k)%x1*scale, ' to', iv(k)%x2*scale
         end do
+        do k = 1, size(slip)
+            write (u, '(6x,a,f12.5,a,f12.5,a)') 'slip     from', slip(k)%x1*scale, ' to', &
+                slip(k)%x2*scale, trim(merge(' (f = 0: all contact slips)', &
+                                              '                           ', m%f == 0.0_dp))
+        end do
+        if (size(slip) == 0 .and. any(iv%contact)) write (u, '(6x,a)') &
+            'no slip: the base sticks wherever it is in contact'
     end subroutine write_intervals
 
     subroutine write_checks(u, m, sol, tab, s)
@@ -989,8 +1014,12 @@ contains
         real(dp) :: v
         v = total_vertical_load(m)
         write (u, '(/,a)') ' 8. CHECKS'
-        write (u, '(3x,a,es10.2,a,es10.2)') 'residual of 4.2a (equilibrium of the structure) ', &
-            sol%residual(1), '   of 4.2b (interface law) ', sol%residual(2)
+        write (u, '(3x,a,es10.2,a,es8.1,a)') 'residual of 4.2a (equilibrium of the structure) ', &
+            sol%residual(1), '  (limit ', check_limit, ')'
+        write (u, '(3x,a,es10.2,a,es8.1,a)') 'interface law 4.2b as a traction error          ', &
+            sol%law_residual, '  (of max |r|; limit ', check_limit, ')'
+        write (u, '(3x,a,es10.2,a)') 'plain residual of 4.2b                          ', &
+            sol%residual(2), '  (carries 1/eps_bar and 1/eta_bar: not a measure of accuracy)'
         write (u, '(3x,a,2es16.8,a,es9.2)') 'vertical:   reaction, load ', sol%reaction(1), &
             sol%applied(1), '  rel.diff ', rel_diff(sol%reaction(1), sol%applied(1), v)
         write (u, '(3x,a,2es16.8,a,es9.2)') 'horizontal: reaction, load ', sol%reaction(2), &
