@@ -1030,7 +1030,8 @@ contains
         write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z gap|/max W at lift-off '// &
             'stations ', tab%complementarity, '  (penalty: O(eta_bar))'
         write (u, '(3x,a,es10.2,a)') 'compatibility max |pointwise gap|/max w at contact '// &
-            'stations ', tab%compatibility, '  (error of the weak contact condition)'
+            'stations ', tab%compatibility, '  (discretisation error of the weak contact '// &
+            'condition: falls as the mesh is refined; no pass/fail)'
         write (u, '(3x,a,es10.2,a,i0,a)') 'minimum station Sigma_z (< 0: tension) ', &
             nondim_sigma(m, tab%most_tensile), ' (', s%n_tension_flags, &
             ' stations beyond O(eta) flagged !T)'
