@@ -343,7 +343,7 @@ contains
         e = summary_entries(m, s, contact_extent(tab, m%length))
         t_summary = now() - t0
         t0 = now()
-        call estimate_errors(m, d, e, sol%coarse)
+        call estimate_errors(m, d, e, sol%coarse, s%edge_in_contact)
         t_estimate = now() - t0
     end subroutine time_results
 

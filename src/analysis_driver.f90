@@ -337,7 +337,7 @@ contains
             if (result%adaptation%adapted) then
                 call take_adapted_estimates(result)
             else if (estimates) then
-                call estimate_errors(m, d, result%entries, sol%coarse)
+                call estimate_errors(m, d, result%entries, sol%coarse, s%edge_in_contact)
             end if
             result%mean_pressure = s%mean_pressure
         end if

@@ -28,8 +28,6 @@ set output png
 if (csv) { set datafile separator comma; skip_rows = 1 } else { set datafile separator whitespace; skip_rows = 0 }
 set datafile missing NaN
 
-# the peak labels sit on an opaque box: a steep curve beside its clipped marker may cross them
-set style textbox opaque noborder margins 0.5,0.3
 # ---- edges, clip levels ------------------------------------------------------------------
 stats data skip skip_rows u c_x nooutput
 x_lo = STATS_min
@@ -72,6 +70,7 @@ do for [k=1:n_zones] {
 
 # ---- loads: dashed orange verticals (point, ring, moment), an orange band on top (patch) ----
 c_load = '#e07000'
+c_load_text = '#8a3b00'   # the load words: dark enough to read on the band's colour
 do for [k=1:n_loads] {
     if (load_kind[k] eq 'D') {
         set object 100+k rect from first load_x1[k], graph 0.955 to first load_x2[k], graph 1 \
@@ -89,9 +88,9 @@ load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] eq 'R') ? 'ring' : (l
 # run into the frame)
 do for [k=1:n_loads] {
     if (load_kind[k] eq 'M' || load_x1[k] > x_hi - 0.1*(x_hi - x_lo)) {
-        set label 300+k load_word(k) at first load_x1[k], graph 0.955 right offset -0.6,0 front tc rgb c_load
+        set label 300+k load_word(k) at first load_x1[k], graph 0.955 right offset -0.6,0 front tc rgb c_load_text
     } else {
-        set label 300+k load_word(k) at first load_x1[k], graph 0.955 left offset 0.6,0 front tc rgb c_load
+        set label 300+k load_word(k) at first load_x1[k], graph 0.955 left offset 0.6,0 front tc rgb c_load_text
     }
 }
 
@@ -129,21 +128,22 @@ if (line_width > 0) {
     set ytics nomirror
     set link y2 via y*line_width inverse y/line_width
 }
+# the true peaks are written in the legend, where no curve can cross them (beside their
+# markers a steep curve did, and an opaque box hid the curve)
+p_peaks = ''
 if (p_cut) {
     stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? 1/0 : column(c_p)) nooutput
-    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip right offset -1.5,-1.1 front boxed tc rgb '#c00000'
+    p_peaks = sprintf('%.4g %s', STATS_max_y, p_unit)
     if (is_beam) {
         stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? column(c_p) : 1/0) nooutput
         if (STATS_max_y > p_clip*1.0001) {
-            set label 202 sprintf(' peak %.4g %s', STATS_max_y, p_unit) at first STATS_pos_max_y, first p_clip left offset 1.5,-1.1 front boxed tc rgb '#c00000'
+            p_peaks = sprintf('%.4g (left), ', STATS_max_y).p_peaks.' (right)'
         }
     }
 }
-clip_marks = p_cut ? "data skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped (true peak written)'" : "NaN notitle"
+clip_marks = p_cut ? "data skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped, peak '.p_peaks" : "NaN notitle"
 plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \
      @clip_marks, @zero_line, @dummy_zone, @dummy_load
-unset label 201
-unset label 202
 unset y2label
 unset y2tics
 unset link y2
@@ -152,20 +152,13 @@ set ytics mirror
 # 3 shear traction with the friction limit +-f p. The limit is drawn unclipped in a y range
 # fixed at 1.15 times the clip level: where it leaves the frame it is seen to lie above the
 # clipped markers (both clipped to one level, a sticking station looked as if on the limit).
-# The true peak is written beside its clipped marker.
+# The true peak is written in the legend; slipping stations are marked over clipped ones.
 set title s_cut ? sprintf('Shear traction on the soil (clipped at %.4g %s)', s_clip, p_unit) : 'Shear traction on the soil'
 set ylabel lab_s
+s_peak = 0
 if (s_cut) {
-    stats data skip skip_rows u c_x:(abs(column(c_s))) nooutput
-    s_peak_x = STATS_pos_max_y
-    s_peak = STATS_max_y
-    stats data skip skip_rows u ((abs(column(c_x) - s_peak_x) < 1e-12*(x_hi - x_lo + 1)) ? column(c_s) : 1/0) nooutput
-    s_peak_y = (STATS_max > 0) ? s_clip : -s_clip
-    if (s_peak_x > 0.5*(x_lo + x_hi)) {
-        set label 203 sprintf('peak |%s| %.4g %s ', key_s, s_peak, p_unit) at first s_peak_x, first s_peak_y right offset -1.5,(s_peak_y > 0 ? -1.1 : 1.1) front boxed tc rgb '#c00000'
-    } else {
-        set label 203 sprintf(' peak |%s| %.4g %s', key_s, s_peak, p_unit) at first s_peak_x, first s_peak_y left offset 1.5,(s_peak_y > 0 ? -1.1 : 1.1) front boxed tc rgb '#c00000'
-    }
+    stats data skip skip_rows u (abs(column(c_s))) nooutput
+    s_peak = STATS_max
 }
 stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) nooutput
 n_slip = STATS_sum
@@ -173,11 +166,10 @@ n_slip = STATS_sum
 s_span = (s_clip > 0) ? 1.15*s_clip : 1
 set yrange [-s_span:s_span]
 slip_marks = (n_slip > 0) ? "data skip skip_rows u c_x:((column(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps 1.1 lc rgb '#ff7f0e' t 'slipping station'" : "NaN notitle"
-clip_marks = s_cut ? "data skip skip_rows u c_x:((abs(column(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped'" : "NaN notitle"
+clip_marks = s_cut ? "data skip skip_rows u c_x:((abs(column(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t sprintf('clipped, peak %.4g %s', s_peak, p_unit)" : "NaN notitle"
 envelope = (friction > 0) ? "data skip skip_rows u c_x:(friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' t sprintf('+-f %s (f = %g)', key_p, friction), data skip skip_rows u c_x:(-friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' notitle" : "NaN notitle"
 plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \
-     @slip_marks, @clip_marks, @envelope, @zero_line, @dummy_zone, @dummy_load
-unset label 203
+     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy_zone, @dummy_load
 set yrange [*:*]
 
 # 4 bending moments

@@ -17,7 +17,8 @@
 !! OUTPUT card's stations).
 module design_summary
     use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, total_vertical_load, friction_compliance
+    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, LOAD_RING, &
+                     total_vertical_load, friction_compliance
     use contact_solver, only: solution_t
     use interface_law, only: STATE_LIFTOFF, STATE_SLIP, admissible_excess
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q, Q_SLIP
@@ -54,6 +55,10 @@ module design_summary
         real(dp) :: contact_area = 0.0_dp             !! [L^2]
         real(dp) :: mean_pressure = 0.0_dp            !! V / contact area [F/L^2]
         type(located_t) :: pressure_max               !! largest station pressure [F/L^2]
+        logical :: pressure_max_singular = .false.    !! it is at an edge in contact or under
+                                                      !! a POINT or RING load (singular there)
+        logical :: point_on_plate = .false.           !! a POINT load on the plate's axis: w,
+                                                      !! M_r, M_theta, Q_r unbounded there
         real(dp) :: edge_distance = 0.0_dp            !! h [L]
         real(dp) :: edge_pressure(2) = 0.0_dp         !! at h from the left end / the rim [F/L^2]
         logical :: edge_point_in_contact(2) = .false. !! that point is on the base, in contact
@@ -111,24 +116,15 @@ contains
         end do pairs
     end subroutine settlement_values
 
-    !> Mean settlement over the base (trapezoid over the stations, weight 2 pi r for the plate)
-    !! and the secant modulus of subgrade reaction (V / base area) / w_mean.
+    !> Mean settlement over the base (station_results: the finite-element w integrated, plate
+    !! weight 2 pi r, the same whatever the stations) and the secant modulus of subgrade
+    !! reaction (V / base area) / w_mean.
     pure subroutine mean_settlement(m, tab, s)
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(inout) :: s
-        real(dp) :: wa, wb, w_sum, wt_sum, dx, base
-        integer :: i
-        w_sum = 0.0_dp
-        wt_sum = 0.0_dp
-        do i = 1, tab%n - 1
-            dx = tab%val(Q_X, i + 1) - tab%val(Q_X, i)
-            wa = merge(1.0_dp, tab%val(Q_X, i), m%kind == MODEL_BEAM)
-            wb = merge(1.0_dp, tab%val(Q_X, i + 1), m%kind == MODEL_BEAM)
-            w_sum = w_sum + 0.5_dp*(wa*tab%val(Q_W, i) + wb*tab%val(Q_W, i + 1))*dx
-            wt_sum = wt_sum + 0.5_dp*(wa + wb)*dx
-        end do
-        s%w_mean = w_sum/wt_sum
+        real(dp) :: base
+        s%w_mean = tab%w_mean
         base = merge(m%length*m%b, pi*m%length**2, m%kind == MODEL_BEAM)
         s%subgrade_modulus = 0.0_dp
         if (s%w_mean > 0.0_dp) s%subgrade_modulus = total_vertical_load(m)/base/s%w_mean
@@ -160,6 +156,8 @@ contains
         s%mean_pressure = 0.0_dp
         if (s%contact_area > 0.0_dp) s%mean_pressure = total_vertical_load(m)/s%contact_area
         s%pressure_max = located_max(tab, tab%val(Q_SZ, :)/width)
+        s%pressure_max_singular = at_singular_point(m, tab, s%pressure_max%x)
+        s%point_on_plate = m%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)
         s%edge_distance = m%h
         x0 = tab%val(Q_X, 1)
         x1 = tab%val(Q_X, tab%n)
@@ -178,9 +176,10 @@ contains
     end subroutine contact_values
 
     !> The pressure at the centre x = 0 (the plate's axis, the middle of a beam), under the
-    !! load of most footings. Not defined when x = 0 is off the base, or when a concentrated
-    !! load (beam POINT or MOMENT, plate RING at r = 0) acts there: the Mindlin plate's or
-    !! beam's pressure is singular under it (1/r, log), and no mesh converges to a value.
+    !! load of most footings. Not defined when x = 0 is off the base or lifted off (the
+    !! station nearest to it), or when a concentrated load (beam POINT or MOMENT, plate RING
+    !! at r = 0) acts there: the Mindlin plate's or beam's pressure is singular under it
+    !! (1/r, log), and no mesh converges to a value.
     pure subroutine centre_value(m, tab, width, s)
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
@@ -192,6 +191,7 @@ contains
         x1 = tab%val(Q_X, tab%n)
         tol = 1.0e-9_dp*(x1 - x0)
         s%centre_defined = x0 <= tol .and. x1 >= -tol
+        if (s%centre_defined) s%centre_defined = in_contact_at(tab, 0.0_dp)
         do k = 1, size(m%loads)
             if (m%loads(k)%kind /= LOAD_PATCH .and. abs(m%loads(k)%x1) <= tol) &
                 s%centre_defined = .false.
@@ -255,11 +255,14 @@ contains
         type(station_table_t), intent(in) :: tab
         real(dp), intent(in) :: moment(:)
         type(located_t), intent(out) :: sag, hog
+        real(dp) :: noise
+        ! a moment within round-off of zero (a free end's 4e-12 of 3000 kN m) has no sign
+        noise = 1.0e-9_dp*maxval(abs(moment))
         hog = located_max(tab, moment)
-        hog%defined = hog%value > 0.0_dp
+        hog%defined = hog%value > noise
         sag = located_max(tab, -moment)
         sag%value = -sag%value
-        sag%defined = sag%value < 0.0_dp
+        sag%defined = sag%value < -noise
     end subroutine moment_extremes
 
     pure subroutine check_values(m, sol, tab, s)
@@ -301,6 +304,26 @@ contains
         i = maxloc(y, dim=1)
         loc = located_t(y(i), tab%val(Q_X, i))
     end function located_max
+
+    !> Whether the contact pressure is singular at x: an end of the base in contact (the
+    !! half-space's edge singularity; the plate's axis is no edge) or a POINT or RING load
+    !! (a kink of the settlement: logarithmic).
+    pure logical function at_singular_point(m, tab, x)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: x
+        real(dp) :: tol
+        integer :: k
+        tol = 1.0e-9_dp*(tab%val(Q_X, tab%n) - tab%val(Q_X, 1))
+        at_singular_point = abs(x - tab%val(Q_X, tab%n)) <= tol .and. &
+                            tab%state(tab%n) /= STATE_LIFTOFF
+        if (m%kind == MODEL_BEAM) at_singular_point = at_singular_point .or. &
+            (abs(x - tab%val(Q_X, 1)) <= tol .and. tab%state(1) /= STATE_LIFTOFF)
+        do k = 1, size(m%loads)
+            if (m%loads(k)%kind /= LOAD_POINT .and. m%loads(k)%kind /= LOAD_RING) cycle
+            at_singular_point = at_singular_point .or. abs(x - m%loads(k)%x1) <= tol
+        end do
+    end function at_singular_point
 
     !> Whether x is in contact: the state of the station nearest to x (the contact intervals'
     !! boundaries lie midway between stations, contact_intervals).

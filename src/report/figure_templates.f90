@@ -13,7 +13,7 @@ contains
     !> The lines of scripts/gnuplot/fricon_panels.gp.
     pure function panel_template() result(lines)
         character(len=line_length), allocatable :: lines(:)
-        allocate (lines(225))
+        allocate (lines(217))
         lines(1) = "# fricon figure of one case: six panels from the station fil" &
             //"e of the case."
         lines(2) = "# fricon writes output/CASE.gp: the settings below, then thi" &
@@ -63,170 +63,169 @@ contains
             //"e { set datafile separator whitespace; skip_rows = 0 }"
         lines(29) = "set datafile missing NaN"
         lines(30) = ""
-        lines(31) = "# the peak labels sit on an opaque box: a steep curve beside" &
-            //" its clipped marker may cross them"
-        lines(32) = "set style textbox opaque noborder margins 0.5,0.3"
-        lines(33) = "# ---- edges, clip levels ----------------------------------" &
+        lines(31) = "# ---- edges, clip levels ----------------------------------" &
             //"--------------------------------"
-        lines(34) = "stats data skip skip_rows u c_x nooutput"
-        lines(35) = "x_lo = STATS_min"
-        lines(36) = "x_hi = STATS_max"
-        lines(37) = "is_beam = (model eq 'BEAM')"
-        lines(38) = "near_edge(x) = (x > x_hi - edge_d) || (is_beam && x < x_lo +" &
+        lines(32) = "stats data skip skip_rows u c_x nooutput"
+        lines(33) = "x_lo = STATS_min"
+        lines(34) = "x_hi = STATS_max"
+        lines(35) = "is_beam = (model eq 'BEAM')"
+        lines(36) = "near_edge(x) = (x > x_hi - edge_d) || (is_beam && x < x_lo +" &
             //" edge_d)"
-        lines(39) = "stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : co" &
+        lines(37) = "stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : co" &
             //"lumn(c_p)) nooutput"
-        lines(40) = "p_inner = clip_inner*STATS_max"
-        lines(41) = "stats data skip skip_rows u c_x:c_p nooutput"
-        lines(42) = "p_top = STATS_max_y"
-        lines(43) = "p_clip = (clip_factor*p_mean > p_inner) ? clip_factor*p_mean" &
+        lines(38) = "p_inner = clip_inner*STATS_max"
+        lines(39) = "stats data skip skip_rows u c_x:c_p nooutput"
+        lines(40) = "p_top = STATS_max_y"
+        lines(41) = "p_clip = (clip_factor*p_mean > p_inner) ? clip_factor*p_mean" &
             //" : p_inner"
-        lines(44) = "p_rule = (clip_factor*p_mean > p_inner) ? sprintf('%g x mean" &
+        lines(42) = "p_rule = (clip_factor*p_mean > p_inner) ? sprintf('%g x mean" &
             //" %.4g', clip_factor, p_mean) : sprintf('%g x largest value a" &
             //"way from the edges', clip_inner)"
-        lines(45) = "p_cut = (p_top > p_clip*1.0001)"
-        lines(46) = "stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : ab" &
+        lines(43) = "p_cut = (p_top > p_clip*1.0001)"
+        lines(44) = "stats data skip skip_rows u (near_edge(column(c_x)) ? 0 : ab" &
             //"s(column(c_s))) nooutput"
-        lines(47) = "s_inner = clip_inner*STATS_max"
-        lines(48) = "stats data skip skip_rows u (abs(column(c_s))) nooutput"
-        lines(49) = "s_top = STATS_max"
-        lines(50) = "s_clip = (friction*p_clip > s_inner) ? friction*p_clip : s_i" &
+        lines(45) = "s_inner = clip_inner*STATS_max"
+        lines(46) = "stats data skip skip_rows u (abs(column(c_s))) nooutput"
+        lines(47) = "s_top = STATS_max"
+        lines(48) = "s_clip = (friction*p_clip > s_inner) ? friction*p_clip : s_i" &
             //"nner"
-        lines(51) = "s_cut = (s_top > s_clip*1.0001) && (s_clip > 1e-6*p_clip)"
-        lines(52) = "if (!s_cut && s_top > s_clip) s_clip = s_top"
-        lines(53) = "clip_p(v) = (v > p_clip) ? p_clip : v"
-        lines(54) = "clip_s(v) = (v > s_clip) ? s_clip : ((v < -s_clip) ? -s_clip" &
+        lines(49) = "s_cut = (s_top > s_clip*1.0001) && (s_clip > 1e-6*p_clip)"
+        lines(50) = "if (!s_cut && s_top > s_clip) s_clip = s_top"
+        lines(51) = "clip_p(v) = (v > p_clip) ? p_clip : v"
+        lines(52) = "clip_s(v) = (v > s_clip) ? s_clip : ((v < -s_clip) ? -s_clip" &
             //" : v)"
-        lines(55) = "x_mid = is_beam ? 0.5*(x_lo + x_hi) : x_lo - 1"
-        lines(56) = ""
-        lines(57) = "# ---- lift-off zones (state 0), from one pass over the stat" &
+        lines(53) = "x_mid = is_beam ? 0.5*(x_lo + x_hi) : x_lo - 1"
+        lines(54) = ""
+        lines(55) = "# ---- lift-off zones (state 0), from one pass over the stat" &
             //"ions ------------------------------"
-        lines(58) = "zones = ''"
-        lines(59) = "prev_state = -1"
-        lines(60) = "prev_x = 0"
-        lines(61) = "zone_start = 0"
-        lines(62) = "stats data skip skip_rows u (st = column(c_state), xx = colu" &
+        lines(56) = "zones = ''"
+        lines(57) = "prev_state = -1"
+        lines(58) = "prev_x = 0"
+        lines(59) = "zone_start = 0"
+        lines(60) = "stats data skip skip_rows u (st = column(c_state), xx = colu" &
             //"mn(c_x), \"
-        lines(63) = "    ((st == 0 && prev_state != 0) ? (zone_start = (prev_stat" &
+        lines(61) = "    ((st == 0 && prev_state != 0) ? (zone_start = (prev_stat" &
             //"e < 0) ? xx : 0.5*(xx + prev_x)) : 0), \"
-        lines(64) = "    ((st != 0 && prev_state == 0) ? (zones = zones.sprintf('" &
+        lines(62) = "    ((st != 0 && prev_state == 0) ? (zones = zones.sprintf('" &
             //" %.12g %.12g', zone_start, 0.5*(xx + prev_x))) : 0), \"
-        lines(65) = "    prev_state = st, prev_x = xx, 0) nooutput"
-        lines(66) = "if (prev_state == 0) { zones = zones.sprintf(' %.12g %.12g'," &
+        lines(63) = "    prev_state = st, prev_x = xx, 0) nooutput"
+        lines(64) = "if (prev_state == 0) { zones = zones.sprintf(' %.12g %.12g'," &
             //" zone_start, prev_x) }"
-        lines(67) = "n_zones = words(zones)/2"
-        lines(68) = "do for [k=1:n_zones] {"
-        lines(69) = "    set object k rect from first real(word(zones, 2*k-1)), g" &
+        lines(65) = "n_zones = words(zones)/2"
+        lines(66) = "do for [k=1:n_zones] {"
+        lines(67) = "    set object k rect from first real(word(zones, 2*k-1)), g" &
             //"raph 0 to first real(word(zones, 2*k)), graph 1 \"
-        lines(70) = "        behind fc rgb '#c8c8c8' fs solid 0.45 noborder"
-        lines(71) = "}"
-        lines(72) = ""
-        lines(73) = "# ---- loads: dashed orange verticals (point, ring, moment)," &
+        lines(68) = "        behind fc rgb '#c8c8c8' fs solid 0.45 noborder"
+        lines(69) = "}"
+        lines(70) = ""
+        lines(71) = "# ---- loads: dashed orange verticals (point, ring, moment)," &
             //" an orange band on top (patch) ----"
-        lines(74) = "c_load = '#e07000'"
-        lines(75) = "do for [k=1:n_loads] {"
-        lines(76) = "    if (load_kind[k] eq 'D') {"
-        lines(77) = "        set object 100+k rect from first load_x1[k], graph 0" &
+        lines(72) = "c_load = '#e07000'"
+        lines(73) = "c_load_text = '#8a3b00'   # the load words: dark enough to r" &
+            //"ead on the band's colour"
+        lines(74) = "do for [k=1:n_loads] {"
+        lines(75) = "    if (load_kind[k] eq 'D') {"
+        lines(76) = "        set object 100+k rect from first load_x1[k], graph 0" &
             //".955 to first load_x2[k], graph 1 \"
-        lines(78) = "            front fc rgb c_load fs solid 0.55 noborder"
-        lines(79) = "        set arrow 100+2*k from first load_x1[k], graph 0 to " &
+        lines(77) = "            front fc rgb c_load fs solid 0.55 noborder"
+        lines(78) = "        set arrow 100+2*k from first load_x1[k], graph 0 to " &
             //"first load_x1[k], graph 1 nohead back dt 3 lw 1 lc rgb c_loa" &
             //"d"
-        lines(80) = "        set arrow 101+2*k from first load_x2[k], graph 0 to " &
+        lines(79) = "        set arrow 101+2*k from first load_x2[k], graph 0 to " &
             //"first load_x2[k], graph 1 nohead back dt 3 lw 1 lc rgb c_loa" &
             //"d"
-        lines(81) = "    } else {"
-        lines(82) = "        set arrow 100+2*k from first load_x1[k], graph 0 to " &
+        lines(80) = "    } else {"
+        lines(81) = "        set arrow 100+2*k from first load_x1[k], graph 0 to " &
             //"first load_x1[k], graph 1 nohead back dt 2 lw 1.5 lc rgb c_l" &
             //"oad"
-        lines(83) = "        set arrow 101+2*k from first load_x1[k], graph 1 to " &
+        lines(82) = "        set arrow 101+2*k from first load_x1[k], graph 1 to " &
             //"first load_x1[k], graph 0.93 head filled size graph 0.012,25" &
             //" front lw 2 lc rgb c_load"
-        lines(84) = "    }"
-        lines(85) = "}"
-        lines(86) = "# the kind of each concentrated load, written beside its arr" &
+        lines(83) = "    }"
+        lines(84) = "}"
+        lines(85) = "# the kind of each concentrated load, written beside its arr" &
             //"ow on the settlement panel"
-        lines(87) = "load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] e" &
+        lines(86) = "load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] e" &
             //"q 'R') ? 'ring' : (load_kind[k] eq 'M') ? 'M' : ''"
-        lines(88) = "# (left of the arrow for a moment, and for a load in the rig" &
+        lines(87) = "# (left of the arrow for a moment, and for a load in the rig" &
             //"ht tenth, where the word would"
-        lines(89) = "# run into the frame)"
-        lines(90) = "do for [k=1:n_loads] {"
-        lines(91) = "    if (load_kind[k] eq 'M' || load_x1[k] > x_hi - 0.1*(x_hi" &
+        lines(88) = "# run into the frame)"
+        lines(89) = "do for [k=1:n_loads] {"
+        lines(90) = "    if (load_kind[k] eq 'M' || load_x1[k] > x_hi - 0.1*(x_hi" &
             //" - x_lo)) {"
-        lines(92) = "        set label 300+k load_word(k) at first load_x1[k], gr" &
-            //"aph 0.955 right offset -0.6,0 front tc rgb c_load"
-        lines(93) = "    } else {"
-        lines(94) = "        set label 300+k load_word(k) at first load_x1[k], gr" &
-            //"aph 0.955 left offset 0.6,0 front tc rgb c_load"
-        lines(95) = "    }"
-        lines(96) = "}"
-        lines(97) = ""
-        lines(98) = "set multiplot layout 3,2 title title.""\n"" font 'Sans,14'"
-        lines(99) = "set grid"
-        lines(100) = "set format y '%g'"
-        lines(101) = "set format y2 '%g'"
-        lines(102) = "set key outside top center horizontal samplen 2.5 font ',10'" &
+        lines(91) = "        set label 300+k load_word(k) at first load_x1[k], gr" &
+            //"aph 0.955 right offset -0.6,0 front tc rgb c_load_text"
+        lines(92) = "    } else {"
+        lines(93) = "        set label 300+k load_word(k) at first load_x1[k], gr" &
+            //"aph 0.955 left offset 0.6,0 front tc rgb c_load_text"
+        lines(94) = "    }"
+        lines(95) = "}"
+        lines(96) = ""
+        lines(97) = "set multiplot layout 3,2 title title.""\n"" font 'Sans,14'"
+        lines(98) = "set grid"
+        lines(99) = "set format y '%g'"
+        lines(100) = "set format y2 '%g'"
+        lines(101) = "set key outside top center horizontal samplen 2.5 font ',10'" &
             //" spacing 1.0 nobox"
-        lines(103) = "set autoscale xfix"
-        lines(104) = "set xrange [x_lo:x_hi]"
-        lines(105) = "set xlabel lab_x"
-        lines(106) = "set lmargin 12"
-        lines(107) = "set rmargin 11"
-        lines(108) = "set offsets 0, 0, graph 0.10, graph 0.06"
-        lines(109) = "zero_line = ""0 w l lw 1 lc rgb '#606060' notitle"""
-        lines(110) = "dummy_zone = (n_zones > 0) ? ""NaN w boxes fs solid 0.45 nob" &
+        lines(102) = "set autoscale xfix"
+        lines(103) = "set xrange [x_lo:x_hi]"
+        lines(104) = "set xlabel lab_x"
+        lines(105) = "set lmargin 12"
+        lines(106) = "set rmargin 11"
+        lines(107) = "set offsets 0, 0, graph 0.10, graph 0.06"
+        lines(108) = "zero_line = ""0 w l lw 1 lc rgb '#606060' notitle"""
+        lines(109) = "dummy_zone = (n_zones > 0) ? ""NaN w boxes fs solid 0.45 nob" &
             //"order fc rgb '#c8c8c8' t 'lift-off zone'"" : ""NaN notitle"""
-        lines(111) = "dummy_load = ""NaN w l dt 2 lw 1.5 lc rgb c_load t 'load pos" &
+        lines(110) = "dummy_load = ""NaN w l dt 2 lw 1.5 lc rgb c_load t 'load pos" &
             //"ition'"""
-        lines(112) = ""
-        lines(113) = "# 1 settlement, down positive; soil surface where it leaves " &
+        lines(111) = ""
+        lines(112) = "# 1 settlement, down positive; soil surface where it leaves " &
             //"the structure"
-        lines(114) = "set title 'Settlement (down positive)'"
-        lines(115) = "set ylabel lab_w"
-        lines(116) = "set yrange [*:*] reverse"
-        lines(117) = "plot data skip skip_rows u c_x:c_w w lp pt 7 ps 0.45 lw 2 lc" &
+        lines(113) = "set title 'Settlement (down positive)'"
+        lines(114) = "set ylabel lab_w"
+        lines(115) = "set yrange [*:*] reverse"
+        lines(116) = "plot data skip skip_rows u c_x:c_w w lp pt 7 ps 0.45 lw 2 lc" &
             //" rgb '#1f77b4' t key_w.' (structure)', \"
-        lines(118) = "     '' skip skip_rows u c_x:(column(c_w) + column(c_gap)) w" &
+        lines(117) = "     '' skip skip_rows u c_x:(column(c_w) + column(c_gap)) w" &
             //" l dt 2 lw 1.5 lc rgb '#404040' t 'soil surface', \"
-        lines(119) = "     @dummy_zone, @dummy_load"
-        lines(120) = "set yrange [*:*] noreverse"
-        lines(121) = "do for [k=1:n_loads] { unset label 300+k }"
-        lines(122) = ""
-        lines(123) = "# 2 contact pressure, edge spike clipped and marked"
-        lines(124) = "set title p_cut ? sprintf('Contact pressure (clipped at %.4g" &
+        lines(118) = "     @dummy_zone, @dummy_load"
+        lines(119) = "set yrange [*:*] noreverse"
+        lines(120) = "do for [k=1:n_loads] { unset label 300+k }"
+        lines(121) = ""
+        lines(122) = "# 2 contact pressure, edge spike clipped and marked"
+        lines(123) = "set title p_cut ? sprintf('Contact pressure (clipped at %.4g" &
             //" %s: %s)', p_clip, p_unit, p_rule) : 'Contact pressure'"
-        lines(125) = "set ylabel lab_p"
-        lines(126) = "if (line_width > 0) {"
-        lines(127) = "    set y2label lab_line"
-        lines(128) = "    set y2tics"
-        lines(129) = "    set ytics nomirror"
-        lines(130) = "    set link y2 via y*line_width inverse y/line_width"
-        lines(131) = "}"
-        lines(132) = "if (p_cut) {"
-        lines(133) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
+        lines(124) = "set ylabel lab_p"
+        lines(125) = "if (line_width > 0) {"
+        lines(126) = "    set y2label lab_line"
+        lines(127) = "    set y2tics"
+        lines(128) = "    set ytics nomirror"
+        lines(129) = "    set link y2 via y*line_width inverse y/line_width"
+        lines(130) = "}"
+        lines(131) = "# the true peaks are written in the legend, where no curve c" &
+            //"an cross them (beside their"
+        lines(132) = "# markers a steep curve did, and an opaque box hid the curve" &
+            //")"
+        lines(133) = "p_peaks = ''"
+        lines(134) = "if (p_cut) {"
+        lines(135) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
             //" 1/0 : column(c_p)) nooutput"
-        lines(134) = "    set label 201 sprintf('peak %.4g %s ', STATS_max_y, p_un" &
-            //"it) at first STATS_pos_max_y, first p_clip right offset -1.5" &
-            //",-1.1 front boxed tc rgb '#c00000'"
-        lines(135) = "    if (is_beam) {"
-        lines(136) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
+        lines(136) = "    p_peaks = sprintf('%.4g %s', STATS_max_y, p_unit)"
+        lines(137) = "    if (is_beam) {"
+        lines(138) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
             //"d) ? column(c_p) : 1/0) nooutput"
-        lines(137) = "        if (STATS_max_y > p_clip*1.0001) {"
-        lines(138) = "            set label 202 sprintf(' peak %.4g %s', STATS_max" &
-            //"_y, p_unit) at first STATS_pos_max_y, first p_clip left offs" &
-            //"et 1.5,-1.1 front boxed tc rgb '#c00000'"
-        lines(139) = "        }"
-        lines(140) = "    }"
-        lines(141) = "}"
-        lines(142) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
+        lines(139) = "        if (STATS_max_y > p_clip*1.0001) {"
+        lines(140) = "            p_peaks = sprintf('%.4g (left), ', STATS_max_y)." &
+            //"p_peaks.' (right)'"
+        lines(141) = "        }"
+        lines(142) = "    }"
+        lines(143) = "}"
+        lines(144) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
             //"p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '" &
-            //"#c00000' t 'clipped (true peak written)'"" : ""NaN notitle"""
-        lines(143) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
+            //"#c00000' t 'clipped, peak '.p_peaks"" : ""NaN notitle"""
+        lines(145) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \"
-        lines(144) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
-        lines(145) = "unset label 201"
-        lines(146) = "unset label 202"
+        lines(146) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
         lines(147) = "unset y2label"
         lines(148) = "unset y2tics"
         lines(149) = "unset link y2"
@@ -238,110 +237,96 @@ contains
             //"ame it is seen to lie above the"
         lines(154) = "# clipped markers (both clipped to one level, a sticking sta" &
             //"tion looked as if on the limit)."
-        lines(155) = "# The true peak is written beside its clipped marker."
+        lines(155) = "# The true peak is written in the legend; slipping stations " &
+            //"are marked over clipped ones."
         lines(156) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
             //"ed at %.4g %s)', s_clip, p_unit) : 'Shear traction on the so" &
             //"il'"
         lines(157) = "set ylabel lab_s"
-        lines(158) = "if (s_cut) {"
-        lines(159) = "    stats data skip skip_rows u c_x:(abs(column(c_s))) noout" &
-            //"put"
-        lines(160) = "    s_peak_x = STATS_pos_max_y"
-        lines(161) = "    s_peak = STATS_max_y"
-        lines(162) = "    stats data skip skip_rows u ((abs(column(c_x) - s_peak_x" &
-            //") < 1e-12*(x_hi - x_lo + 1)) ? column(c_s) : 1/0) nooutput"
-        lines(163) = "    s_peak_y = (STATS_max > 0) ? s_clip : -s_clip"
-        lines(164) = "    if (s_peak_x > 0.5*(x_lo + x_hi)) {"
-        lines(165) = "        set label 203 sprintf('peak |%s| %.4g %s ', key_s, s" &
-            //"_peak, p_unit) at first s_peak_x, first s_peak_y right offse" &
-            //"t -1.5,(s_peak_y > 0 ? -1.1 : 1.1) front boxed tc rgb '#c000" &
-            //"00'"
-        lines(166) = "    } else {"
-        lines(167) = "        set label 203 sprintf(' peak |%s| %.4g %s', key_s, s" &
-            //"_peak, p_unit) at first s_peak_x, first s_peak_y left offset" &
-            //" 1.5,(s_peak_y > 0 ? -1.1 : 1.1) front boxed tc rgb '#c00000" &
-            //"'"
-        lines(168) = "    }"
-        lines(169) = "}"
-        lines(170) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
+        lines(158) = "s_peak = 0"
+        lines(159) = "if (s_cut) {"
+        lines(160) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
+        lines(161) = "    s_peak = STATS_max"
+        lines(162) = "}"
+        lines(163) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
             //"ooutput"
-        lines(171) = "n_slip = STATS_sum"
-        lines(172) = "# (after the stats: stats keeps to the axis ranges)"
-        lines(173) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
-        lines(174) = "set yrange [-s_span:s_span]"
-        lines(175) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
+        lines(164) = "n_slip = STATS_sum"
+        lines(165) = "# (after the stats: stats keeps to the axis ranges)"
+        lines(166) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
+        lines(167) = "set yrange [-s_span:s_span]"
+        lines(168) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
             //"lumn(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps" &
             //" 1.1 lc rgb '#ff7f0e' t 'slipping station'"" : ""NaN notitle" &
             //""""
-        lines(176) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
+        lines(169) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
             //"n(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt" &
-            //" 9 ps 1.8 lc rgb '#c00000' t 'clipped'"" : ""NaN notitle"""
-        lines(177) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
+            //" 9 ps 1.8 lc rgb '#c00000' t sprintf('clipped, peak %.4g %s'" &
+            //", s_peak, p_unit)"" : ""NaN notitle"""
+        lines(170) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
             //"ction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' t sprint" &
             //"f('+-f %s (f = %g)', key_p, friction), data skip skip_rows u" &
             //" c_x:(-friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050" &
             //"' notitle"" : ""NaN notitle"""
-        lines(178) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
+        lines(171) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \"
-        lines(179) = "     @slip_marks, @clip_marks, @envelope, @zero_line, @dummy" &
+        lines(172) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
             //"_zone, @dummy_load"
-        lines(180) = "unset label 203"
-        lines(181) = "set yrange [*:*]"
-        lines(182) = ""
-        lines(183) = "# 4 bending moments"
-        lines(184) = "set title 'Bending moment (> 0 hogging, top in tension)'"
-        lines(185) = "set ylabel lab_m"
-        lines(186) = "if (c_mt > 0) {"
-        lines(187) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(173) = "set yrange [*:*]"
+        lines(174) = ""
+        lines(175) = "# 4 bending moments"
+        lines(176) = "set title 'Bending moment (> 0 hogging, top in tension)'"
+        lines(177) = "set ylabel lab_m"
+        lines(178) = "if (c_mt > 0) {"
+        lines(179) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(188) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
+        lines(180) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
             //" dt 2 lc rgb '#8c564b' t key_mt, \"
-        lines(189) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(190) = "} else {"
-        lines(191) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(181) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(182) = "} else {"
+        lines(183) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(192) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(193) = "}"
-        lines(194) = ""
-        lines(195) = "# 5 shear force"
-        lines(196) = "set title 'Shear force'"
-        lines(197) = "set ylabel lab_q"
-        lines(198) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
+        lines(184) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(185) = "}"
+        lines(186) = ""
+        lines(187) = "# 5 shear force"
+        lines(188) = "set title 'Shear force'"
+        lines(189) = "set ylabel lab_q"
+        lines(190) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
             //" rgb '#17becf' t key_q, \"
-        lines(199) = "     @zero_line, @dummy_zone, @dummy_load"
-        lines(200) = ""
-        lines(201) = "# 6 slip (left axis) and membrane / axial force (right axis)"
-        lines(202) = "set title 'Interface slip and axial force'"
-        lines(203) = "set ylabel lab_slip"
-        lines(204) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
-        lines(205) = "slip_span = 0.01*STATS_max"
-        lines(206) = "set yrange [*<-slip_span:slip_span<*]"
-        lines(207) = "set y2label lab_n"
-        lines(208) = "set y2tics"
-        lines(209) = "set ytics nomirror"
-        lines(210) = "set autoscale y2"
-        lines(211) = "# a structure with no membrane force (f = 0: no shear tracti" &
+        lines(191) = "     @zero_line, @dummy_zone, @dummy_load"
+        lines(192) = ""
+        lines(193) = "# 6 slip (left axis) and membrane / axial force (right axis)"
+        lines(194) = "set title 'Interface slip and axial force'"
+        lines(195) = "set ylabel lab_slip"
+        lines(196) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
+        lines(197) = "slip_span = 0.01*STATS_max"
+        lines(198) = "set yrange [*<-slip_span:slip_span<*]"
+        lines(199) = "set y2label lab_n"
+        lines(200) = "set y2tics"
+        lines(201) = "set ytics nomirror"
+        lines(202) = "set autoscale y2"
+        lines(203) = "# a structure with no membrane force (f = 0: no shear tracti" &
             //"on) gets a fixed axis, not"
-        lines(212) = "# gnuplot's ""empty y2 range"" warning"
-        lines(213) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
+        lines(204) = "# gnuplot's ""empty y2 range"" warning"
+        lines(205) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
             //"abs(column(c_nt)) : 0)) nooutput"
-        lines(214) = "if (STATS_max == 0) { set y2range [-1:1] }"
-        lines(215) = "if (c_nt > 0) {"
-        lines(216) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(206) = "if (STATS_max == 0) { set y2range [-1:1] }"
+        lines(207) = "if (c_nt > 0) {"
+        lines(208) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(217) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(209) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(218) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
+        lines(210) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
             //"t 2 lc rgb '#7f1f3f' t key_nt, \"
-        lines(219) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(220) = "} else {"
-        lines(221) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(211) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(212) = "} else {"
+        lines(213) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(222) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(214) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(223) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(224) = "}"
-        lines(225) = "unset multiplot"
+        lines(215) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(216) = "}"
+        lines(217) = "unset multiplot"
     end function panel_template
 
     !> The lines of scripts/gnuplot/fricon_sweep.gp.

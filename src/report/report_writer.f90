@@ -176,12 +176,30 @@ contains
         end do
         call write_json_intervals(u, m, s%intervals, s%slip_intervals)
         write (u, '(a)') '  },'
+        call write_json_singular(u, e)
         call write_json_errors(u, e, adapted)
         if (adapted) call write_json_adaptation(u, adaptation)
         call write_json_checks(u, sol, tab, s)
         write (u, '(a)') '}'
         call commit_file(path, u, err)
     end subroutine write_summary_json
+
+    !> "singular_results": the keys whose value is unbounded in the model where it is taken
+    !! (summary_table::mark_singular): the mesh decides them.
+    subroutine write_json_singular(u, e)
+        integer, intent(in) :: u
+        type(entry_t), intent(in) :: e(:)
+        integer :: i
+        logical :: first
+        first = .true.
+        write (u, '(a)', advance='no') '  "singular_results": ['
+        do i = 1, size(e)
+            if (.not. (e(i)%singular .and. e(i)%defined)) cycle
+            write (u, '(a)', advance='no') trim(merge('  ', ', ', first))//json_string(trim(e(i)%key))
+            first = .false.
+        end do
+        write (u, '(a)') '],'
+    end subroutine write_json_singular
 
     !> "errors": the estimated absolute error of each estimated key (same unit as the
     !! result), "error_orders": the observed order (null where first order was assumed),
@@ -936,20 +954,26 @@ contains
         type(summary_t), intent(in) :: s
         logical, intent(in) :: adapted      !! the mesh was adapted (ADAPT)
         integer :: i
+        character(len=60) :: label
         write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional (SPEC.md 6)', &
             'physical units            ', m%nondim))//')'//repeat(' ', 16)//'estimated error (*)'
         do i = 1, size(e)
+            label = e(i)%label
+            if (e(i)%singular .and. e(i)%defined) label = trim(label)//' [s]'
             if (.not. e(i)%defined) then
-                write (u, '(3x,a,t52,a)') e(i)%label, 'n/a'
+                write (u, '(3x,a,t52,a)') label, 'n/a'
             else if (e(i)%integer_valued) then
-                write (u, '(3x,a,t52,i14)') e(i)%label, nint(e(i)%value)
+                write (u, '(3x,a,t52,i14)') label, nint(e(i)%value)
             else if (e(i)%has_error) then
-                write (u, '(3x,a,t52,es14.5,2x,a,t82,a,es9.2,a)') e(i)%label, e(i)%value, &
+                write (u, '(3x,a,t52,es14.5,2x,a,t82,a,es9.2,a)') label, e(i)%value, &
                     trim(e(i)%unit), '+-', e(i)%error, trim(order_text(e(i)%order))
             else
-                write (u, '(3x,a,t52,es14.5,2x,a)') e(i)%label, e(i)%value, trim(e(i)%unit)
+                write (u, '(3x,a,t52,es14.5,2x,a)') label, e(i)%value, trim(e(i)%unit)
             end if
         end do
+        if (any(e%singular .and. e%defined)) write (u, '(3x,a)') '[s] singular in the '// &
+            'model where it is taken (notes below): the mesh decides the value; no error '// &
+            'estimate'
         if (any(e%has_error)) then
             write (u, '(3x,a)') '(*) '//error_method_text(adapted)
         else
@@ -966,6 +990,12 @@ contains
         if (has_concentrated_load(m)) write (u, '(3x,a)') &
             'Under a POINT or RING load the pressure is singular too (logarithmic): its '// &
             'station maximum depends on the mesh.'
+        if (s%point_on_plate) then
+            write (u, '(3x,a)') 'Under a POINT load a Mindlin plate''s settlement and moments '// &
+                'grow like ln r and its shear force like 1/r: their values at r = 0'
+            write (u, '(3x,a)') 'depend on the mesh. For design, give the load its footprint '// &
+                '(a PATCH over the column or plate it acts through).'
+        end if
     end subroutine write_summary
 
     pure function order_text(p) result(text)

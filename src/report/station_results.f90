@@ -55,6 +55,9 @@ module station_results
         real(dp) :: complementarity = 0.0_dp    !! max |Sigma_z gap| (nondim) where lifted off
         real(dp) :: compatibility = 0.0_dp      !! max |pointwise gap| / max |w| where in contact
         real(dp) :: most_tensile = 0.0_dp       !! min sigma_z over the stations [F/L or F/L^2]
+        real(dp) :: w_mean = 0.0_dp             !! mean settlement over the base (plate: by
+                                                !! area) of the finite-element w, by Gauss
+                                                !! rules: the same for any stations
     end type station_table_t
 
     public :: tabulate, tabulate_design, contact_extent
@@ -105,7 +108,33 @@ contains
         end do stations
         call statics_resultants(m, d, sol, tab)
         call pointwise_checks(m, gap_pw, tab)
+        tab%w_mean = mean_settlement(m, d, sol)
     end subroutine tabulate
+
+    !> The mean of the finite-element settlement w over the base, weighted by 2 pi r for the
+    !! plate: 4-point Gauss per element (exact for w of degree <= 5, 6 with the weight r).
+    pure real(dp) function mean_settlement(m, d, sol) result(w_mean)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
+        real(dp) :: xg(4), wg(4), h, wt, w_sum, wt_sum
+        type(field_point_t) :: p
+        integer :: e, g
+        call gauss_legendre(4, xg, wg)
+        w_sum = 0.0_dp
+        wt_sum = 0.0_dp
+        do e = 1, d%msh%ne
+            h = d%msh%x(e) - d%msh%x(e - 1)
+            do g = 1, 4
+                p = displacement_at(d, sol%z(1:d%nv), e, xg(g))
+                wt = 0.5_dp*h*wg(g)
+                if (m%kind /= MODEL_BEAM) wt = wt*p%x
+                w_sum = w_sum + wt*p%val(2)
+                wt_sum = wt_sum + wt
+            end do
+        end do
+        w_mean = w_sum/wt_sum
+    end function mean_settlement
 
     !> The table the design values are read from (design_summary): every node, every patch
     !! edge and both sides of every concentrated load, and the OUTPUT card's stations if it has

@@ -6,8 +6,7 @@
 !! pressures in kPa for kN and m) and nondimensional (SPEC §6) for NONDIM decks.
 module summary_table
     use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, total_vertical_load, flexural_rigidity, &
-                     has_concentrated_load
+    use model, only: model_t, MODEL_BEAM, total_vertical_load, flexural_rigidity
     use station_columns, only: units_t, case_units
     use design_summary, only: summary_t
     implicit none
@@ -24,6 +23,9 @@ module summary_table
         logical :: has_error = .false.      !! an error estimate is attached (error_estimate)
         real(dp) :: error = 0.0_dp          !! estimated absolute error, same unit as value
         real(dp) :: order = -1.0_dp         !! observed order of convergence (-1: assumed 1)
+        logical :: singular = .false.       !! unbounded in the model where it is taken (an
+                                            !! edge in contact, a concentrated load): the
+                                            !! mesh decides the value; no error estimate
     end type entry_t
 
     !> Scale factors from deck units to what is printed.
@@ -70,7 +72,7 @@ contains
                  merge(s%contact_length*k%length, s%contact_area*k%length**2, beam)), &
              ent('pressure_mean', 'mean contact pressure V / contact area', k%u_pressure, &
                  s%mean_pressure*k%pressure), &
-             ent('pressure_max', pressure_max_label(m, s), k%u_pressure, &
+             ent('pressure_max', 'max station pressure', k%u_pressure, &
                  s%pressure_max%value*k%pressure), &
              ent('pressure_max_x', '  at', k%u_length, s%pressure_max%x*k%length), &
              ent('edge_distance', 'distance d from the edge (= h)', k%u_length, &
@@ -92,17 +94,25 @@ contains
                  s%utilisation >= 0.0_dp .and. beam), &
              ent('linear_solves', 'linear solves', '', real(s%linear_solves, dp))]
         e(size(e))%integer_valued = .true.
+        call mark_singular(s, e)
     end function summary_entries
 
-    !> The largest station pressure is mesh dependent where the pressure is singular: at an
-    !! edge in contact and under a POINT or RING load (the report's notes below the summary).
-    pure function pressure_max_label(m, s) result(label)
-        type(model_t), intent(in) :: m
+    !> The entries whose value is unbounded in the model where it is taken: the largest
+    !! pressure at an edge in contact or under a POINT or RING load; under a POINT load on
+    !! the plate's axis also the settlement (Mindlin: the shear deflection ~ ln r), the
+    !! moments (~ ln r) and the shear force (~ 1/r) there, hence the largest settlement, its
+    !! difference, the largest sagging moments and |Q_r|.
+    pure subroutine mark_singular(s, e)
         type(summary_t), intent(in) :: s
-        character(len=:), allocatable :: label
-        label = 'max station pressure'
-        if (s%edge_in_contact .or. has_concentrated_load(m)) label = label//' (singular: see below)'
-    end function pressure_max_label
+        type(entry_t), intent(inout) :: e(:)
+        character(len=*), parameter :: point_keys(5) = [character(len=24) :: 'settlement_max', &
+            'differential_settlement', 'moment_sagging', 'hoop_moment_sagging', 'shear_force_max']
+        integer :: i
+        do i = 1, size(e)
+            if (trim(e(i)%key) == 'pressure_max') e(i)%singular = s%pressure_max_singular
+            if (s%point_on_plate .and. any(point_keys == e(i)%key)) e(i)%singular = .true.
+        end do
+    end subroutine mark_singular
 
     !> The keys of summary_entries for a model (the sweep CSV header).
     pure function entry_keys(m) result(keys)
