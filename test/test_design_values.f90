@@ -506,18 +506,19 @@ contains
     end subroutine test_summary_files
 
     !> The error estimate (module error_estimate) bounds the true error of W(0) and is within a
-    !! factor 3 of it, on two closed forms (NONDIM plate, a = 1, F = 1, central point load,
+    !! factor 3 of it, on two closed forms (NONDIM plate, a = 1, F = 1 spread over r <= a/8,
     !! rho = 1e3, i.e. a rigid punch; N_e = 16 and 32): the frictionless punch, W(0) = rho/4
     !! (Boussinesq; Johnson 1985 3.8), and the bonded one (f = 1e3), W(0) = rho/(4 c) with
-    !! c = (1 - nu_f) ln(3 - 4 nu_f)/(1 - 2 nu_f) (Mossakovskii 1954; Spence 1968).
-    !! Measured ratios estimate/true: 1.27, 1.18 and 1.29, 1.20.
+    !! c = (1 - nu_f) ln(3 - 4 nu_f)/(1 - 2 nu_f) (Mossakovskii 1954; Spence 1968). A rigid
+    !! punch settles the same under any distribution of the load; a POINT load, used before,
+    !! makes the Mindlin plate's W(0) singular (it has no estimate now). Measured ratios
+    !! estimate/true: 1.27, 1.19 and 1.30, 1.21 (1.27, 1.18 and 1.29, 1.20 under the point load).
     subroutine test_error_estimate(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: c
         type(entry_t), allocatable :: e(:)
-        type(summary_t) :: s
         real(dp) :: exact, ratio, cb
-        integer :: k, ne, i, j
+        integer :: k, ne, i
         cb = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
         do k = 1, 2
             do ne = 16, 32, 16
@@ -533,15 +534,11 @@ contains
                 call complete_model(c%m)
                 call solve_model(c, err)
                 if (allocated(err)) return
-                s = summarise(c%m, c%sol, c%tab)
-                e = summary_entries(c%m, s, contact_extent(c%tab, c%m%length))
-                call estimate_errors(c%m, c%d, e, c%sol%coarse, s%edge_in_contact)
-                i = 0
-                do j = 1, size(e)
-                    if (trim(e(j)%key) == 'settlement_max') i = j
-                end do
+                call estimated_entries(c, 'settlement_max', e, i)
                 exact = merge(250.0_dp, 250.0_dp/cb, k == 1)
                 ratio = e(i)%error/abs(e(i)%value - exact)
+                write (output_unit, '(4x,a,i0,a,f6.2)') 'W(0) estimate / error, N_e = ', ne, &
+                    ': ', ratio
                 call check(err, e(i)%has_error .and. ratio >= 1.0_dp .and. ratio <= 3.0_dp, &
                            'error estimate of W(0) does not bound the closed-form error within 3x')
                 if (allocated(err)) return
@@ -720,13 +717,7 @@ contains
         reference = 2.0_dp*q(2) - q(1)
         call solve_deck('input/tank_raft.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
-        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%length))
-        call estimate_errors(c%m, c%d, e, c%sol%coarse, s%edge_in_contact)
-        i = 0
-        do k = 1, size(e)
-            if (trim(e(k)%key) == 'moment_sagging') i = k
-        end do
+        call estimated_entries(c, 'moment_sagging', e, i)
         ratio = e(i)%error/abs(e(i)%value - reference)
         write (output_unit, '(4x,a,es10.3,a,es10.3,a,f6.2)') 'max sagging M_r: estimate', &
             e(i)%error, ', error against the extrapolation', abs(e(i)%value - reference), &
@@ -789,7 +780,7 @@ contains
         type(summary_t) :: s
         type(entry_t), allocatable :: e(:)
         real(dp) :: w0(3)
-        integer :: k
+        integer :: k, i
         character(len=24), parameter :: point_keys(6) = [character(len=24) :: &
             'settlement_max', 'differential_settlement', 'moment_sagging', &
             'hoop_moment_sagging', 'shear_force_max', 'pressure_max']
@@ -803,8 +794,7 @@ contains
                    0.5_dp*(w0(2) - w0(1)) .and. w0(3) > w0(2), &
                    'the settlement under the point load should grow by steps like ln h')
         if (allocated(err)) return
-        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%length))
-        call estimate_errors(c%m, c%d, e, c%sol%coarse, s%edge_in_contact)
+        call estimated_entries(c, 'settlement_max', e, i)
         do k = 1, size(e)
             if (any(point_keys == e(k)%key)) then
                 call check(err, e(k)%singular .and. .not. e(k)%has_error, &
@@ -826,6 +816,24 @@ contains
         call check(err, .not. s%pressure_max_singular .and. s%pressure_max%x == 0.0_dp, &
                    'default raft: the largest pressure is at the centre, regular')
     end subroutine test_singular_values
+
+    !> The summary entries of a solved case with their error estimates, made as the program
+    !! makes them (analysis_driver), and the index of key among them (0 if absent).
+    subroutine estimated_entries(c, key, e, i)
+        type(case_t), intent(in) :: c
+        character(len=*), intent(in) :: key
+        type(entry_t), allocatable, intent(out) :: e(:)
+        integer, intent(out) :: i
+        type(summary_t) :: s
+        integer :: k
+        s = summarise(c%m, c%sol, c%tab)
+        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%length))
+        call estimate_errors(c%m, c%d, e, c%sol%coarse, s%edge_in_contact)
+        i = 0
+        do k = 1, size(e)
+            if (trim(e(k)%key) == key) i = k
+        end do
+    end subroutine estimated_entries
 
     !> Quantity iq of a station table linearly interpolated at x (independent of
     !! design_summary's own interpolation: the bracket found by a search from the left).
