@@ -330,8 +330,8 @@ contains
     !> Each estimated result's estimate relative to its scale (-1 where there is none):
     !! settlements to the largest |settlement|, moments to the largest |moment|, pressures
     !! at d from an edge to the mean contact pressure, the pressure at the centre to the
-    !! larger of itself and the mean contact pressure, the contact extent t as it is (a
-    !! fraction of l or a).
+    !! larger of itself and the mean contact pressure, the largest shear force to itself, the
+    !! contact extent t as it is (a fraction of l or a).
     pure function relative_errors(e) result(rel)
         type(entry_t), intent(in) :: e(:)
         real(dp) :: rel(size(e))
@@ -349,6 +349,8 @@ contains
                 scale = 1.0_dp
             case ('pressure_centre')
                 scale = max(abs(e(i)%value), abs(value_of(e, 'pressure_mean')))
+            case ('shear_force_max')
+                scale = abs(e(i)%value)
             case default
                 scale = abs(value_of(e, 'pressure_mean'))
             end select
@@ -356,10 +358,11 @@ contains
         end do
     end function relative_errors
 
-    !> Per entry: an estimated key with a defined value (it must get an estimate).
+    !> Per entry: an estimated key with a defined value that is not singular (it must get an
+    !! estimate; a singular one never does: summary_table::mark_singular).
     pure elemental logical function estimated_and_defined(e)
         type(entry_t), intent(in) :: e
-        estimated_and_defined = e%defined .and. is_estimated(e%key)
+        estimated_and_defined = e%defined .and. is_estimated(e%key) .and. .not. e%singular
     end function estimated_and_defined
 
     pure real(dp) function value_of(e, key)

@@ -781,9 +781,9 @@ contains
         type(entry_t), allocatable :: e(:)
         real(dp) :: w0(3)
         integer :: k, i
-        character(len=24), parameter :: point_keys(6) = [character(len=24) :: &
+        character(len=24), parameter :: point_keys(7) = [character(len=24) :: &
             'settlement_max', 'differential_settlement', 'moment_sagging', &
-            'hoop_moment_sagging', 'shear_force_max', 'pressure_max']
+            'hoop_moment_sagging', 'shear_force_max', 'pressure_max', 'angular_distortion']
         do k = 1, 3
             call solve_deck('input/plate_nondim.dat', 10*2**k, c, err)
             if (allocated(err)) return

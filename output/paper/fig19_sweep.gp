@@ -177,7 +177,15 @@ plot for [i=1:n] word(files, i) skip skip_rows u c_x:(clip_p(column(c_p))) w l l
 
 set title 'Shear traction on the soil'
 set ylabel lab_s
+# every case frictionless (sigma_x = 0): a fixed axis, not gnuplot's "empty y range" warning
+s_any = 0
+do for [i=1:n] {
+    stats word(files, i) skip skip_rows u (abs(column(c_s))) nooutput
+    s_any = (STATS_max > s_any) ? STATS_max : s_any
+}
+if (s_any == 0) { set yrange [-1:1] }
 plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line
+set yrange [*:*]
 
 set title 'Bending moment '.(c_mt > 0 ? 'M_r' : 'M').' (> 0 hogging)'
 set ylabel lab_mr

@@ -19,8 +19,8 @@
 #            from a free edge)
 # so only the edge spike within edge_d of an edge (where the singularity of the half-space and
 # the mesh decide the value) can be cut, and every pressure away from the edges stays whole;
-# a clipped station is drawn as a red triangle on the clip line and the true peak of each end
-# is written beside it. The shear traction is clipped the same way at
+# a clipped station is drawn as a red triangle on the clip line and the true peak of each
+# clipped end is written in the legend. The shear traction is clipped the same way at
 # max(f * p_clip, clip_inner * largest |traction| at least edge_d from a free edge).
 
 set terminal pngcairo size 1600,1100 font 'Sans,11' noenhanced
@@ -84,13 +84,17 @@ do for [k=1:n_loads] {
 }
 # the kind of each concentrated load, written beside its arrow on the settlement panel
 load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] eq 'R') ? 'ring' : (load_kind[k] eq 'M') ? 'M' : ''
-# (left of the arrow for a moment, and for a load in the right tenth, where the word would
-# run into the frame)
+# (a moment's left of its arrow, a force's right of it, so that both at one x stay apart; a
+# force in the right tenth, where its word would run into the frame, goes left one line lower)
 do for [k=1:n_loads] {
-    if (load_kind[k] eq 'M' || load_x1[k] > x_hi - 0.1*(x_hi - x_lo)) {
+    if (load_kind[k] eq 'M') {
         set label 300+k load_word(k) at first load_x1[k], graph 0.955 right offset -0.6,0 front tc rgb c_load_text
     } else {
-        set label 300+k load_word(k) at first load_x1[k], graph 0.955 left offset 0.6,0 front tc rgb c_load_text
+        if (load_x1[k] > x_hi - 0.1*(x_hi - x_lo)) {
+            set label 300+k load_word(k) at first load_x1[k], graph 0.955 right offset -0.6,-1 front tc rgb c_load_text
+        } else {
+            set label 300+k load_word(k) at first load_x1[k], graph 0.955 left offset 0.6,0 front tc rgb c_load_text
+        }
     }
 }
 
@@ -133,12 +137,17 @@ if (line_width > 0) {
 p_peaks = ''
 if (p_cut) {
     stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? 1/0 : column(c_p)) nooutput
-    p_peaks = sprintf('%.4g %s', STATS_max_y, p_unit)
+    p_right = STATS_max_y
+    p_left = 0
     if (is_beam) {
         stats data skip skip_rows u c_x:((column(c_x) < x_mid) ? column(c_p) : 1/0) nooutput
-        if (STATS_max_y > p_clip*1.0001) {
-            p_peaks = sprintf('%.4g (left), ', STATS_max_y).p_peaks.' (right)'
-        }
+        p_left = STATS_max_y
+    }
+    # only the ends that are clipped: a beam loaded at one end has one spike
+    if (p_left > p_clip*1.0001 && p_right > p_clip*1.0001) {
+        p_peaks = sprintf('%.4g (left), %.4g %s (right)', p_left, p_right, p_unit)
+    } else {
+        p_peaks = sprintf('%.4g %s', (p_left > p_right) ? p_left : p_right, p_unit)
     }
 }
 clip_marks = p_cut ? "data skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '#c00000' t 'clipped, peak '.p_peaks" : "NaN notitle"

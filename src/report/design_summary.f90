@@ -157,7 +157,9 @@ contains
         if (s%contact_area > 0.0_dp) s%mean_pressure = total_vertical_load(m)/s%contact_area
         s%pressure_max = located_max(tab, tab%val(Q_SZ, :)/width)
         s%pressure_max_singular = at_singular_point(m, tab, s%pressure_max%x)
-        s%point_on_plate = m%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)
+        ! (a RING of radius 0 is a POINT load)
+        s%point_on_plate = m%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT .or. &
+            (m%loads%kind == LOAD_RING .and. m%loads%x1 <= 1.0e-9_dp*m%length))
         s%edge_distance = m%h
         x0 = tab%val(Q_X, 1)
         x1 = tab%val(Q_X, tab%n)

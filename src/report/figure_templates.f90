@@ -13,7 +13,7 @@ contains
     !> The lines of scripts/gnuplot/fricon_panels.gp.
     pure function panel_template() result(lines)
         character(len=line_length), allocatable :: lines(:)
-        allocate (lines(217))
+        allocate (lines(226))
         lines(1) = "# fricon figure of one case: six panels from the station fil" &
             //"e of the case."
         lines(2) = "# fricon writes output/CASE.gp: the settings below, then thi" &
@@ -50,9 +50,9 @@ contains
         lines(21) = "# the mesh decide the value) can be cut, and every pressure " &
             //"away from the edges stays whole;"
         lines(22) = "# a clipped station is drawn as a red triangle on the clip l" &
-            //"ine and the true peak of each end"
-        lines(23) = "# is written beside it. The shear traction is clipped the sa" &
-            //"me way at"
+            //"ine and the true peak of each"
+        lines(23) = "# clipped end is written in the legend. The shear traction i" &
+            //"s clipped the same way at"
         lines(24) = "# max(f * p_clip, clip_inner * largest |traction| at least e" &
             //"dge_d from a free edge)."
         lines(25) = ""
@@ -147,192 +147,204 @@ contains
             //"ow on the settlement panel"
         lines(86) = "load_word(k) = (load_kind[k] eq 'P') ? 'P' : (load_kind[k] e" &
             //"q 'R') ? 'ring' : (load_kind[k] eq 'M') ? 'M' : ''"
-        lines(87) = "# (left of the arrow for a moment, and for a load in the rig" &
-            //"ht tenth, where the word would"
-        lines(88) = "# run into the frame)"
+        lines(87) = "# (a moment's left of its arrow, a force's right of it, so t" &
+            //"hat both at one x stay apart; a"
+        lines(88) = "# force in the right tenth, where its word would run into th" &
+            //"e frame, goes left one line lower)"
         lines(89) = "do for [k=1:n_loads] {"
-        lines(90) = "    if (load_kind[k] eq 'M' || load_x1[k] > x_hi - 0.1*(x_hi" &
-            //" - x_lo)) {"
+        lines(90) = "    if (load_kind[k] eq 'M') {"
         lines(91) = "        set label 300+k load_word(k) at first load_x1[k], gr" &
             //"aph 0.955 right offset -0.6,0 front tc rgb c_load_text"
         lines(92) = "    } else {"
-        lines(93) = "        set label 300+k load_word(k) at first load_x1[k], gr" &
-            //"aph 0.955 left offset 0.6,0 front tc rgb c_load_text"
-        lines(94) = "    }"
-        lines(95) = "}"
-        lines(96) = ""
-        lines(97) = "set multiplot layout 3,2 title title.""\n"" font 'Sans,14'"
-        lines(98) = "set grid"
-        lines(99) = "set format y '%g'"
-        lines(100) = "set format y2 '%g'"
-        lines(101) = "set key outside top center horizontal samplen 2.5 font ',10'" &
+        lines(93) = "        if (load_x1[k] > x_hi - 0.1*(x_hi - x_lo)) {"
+        lines(94) = "            set label 300+k load_word(k) at first load_x1[k]" &
+            //", graph 0.955 right offset -0.6,-1 front tc rgb c_load_text"
+        lines(95) = "        } else {"
+        lines(96) = "            set label 300+k load_word(k) at first load_x1[k]" &
+            //", graph 0.955 left offset 0.6,0 front tc rgb c_load_text"
+        lines(97) = "        }"
+        lines(98) = "    }"
+        lines(99) = "}"
+        lines(100) = ""
+        lines(101) = "set multiplot layout 3,2 title title.""\n"" font 'Sans,14'"
+        lines(102) = "set grid"
+        lines(103) = "set format y '%g'"
+        lines(104) = "set format y2 '%g'"
+        lines(105) = "set key outside top center horizontal samplen 2.5 font ',10'" &
             //" spacing 1.0 nobox"
-        lines(102) = "set autoscale xfix"
-        lines(103) = "set xrange [x_lo:x_hi]"
-        lines(104) = "set xlabel lab_x"
-        lines(105) = "set lmargin 12"
-        lines(106) = "set rmargin 11"
-        lines(107) = "set offsets 0, 0, graph 0.10, graph 0.06"
-        lines(108) = "zero_line = ""0 w l lw 1 lc rgb '#606060' notitle"""
-        lines(109) = "dummy_zone = (n_zones > 0) ? ""NaN w boxes fs solid 0.45 nob" &
+        lines(106) = "set autoscale xfix"
+        lines(107) = "set xrange [x_lo:x_hi]"
+        lines(108) = "set xlabel lab_x"
+        lines(109) = "set lmargin 12"
+        lines(110) = "set rmargin 11"
+        lines(111) = "set offsets 0, 0, graph 0.10, graph 0.06"
+        lines(112) = "zero_line = ""0 w l lw 1 lc rgb '#606060' notitle"""
+        lines(113) = "dummy_zone = (n_zones > 0) ? ""NaN w boxes fs solid 0.45 nob" &
             //"order fc rgb '#c8c8c8' t 'lift-off zone'"" : ""NaN notitle"""
-        lines(110) = "dummy_load = ""NaN w l dt 2 lw 1.5 lc rgb c_load t 'load pos" &
+        lines(114) = "dummy_load = ""NaN w l dt 2 lw 1.5 lc rgb c_load t 'load pos" &
             //"ition'"""
-        lines(111) = ""
-        lines(112) = "# 1 settlement, down positive; soil surface where it leaves " &
+        lines(115) = ""
+        lines(116) = "# 1 settlement, down positive; soil surface where it leaves " &
             //"the structure"
-        lines(113) = "set title 'Settlement (down positive)'"
-        lines(114) = "set ylabel lab_w"
-        lines(115) = "set yrange [*:*] reverse"
-        lines(116) = "plot data skip skip_rows u c_x:c_w w lp pt 7 ps 0.45 lw 2 lc" &
+        lines(117) = "set title 'Settlement (down positive)'"
+        lines(118) = "set ylabel lab_w"
+        lines(119) = "set yrange [*:*] reverse"
+        lines(120) = "plot data skip skip_rows u c_x:c_w w lp pt 7 ps 0.45 lw 2 lc" &
             //" rgb '#1f77b4' t key_w.' (structure)', \"
-        lines(117) = "     '' skip skip_rows u c_x:(column(c_w) + column(c_gap)) w" &
+        lines(121) = "     '' skip skip_rows u c_x:(column(c_w) + column(c_gap)) w" &
             //" l dt 2 lw 1.5 lc rgb '#404040' t 'soil surface', \"
-        lines(118) = "     @dummy_zone, @dummy_load"
-        lines(119) = "set yrange [*:*] noreverse"
-        lines(120) = "do for [k=1:n_loads] { unset label 300+k }"
-        lines(121) = ""
-        lines(122) = "# 2 contact pressure, edge spike clipped and marked"
-        lines(123) = "set title p_cut ? sprintf('Contact pressure (clipped at %.4g" &
+        lines(122) = "     @dummy_zone, @dummy_load"
+        lines(123) = "set yrange [*:*] noreverse"
+        lines(124) = "do for [k=1:n_loads] { unset label 300+k }"
+        lines(125) = ""
+        lines(126) = "# 2 contact pressure, edge spike clipped and marked"
+        lines(127) = "set title p_cut ? sprintf('Contact pressure (clipped at %.4g" &
             //" %s: %s)', p_clip, p_unit, p_rule) : 'Contact pressure'"
-        lines(124) = "set ylabel lab_p"
-        lines(125) = "if (line_width > 0) {"
-        lines(126) = "    set y2label lab_line"
-        lines(127) = "    set y2tics"
-        lines(128) = "    set ytics nomirror"
-        lines(129) = "    set link y2 via y*line_width inverse y/line_width"
-        lines(130) = "}"
-        lines(131) = "# the true peaks are written in the legend, where no curve c" &
+        lines(128) = "set ylabel lab_p"
+        lines(129) = "if (line_width > 0) {"
+        lines(130) = "    set y2label lab_line"
+        lines(131) = "    set y2tics"
+        lines(132) = "    set ytics nomirror"
+        lines(133) = "    set link y2 via y*line_width inverse y/line_width"
+        lines(134) = "}"
+        lines(135) = "# the true peaks are written in the legend, where no curve c" &
             //"an cross them (beside their"
-        lines(132) = "# markers a steep curve did, and an opaque box hid the curve" &
+        lines(136) = "# markers a steep curve did, and an opaque box hid the curve" &
             //")"
-        lines(133) = "p_peaks = ''"
-        lines(134) = "if (p_cut) {"
-        lines(135) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
+        lines(137) = "p_peaks = ''"
+        lines(138) = "if (p_cut) {"
+        lines(139) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
             //" 1/0 : column(c_p)) nooutput"
-        lines(136) = "    p_peaks = sprintf('%.4g %s', STATS_max_y, p_unit)"
-        lines(137) = "    if (is_beam) {"
-        lines(138) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
+        lines(140) = "    p_right = STATS_max_y"
+        lines(141) = "    p_left = 0"
+        lines(142) = "    if (is_beam) {"
+        lines(143) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
             //"d) ? column(c_p) : 1/0) nooutput"
-        lines(139) = "        if (STATS_max_y > p_clip*1.0001) {"
-        lines(140) = "            p_peaks = sprintf('%.4g (left), ', STATS_max_y)." &
-            //"p_peaks.' (right)'"
-        lines(141) = "        }"
-        lines(142) = "    }"
-        lines(143) = "}"
-        lines(144) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
+        lines(144) = "        p_left = STATS_max_y"
+        lines(145) = "    }"
+        lines(146) = "    # only the ends that are clipped: a beam loaded at one e" &
+            //"nd has one spike"
+        lines(147) = "    if (p_left > p_clip*1.0001 && p_right > p_clip*1.0001) {"
+        lines(148) = "        p_peaks = sprintf('%.4g (left), %.4g %s (right)', p_" &
+            //"left, p_right, p_unit)"
+        lines(149) = "    } else {"
+        lines(150) = "        p_peaks = sprintf('%.4g %s', (p_left > p_right) ? p_" &
+            //"left : p_right, p_unit)"
+        lines(151) = "    }"
+        lines(152) = "}"
+        lines(153) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
             //"p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '" &
             //"#c00000' t 'clipped, peak '.p_peaks"" : ""NaN notitle"""
-        lines(145) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
+        lines(154) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \"
-        lines(146) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
-        lines(147) = "unset y2label"
-        lines(148) = "unset y2tics"
-        lines(149) = "unset link y2"
-        lines(150) = "set ytics mirror"
-        lines(151) = ""
-        lines(152) = "# 3 shear traction with the friction limit +-f p. The limit " &
+        lines(155) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
+        lines(156) = "unset y2label"
+        lines(157) = "unset y2tics"
+        lines(158) = "unset link y2"
+        lines(159) = "set ytics mirror"
+        lines(160) = ""
+        lines(161) = "# 3 shear traction with the friction limit +-f p. The limit " &
             //"is drawn unclipped in a y range"
-        lines(153) = "# fixed at 1.15 times the clip level: where it leaves the fr" &
+        lines(162) = "# fixed at 1.15 times the clip level: where it leaves the fr" &
             //"ame it is seen to lie above the"
-        lines(154) = "# clipped markers (both clipped to one level, a sticking sta" &
+        lines(163) = "# clipped markers (both clipped to one level, a sticking sta" &
             //"tion looked as if on the limit)."
-        lines(155) = "# The true peak is written in the legend; slipping stations " &
+        lines(164) = "# The true peak is written in the legend; slipping stations " &
             //"are marked over clipped ones."
-        lines(156) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
+        lines(165) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
             //"ed at %.4g %s)', s_clip, p_unit) : 'Shear traction on the so" &
             //"il'"
-        lines(157) = "set ylabel lab_s"
-        lines(158) = "s_peak = 0"
-        lines(159) = "if (s_cut) {"
-        lines(160) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
-        lines(161) = "    s_peak = STATS_max"
-        lines(162) = "}"
-        lines(163) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
+        lines(166) = "set ylabel lab_s"
+        lines(167) = "s_peak = 0"
+        lines(168) = "if (s_cut) {"
+        lines(169) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
+        lines(170) = "    s_peak = STATS_max"
+        lines(171) = "}"
+        lines(172) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
             //"ooutput"
-        lines(164) = "n_slip = STATS_sum"
-        lines(165) = "# (after the stats: stats keeps to the axis ranges)"
-        lines(166) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
-        lines(167) = "set yrange [-s_span:s_span]"
-        lines(168) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
+        lines(173) = "n_slip = STATS_sum"
+        lines(174) = "# (after the stats: stats keeps to the axis ranges)"
+        lines(175) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
+        lines(176) = "set yrange [-s_span:s_span]"
+        lines(177) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
             //"lumn(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps" &
             //" 1.1 lc rgb '#ff7f0e' t 'slipping station'"" : ""NaN notitle" &
             //""""
-        lines(169) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
+        lines(178) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
             //"n(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt" &
             //" 9 ps 1.8 lc rgb '#c00000' t sprintf('clipped, peak %.4g %s'" &
             //", s_peak, p_unit)"" : ""NaN notitle"""
-        lines(170) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
+        lines(179) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
             //"ction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' t sprint" &
             //"f('+-f %s (f = %g)', key_p, friction), data skip skip_rows u" &
             //" c_x:(-friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050" &
             //"' notitle"" : ""NaN notitle"""
-        lines(171) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
+        lines(180) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \"
-        lines(172) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
+        lines(181) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
             //"_zone, @dummy_load"
-        lines(173) = "set yrange [*:*]"
-        lines(174) = ""
-        lines(175) = "# 4 bending moments"
-        lines(176) = "set title 'Bending moment (> 0 hogging, top in tension)'"
-        lines(177) = "set ylabel lab_m"
-        lines(178) = "if (c_mt > 0) {"
-        lines(179) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(182) = "set yrange [*:*]"
+        lines(183) = ""
+        lines(184) = "# 4 bending moments"
+        lines(185) = "set title 'Bending moment (> 0 hogging, top in tension)'"
+        lines(186) = "set ylabel lab_m"
+        lines(187) = "if (c_mt > 0) {"
+        lines(188) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(180) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
+        lines(189) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
             //" dt 2 lc rgb '#8c564b' t key_mt, \"
-        lines(181) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(182) = "} else {"
-        lines(183) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(190) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(191) = "} else {"
+        lines(192) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(184) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(185) = "}"
-        lines(186) = ""
-        lines(187) = "# 5 shear force"
-        lines(188) = "set title 'Shear force'"
-        lines(189) = "set ylabel lab_q"
-        lines(190) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
+        lines(193) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(194) = "}"
+        lines(195) = ""
+        lines(196) = "# 5 shear force"
+        lines(197) = "set title 'Shear force'"
+        lines(198) = "set ylabel lab_q"
+        lines(199) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
             //" rgb '#17becf' t key_q, \"
-        lines(191) = "     @zero_line, @dummy_zone, @dummy_load"
-        lines(192) = ""
-        lines(193) = "# 6 slip (left axis) and membrane / axial force (right axis)"
-        lines(194) = "set title 'Interface slip and axial force'"
-        lines(195) = "set ylabel lab_slip"
-        lines(196) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
-        lines(197) = "slip_span = 0.01*STATS_max"
-        lines(198) = "set yrange [*<-slip_span:slip_span<*]"
-        lines(199) = "set y2label lab_n"
-        lines(200) = "set y2tics"
-        lines(201) = "set ytics nomirror"
-        lines(202) = "set autoscale y2"
-        lines(203) = "# a structure with no membrane force (f = 0: no shear tracti" &
+        lines(200) = "     @zero_line, @dummy_zone, @dummy_load"
+        lines(201) = ""
+        lines(202) = "# 6 slip (left axis) and membrane / axial force (right axis)"
+        lines(203) = "set title 'Interface slip and axial force'"
+        lines(204) = "set ylabel lab_slip"
+        lines(205) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
+        lines(206) = "slip_span = 0.01*STATS_max"
+        lines(207) = "set yrange [*<-slip_span:slip_span<*]"
+        lines(208) = "set y2label lab_n"
+        lines(209) = "set y2tics"
+        lines(210) = "set ytics nomirror"
+        lines(211) = "set autoscale y2"
+        lines(212) = "# a structure with no membrane force (f = 0: no shear tracti" &
             //"on) gets a fixed axis, not"
-        lines(204) = "# gnuplot's ""empty y2 range"" warning"
-        lines(205) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
+        lines(213) = "# gnuplot's ""empty y2 range"" warning"
+        lines(214) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
             //"abs(column(c_nt)) : 0)) nooutput"
-        lines(206) = "if (STATS_max == 0) { set y2range [-1:1] }"
-        lines(207) = "if (c_nt > 0) {"
-        lines(208) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(215) = "if (STATS_max == 0) { set y2range [-1:1] }"
+        lines(216) = "if (c_nt > 0) {"
+        lines(217) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(209) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(218) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(210) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
+        lines(219) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
             //"t 2 lc rgb '#7f1f3f' t key_nt, \"
-        lines(211) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(212) = "} else {"
-        lines(213) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(220) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(221) = "} else {"
+        lines(222) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(214) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(223) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(215) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(216) = "}"
-        lines(217) = "unset multiplot"
+        lines(224) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(225) = "}"
+        lines(226) = "unset multiplot"
     end function panel_template
 
     !> The lines of scripts/gnuplot/fricon_sweep.gp.
     pure function sweep_template() result(lines)
         character(len=line_length), allocatable :: lines(:)
-        allocate (lines(126))
+        allocate (lines(134))
         lines(1) = "# fricon sweep figure: the cases of a SWEEP deck overlaid, s" &
             //"ix panels, one colour per case."
         lines(2) = "# fricon writes output/STEM_sweep.gp with the settings of th" &
@@ -487,31 +499,41 @@ contains
         lines(104) = ""
         lines(105) = "set title 'Shear traction on the soil'"
         lines(106) = "set ylabel lab_s"
-        lines(107) = "plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s w l" &
+        lines(107) = "# every case frictionless (sigma_x = 0): a fixed axis, not g" &
+            //"nuplot's ""empty y range"" warning"
+        lines(108) = "s_any = 0"
+        lines(109) = "do for [i=1:n] {"
+        lines(110) = "    stats word(files, i) skip skip_rows u (abs(column(c_s)))" &
+            //" nooutput"
+        lines(111) = "    s_any = (STATS_max > s_any) ? STATS_max : s_any"
+        lines(112) = "}"
+        lines(113) = "if (s_any == 0) { set yrange [-1:1] }"
+        lines(114) = "plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s w l" &
             //" lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line"
-        lines(108) = ""
-        lines(109) = "set title 'Bending moment '.(c_mt > 0 ? 'M_r' : 'M').' (> 0 " &
+        lines(115) = "set yrange [*:*]"
+        lines(116) = ""
+        lines(117) = "set title 'Bending moment '.(c_mt > 0 ? 'M_r' : 'M').' (> 0 " &
             //"hogging)'"
-        lines(110) = "set ylabel lab_mr"
-        lines(111) = "plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_m w l" &
+        lines(118) = "set ylabel lab_mr"
+        lines(119) = "plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_m w l" &
             //" lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line"
-        lines(112) = ""
-        lines(113) = "if (c_mt > 0) {"
-        lines(114) = "    set title 'Hoop moment M_theta (> 0 hogging)'"
-        lines(115) = "    set ylabel lab_mt"
-        lines(116) = "    plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_m" &
+        lines(120) = ""
+        lines(121) = "if (c_mt > 0) {"
+        lines(122) = "    set title 'Hoop moment M_theta (> 0 hogging)'"
+        lines(123) = "    set ylabel lab_mt"
+        lines(124) = "    plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_m" &
             //"t w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line"
-        lines(117) = "} else {"
-        lines(118) = "    set title 'Interface slip'"
-        lines(119) = "    set ylabel lab_slip"
-        lines(120) = "    plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s" &
+        lines(125) = "} else {"
+        lines(126) = "    set title 'Interface slip'"
+        lines(127) = "    set ylabel lab_slip"
+        lines(128) = "    plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_s" &
             //"lip w l lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line"
-        lines(121) = "}"
-        lines(122) = ""
-        lines(123) = "set title 'Shear force'"
-        lines(124) = "set ylabel lab_q"
-        lines(125) = "plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_q w l" &
+        lines(129) = "}"
+        lines(130) = ""
+        lines(131) = "set title 'Shear force'"
+        lines(132) = "set ylabel lab_q"
+        lines(133) = "plot for [i=1:n] word(files, i) skip skip_rows u c_x:c_q w l" &
             //" lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line"
-        lines(126) = "unset multiplot"
+        lines(134) = "unset multiplot"
     end function sweep_template
 end module figure_templates

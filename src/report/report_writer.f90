@@ -195,7 +195,8 @@ contains
         write (u, '(a)', advance='no') '  "singular_results": ['
         do i = 1, size(e)
             if (.not. (e(i)%singular .and. e(i)%defined)) cycle
-            write (u, '(a)', advance='no') trim(merge('  ', ', ', first))//json_string(trim(e(i)%key))
+            if (.not. first) write (u, '(a)', advance='no') ', '
+            write (u, '(a)', advance='no') json_string(trim(e(i)%key))
             first = .false.
         end do
         write (u, '(a)') '],'
@@ -961,7 +962,7 @@ contains
             label = e(i)%label
             if (e(i)%singular .and. e(i)%defined) label = trim(label)//' [s]'
             if (.not. e(i)%defined) then
-                write (u, '(3x,a,t52,a)') label, 'n/a'
+                write (u, '(3x,a,t52,a)') trim(label), 'n/a'
             else if (e(i)%integer_valued) then
                 write (u, '(3x,a,t52,i14)') label, nint(e(i)%value)
             else if (e(i)%has_error) then

@@ -99,14 +99,16 @@ contains
 
     !> The entries whose value is unbounded in the model where it is taken: the largest
     !! pressure at an edge in contact or under a POINT or RING load; under a POINT load on
-    !! the plate's axis also the settlement (Mindlin: the shear deflection ~ ln r), the
-    !! moments (~ ln r) and the shear force (~ 1/r) there, hence the largest settlement, its
-    !! difference, the largest sagging moments and |Q_r|.
+    !! the plate's axis (or a RING of radius 0) also the settlement (Mindlin: the shear
+    !! deflection ~ ln r, its slope ~ 1/r), the moments (~ ln r) and the shear force (~ 1/r)
+    !! there, hence the largest settlement, its difference, the largest angular distortion,
+    !! the largest sagging moments and |Q_r|.
     pure subroutine mark_singular(s, e)
         type(summary_t), intent(in) :: s
         type(entry_t), intent(inout) :: e(:)
-        character(len=*), parameter :: point_keys(5) = [character(len=24) :: 'settlement_max', &
-            'differential_settlement', 'moment_sagging', 'hoop_moment_sagging', 'shear_force_max']
+        character(len=*), parameter :: point_keys(6) = [character(len=24) :: 'settlement_max', &
+            'differential_settlement', 'moment_sagging', 'hoop_moment_sagging', &
+            'shear_force_max', 'angular_distortion']
         integer :: i
         do i = 1, size(e)
             if (trim(e(i)%key) == 'pressure_max') e(i)%singular = s%pressure_max_singular
