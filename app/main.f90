@@ -6,9 +6,9 @@ program fricon
     use iso_c_binding, only: c_int
     use errors, only: error_t, EXIT_OK, EXIT_INPUT
     use gsl_wrappers, only: gsl_start
-    use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines
+    use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines, case_count
     use analysis_driver, only: run_analysis, run_options_t
-    use output_paths, only: stderr_is_terminal
+    use output_paths, only: stderr_is_terminal, check_decks_apart, remove_stale_outputs
     implicit none
     interface
         ! void exit(int status);  (the C library: ends without the runtime's "STOP n" line)
@@ -171,28 +171,31 @@ contains
         call finish(EXIT_INPUT)
     end subroutine usage_error
 
-    !> Two decks of one call with the same file stem and the same output folder would write
-    !! the same files: refused before anything is solved.
+    !> Decks of one call that would write the same file, or overwrite one another, are refused
+    !! before anything is solved (output_paths::check_decks_apart); a deck that cannot be
+    !! read writes nothing and is left to its own error.
     subroutine check_distinct_outputs(decks, out_dir)
         character(len=*), intent(in) :: decks(:), out_dir
-        integer :: i, j
-        do i = 2, size(decks)
-            do j = 1, i - 1
-                if (output_directory(trim(decks(i)), trim(out_dir)) /= &
-                    output_directory(trim(decks(j)), trim(out_dir))) cycle
-                if (stem(decks(i)) /= stem(decks(j))) cycle
-                call usage_error('the decks '//trim(decks(j))//' and '//trim(decks(i))// &
-                                 ' would write the same outputs; run them with different -o folders')
-            end do
+        character(len=1024) :: dirs(size(decks)), stems(size(decks))
+        integer :: counts(size(decks)), k
+        type(deck_t) :: deck
+        type(error_t), allocatable :: err
+        if (size(decks) < 2) return
+        do k = 1, size(decks)
+            dirs(k) = output_directory(trim(decks(k)), trim(out_dir))
+            counts(k) = 0
+            stems(k) = ''
+            call read_deck(trim(decks(k)), deck, err)
+            if (allocated(err)) then
+                deallocate (err)
+                cycle
+            end if
+            counts(k) = case_count(deck)
+            stems(k) = deck%stem
         end do
+        call check_decks_apart(decks, dirs, stems, counts, err)
+        if (allocated(err)) call usage_error(err%message)
     end subroutine check_distinct_outputs
-
-    pure function stem(path) result(name)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: name
-        name = trim(path(index(path, '/', back=.true.) + 1:))
-        if (index(name, '.', back=.true.) > 1) name = name(1:index(name, '.', back=.true.) - 1)
-    end function stem
 
     subroutine run_default(out_dir, options, status)
         character(len=*), intent(in) :: out_dir
@@ -222,6 +225,8 @@ contains
         if (allocated(err)) then
             write (error_unit, '(a)') 'ERROR: '//err%message
             status = err%code
+            ! no output, and none of an earlier run of this deck left to be taken for its result
+            call remove_stale_outputs(output_directory(path, out_dir), deck%stem, 0, path)
             return
         end if
         call run_analysis(deck, output_directory(path, out_dir), output_unit, error_unit, &

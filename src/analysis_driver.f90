@@ -17,7 +17,8 @@ module analysis_driver
     use plausibility, only: warning_length, input_warnings, settlement_warnings
     use error_estimate, only: estimate_errors
     use adaptive_solve, only: adaptation_t, solve_adaptive
-    use output_paths, only: prepare_output_dir, check_deck_not_overwritten
+    use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
+                            case_number, remove_stale_outputs
     use blas_threads, only: set_blas_threads, blas_thread_count
     use flexibility_cache, only: enable_flexibility_cache
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
@@ -89,11 +90,16 @@ contains
                 deallocate (err)
             end if
         end do validate
-        if (status /= EXIT_OK) return
+        if (status /= EXIT_OK) then
+            ! exit 1 writes no output, and leaves none of an earlier run of this deck
+            call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
+            return
+        end if
         if (present(options)) opt = options
         if (opt%full_model) cases(:)%simplify = .false.
         call prepare_output_dir(out_dir, err)
-        if (.not. allocated(err)) call check_deck_not_overwritten(deck%path, out_dir, deck%stem, err)
+        if (.not. allocated(err)) call check_deck_not_overwritten(deck%path, out_dir, deck%stem, &
+                                                                  n, err)
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = err%code
@@ -147,6 +153,9 @@ contains
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = max(status, err%code)
         end if
+        ! what an earlier run of this deck wrote and this one did not (a longer sweep, a sweep
+        ! where there is now one case, or one case where there is now a sweep)
+        call remove_stale_outputs(out_dir, deck%stem, n, deck%path)
     end subroutine run_analysis
 
     !> Refuse (exit status 1) a case that alone needs more memory than the machine has; solve
@@ -240,15 +249,6 @@ contains
         end if
     end subroutine write_sweep_outputs
 
-    !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits).
-    pure function case_name(stem, i, n) result(name)
-        character(len=*), intent(in) :: stem
-        integer, intent(in) :: i, n
-        character(len=:), allocatable :: name
-        name = stem
-        if (n > 1) name = stem//'_'//case_number(i, n)
-    end function case_name
-
     !> Standard-error progress: cases done of n, the elapsed time and an estimate of the time
     !! left (the mean time per case so far).
     subroutine report_progress(unit, done, n, name, clock_start)
@@ -274,18 +274,6 @@ contains
         write (buf, '(f12.1)') t
         text = trim(adjustl(buf))//' s'
     end function seconds
-
-    !> i with leading zeros, as wide as n and at least three digits (001, 0042 of 1000).
-    pure function case_number(i, n) result(text)
-        integer, intent(in) :: i, n
-        character(len=:), allocatable :: text
-        character(len=12) :: fmt, buf
-        integer :: width
-        width = max(3, int(log10(real(max(n, 1), dp))) + 1)
-        write (fmt, '(a,i0,a,i0,a)') '(i', width, '.', width, ')'
-        write (buf, fmt) i
-        text = trim(buf)
-    end function case_number
 
     !> One case: solve, tabulate, summarise, estimate the error (all in parallel with other
     !! cases of a sweep), then write the report, data files, JSON summary, gnuplot script and
@@ -508,6 +496,8 @@ contains
         if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
                                                          result%label, s, err)
         if (allocated(err)) then
+            ! no partial set of a case's files is left (README: exit 1 writes no output)
+            call remove_case_files(base)
             result%status = err%code
             result%message = err%message
             return
@@ -519,6 +509,7 @@ contains
                           result%entries, s, '', report_notes(result%warnings, note), err, &
                           result%adaptation)
         if (allocated(err)) then
+            call remove_case_files(base)
             result%status = err%code
             result%message = err%message
         end if
@@ -560,6 +551,14 @@ contains
         character(len=*), parameter :: ext(5) = ['.dat', '.csv', '.gp ', '.png', '.txt']
         call remove_files(base, ext)
     end subroutine remove_stale
+
+    !> Every file of a case (a write that failed leaves none of the others).
+    subroutine remove_case_files(base)
+        character(len=*), intent(in) :: base
+        call remove_stale(base)
+        call remove_files(base, ['.json'])
+        call remove_temporaries(base)
+    end subroutine remove_case_files
 
     !> The temporary files of this case's outputs that a killed earlier run may have left
     !! (NAME.ext.tmp): removed before the case writes, so none is ever taken for a result.

@@ -6,7 +6,9 @@ module test_report_writer
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
-    use deck_reader, only: deck_t, parse_deck
+    use deck_reader, only: deck_t, parse_deck, case_model
+    use model, only: model_t
+    use output_paths, only: writes_file, check_decks_apart
     use analysis_driver, only: run_analysis, run_options_t
     use figure_templates, only: panel_template, sweep_template
     use blas_threads, only: set_blas_threads, blas_thread_count
@@ -28,7 +30,11 @@ contains
                  new_unittest('embedded_templates_match', test_templates), &
                  new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep), &
                  new_unittest('single_case_independent_of_blas_threads', test_blas_threads), &
-                 new_unittest('json_summary_parses_with_escaped_title', test_json_title)]
+                 new_unittest('json_summary_parses_with_escaped_title', test_json_title), &
+                 new_unittest('sweep_outputs_never_overwrite_a_deck', test_decks_apart), &
+                 new_unittest('failed_write_leaves_no_file', test_failed_write), &
+                 new_unittest('stale_outputs_of_the_deck_removed', test_stale_outputs), &
+                 new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -53,6 +59,172 @@ contains
                  card('LOAD', [character(len=10) :: 'POINT', '1.0', load_fx, '0.0']), &
                  card('MESH', ['16']), extra, card('END', [' '])]
     end function plate_deck
+
+    !> A small physical beam deck (one case), a SWEEP card appended when given.
+    function beam_deck(sweep) result(lines)
+        character(len=*), intent(in) :: sweep(:)
+        character(len=80), allocatable :: lines(:)
+        lines = [character(len=80) :: card('MODEL', ['BEAM']), card('UNITS', ['kN', 'm ']), &
+                 card('GEOMETRY', ['10.0', '0.8 ', '1.0 ']), card('STRUCTURE', ['3.0E7', '0.2  ']), &
+                 card('SOIL', ['3.0E4', '0.3  ']), card('FRICTION', ['0.5']), &
+                 card('LOAD', ['POINT ', '1000.0', '      ', '0.0   ']), &
+                 card('MESH', ['16'])]
+        if (size(sweep) > 0) lines = [character(len=80) :: lines, card('SWEEP', sweep)]
+        lines = [character(len=80) :: lines, card('END', [' '])]
+    end function beam_deck
+
+    !> The files a deck writes (output_paths::writes_file): one case STEM.ext; a sweep of 12
+    !! STEM_001.ext to STEM_012.ext (as wide as 12 needs, at least 3 digits), STEM_summary.csv,
+    !! STEM_sweep.gp/.png, and their .tmp; nothing else. A sweep deck s.dat beside a deck
+    !! s_001.dat in one output folder: the run is refused (s_001.dat would be overwritten by
+    !! case 1's data file), and so are a sweep x and a deck x_001 writing into one folder
+    !! (both would write x_001.txt); two decks apart pass.
+    subroutine test_decks_apart(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        integer :: u
+        call check(err, writes_file('s', 1, 's.dat') .and. writes_file('s', 1, 's.json.tmp') .and. &
+                   .not. writes_file('s', 1, 's_001.dat') .and. writes_file('s', 12, 's_012.png') &
+                   .and. .not. writes_file('s', 12, 's_013.png') .and. &
+                   .not. writes_file('s', 12, 's_0012.png') .and. &
+                   .not. writes_file('s', 12, 's.dat') .and. writes_file('s', 12, 's_summary.csv') &
+                   .and. writes_file('s', 12, 's_sweep.gp') .and. .not. writes_file('s', 1, &
+                   's_summary.csv') .and. writes_file('s', 1000, 's_0999.txt') .and. .not. &
+                   writes_file('s', 1000, 's_999.txt'), 'writes_file: the output names')
+        if (allocated(err)) return
+        call clean_dir()
+        open (newunit=u, file=dir//'/s_001.dat', status='replace', action='write')
+        write (u, '(a)') '* a deck'
+        close (u)
+        open (newunit=u, file=dir//'/s.dat', status='replace', action='write')
+        close (u)
+        call check_decks_apart([character(len=40) :: dir//'/s.dat', dir//'/s_001.dat'], &
+                               [character(len=40) :: dir, dir], ['s    ', 's_001'], [2, 1], refusal)
+        call check(err, refused(refusal, 's_001.dat would be overwritten'), &
+                   'a deck overwritten by a sweep case was not refused, or not for that')
+        if (allocated(err)) return
+        call check_decks_apart([character(len=40) :: 'a/x.dat', 'b/x_001.dat'], &
+                               [character(len=40) :: dir, dir], ['x    ', 'x_001'], [3, 1], refusal)
+        call check(err, refused(refusal, 'would both write'), &
+                   'a sweep and a deck writing x_001.* were not refused, or not for that')
+        if (allocated(err)) return
+        call check_decks_apart([character(len=40) :: 'a/x.dat', 'b/y.dat'], &
+                               [character(len=40) :: dir, dir], ['x', 'y'], [3, 1], refusal)
+        call check(err, .not. allocated(refusal), 'decks apart were refused')
+    end subroutine test_decks_apart
+
+    !> An error that says why (text) was given.
+    logical function refused(e, text)
+        type(error_t), allocatable, intent(in) :: e
+        character(len=*), intent(in) :: text
+        refused = allocated(e)
+        if (refused) refused = index(e%message, text) > 0
+    end function refused
+
+    !> A write that fails (the CSV's name is taken by a folder) ends with status 1 and leaves
+    !! none of the case's files and no .tmp (README: an exit 1 writes no output).
+    subroutine test_failed_write(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, k
+        character(len=*), parameter :: ext(6) = ['.txt ', '.dat ', '.json', '.gp  ', '.png ', &
+                                                 '.tmp ']
+        call clean_dir()
+        call execute_command_line('mkdir -p '//dir//'/w.csv')
+        call parse_deck('w.dat', beam_deck([character(len=4) ::]), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, run_options_t(figures=.false.))
+        call check(err, status == EXIT_INPUT, 'a failed write did not end with status 1')
+        if (allocated(err)) return
+        do k = 1, size(ext)
+            call check(err, .not. exists(dir//'/w'//trim(ext(k))) .and. .not. &
+                       exists(dir//'/w'//trim(ext(k))//'.tmp') .and. .not. &
+                       exists(dir//'/w.csv.tmp'), 'a file was left: w'//trim(ext(k)))
+            if (allocated(err)) return
+        end do
+    end subroutine test_failed_write
+
+    !> What an earlier run of the same deck wrote and this one does not is removed: a sweep of
+    !! three, then of two (st_003.* go), then one case (st_001.*, st_002.*, the summary and the
+    !! sweep script go; st.* come), then an input error (st.* go: an exit 1 leaves no output).
+    !! A file of another deck (other_001.json names other.dat) stays.
+    subroutine test_stale_outputs(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u
+        type(run_options_t) :: opt
+        opt%figures = .false.
+        opt%estimates = .false.
+        call clean_dir()
+        open (newunit=u, file=dir//'/st_004.json', status='replace', action='write')
+        write (u, '(a)') '{'
+        write (u, '(a)') '  "deck": "other.dat",'
+        close (u)
+        call parse_deck('st.dat', beam_deck(['F  ', '0.3', '0.4', '0.5']), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK .and. exists(dir//'/st_003.txt'), 'sweep of three')
+        if (allocated(err)) return
+        call parse_deck('st.dat', beam_deck(['F  ', '0.3', '0.4']), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK .and. exists(dir//'/st_002.txt') .and. .not. &
+                   exists(dir//'/st_003.txt') .and. .not. exists(dir//'/st_003.json') .and. &
+                   exists(dir//'/st_summary.csv'), 'sweep of two: case 3 of three left')
+        if (allocated(err)) return
+        call parse_deck('st.dat', beam_deck([character(len=4) ::]), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK .and. exists(dir//'/st.txt') .and. .not. &
+                   exists(dir//'/st_001.txt') .and. .not. exists(dir//'/st_002.dat') .and. .not. &
+                   exists(dir//'/st_summary.csv') .and. .not. exists(dir//'/st_sweep.gp'), &
+                   'one case: the sweep''s files left')
+        if (allocated(err)) return
+        deck%path = 'st.dat'
+        call run_analysis_of_bad_deck(deck, status)
+        call check(err, status == EXIT_INPUT .and. .not. exists(dir//'/st.txt') .and. .not. &
+                   exists(dir//'/st.json') .and. exists(dir//'/st_004.json'), &
+                   'input error: the earlier st.* left, or another deck''s file removed')
+    end subroutine test_stale_outputs
+
+    !> Run a deck whose case 1 is invalid (status 1; case_model reports it).
+    subroutine run_analysis_of_bad_deck(deck, status)
+        type(deck_t), intent(in) :: deck
+        integer, intent(out) :: status
+        type(deck_t) :: bad
+        type(error_t), allocatable :: err
+        call parse_deck(deck%path, beam_deck(['L   ', '10.0']), bad, err)
+        if (allocated(err)) then
+            status = -1
+            return
+        end if
+        bad%sweeps(1)%values(1) = -10.0_dp       ! a beam of negative length: case 1 invalid
+        call run_analysis(bad, dir, output_unit, error_unit, status)
+    end subroutine run_analysis_of_bad_deck
+
+    !> LOADS grading needs an element for each piece between the load positions: a beam with a
+    !! patch and a point load (4 pieces) on MESH 2 LOADS is a deck error at the MESH card's
+    !! N_e field (line 8, columns 11-20), before anything is solved (it used to fail while
+    !! meshing, after the other cases of a sweep had been solved and written).
+    subroutine test_loads_mesh(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        type(deck_t) :: deck
+        type(model_t) :: m
+        character(len=:), allocatable :: label
+        character(len=80), allocatable :: lines(:)
+        lines = beam_deck([character(len=4) ::])
+        lines(7) = card('LOAD', ['PATCH ', '1000.0', '      ', '-2.0  ', '1.0   '])
+        lines(8) = card('MESH', ['2     ', 'LOADS '])
+        lines = [character(len=80) :: lines(1:7), card('LOAD', ['POINT ', '500.0 ', '      ', &
+                 '3.0   ']), lines(8:)]
+        call parse_deck('coarse.dat', lines, deck, err)
+        if (allocated(err)) return
+        call case_model(deck, 1, m, label, refusal)
+        call check(err, refused(refusal, 'coarse.dat:9:11-20') .and. &
+                   refused(refusal, 'at least 4'), 'MESH 2 LOADS with 4 pieces not refused at '// &
+                   'its N_e field')
+    end subroutine test_loads_mesh
 
     subroutine clean_dir()
         call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)

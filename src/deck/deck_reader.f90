@@ -35,6 +35,7 @@ module deck_reader
     use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
                      LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP
     use shape_functions, only: interp_code
+    use discretization, only: fewest_elements
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
                            FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
                            RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_OPEN_UNIT, RULE_COUNT, &
@@ -256,9 +257,46 @@ contains
             end associate
         end do
         call complete_model(m)
-        if (diag%n > 0) call new_error(err, EXIT_INPUT, render_diagnostics(diag, deck%path, &
-            ', case '//int_text(i)//' ('//label//'); case not run'))
+        call check_element_count(deck, m, pick, diag)
+        if (diag%n == 0) return
+        if (len(label) == 0) then
+            call new_error(err, EXIT_INPUT, render_diagnostics(diag, deck%path, &
+                '; execution not attempted'))
+        else
+            call new_error(err, EXIT_INPUT, render_diagnostics(diag, deck%path, &
+                ', case '//int_text(i)//' ('//label//'); case not run'))
+        end if
     end subroutine case_model
+
+    !> N_e at least the fewest elements the grading can make (LOADS: one per piece between
+    !! the load positions; discretization::fewest_elements), reported at the MESH card's N_e
+    !! field, or at the SWEEP NE value that set it.
+    subroutine check_element_count(deck, m, pick, diag)
+        type(deck_t), intent(in) :: deck
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: pick(:)              !! the case's value of each SWEEP card
+        type(diagnostics_t), intent(inout) :: diag
+        integer :: fewest, line, first, s
+        fewest = fewest_elements(m)
+        if (m%ne >= fewest) return
+        line = 0
+        first = field_first_column(1)
+        do s = 1, size(deck%sweeps)
+            if (trim(deck%sweeps(s)%name) /= 'NE') cycle
+            line = deck%sweeps(s)%line
+            first = field_first_column(pick(s) + 1)
+        end do
+        if (line == 0) then
+            do s = 1, size(deck%lines)
+                if (to_upper(adjustl(deck%lines(s)(1:name_width))) == 'MESH') line = s
+            end do
+        end if
+        if (line < 1) return
+        call add_diagnostic(diag, line, first, first + field_width - 1, 'MESH N_e must be at '// &
+            'least '//int_text(fewest)//' with LOADS grading (an element for each piece '// &
+            'between the load positions and patch edges), got '//int_text(m%ne), &
+            echo_text(deck%lines(line)))
+    end subroutine check_element_count
 
     !> The built-in default case (identical to input/default.dat): a circular concrete raft
     !! under a column load on an elastic half-space, physical data in kN and m.

@@ -3,7 +3,7 @@
 module discretization
     use kinds, only: dp
     use errors, only: error_t
-    use mesh, only: mesh_t, new_mesh
+    use mesh, only: mesh_t, new_mesh, loads_pieces
     use shape_functions, only: basis_t, new_basis
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, &
                      FIELD_SZ
@@ -23,6 +23,7 @@ module discretization
     end type discretization_t
 
     public :: new_discretization, discretise_mesh, load_positions, locate_element, loads_on_nodes
+    public :: fewest_elements
 
 contains
 
@@ -34,6 +35,16 @@ contains
         type(mesh_t) :: msh
         real(dp) :: x_left, x_right
 
+        call interface_ends(m, x_left, x_right)
+        call new_mesh(msh, x_left, x_right, m%ne, m%grading, err, load_positions(m))
+        if (allocated(err)) return
+        call discretise_mesh(m, msh, d)
+    end subroutine new_discretization
+
+    !> The ends of the interface: [-l/2, l/2] (beam), [0, a] (plate).
+    pure subroutine interface_ends(m, x_left, x_right)
+        type(model_t), intent(in) :: m
+        real(dp), intent(out) :: x_left, x_right
         if (m%kind == MODEL_BEAM) then
             x_left = -0.5_dp*m%length
             x_right = 0.5_dp*m%length
@@ -41,10 +52,18 @@ contains
             x_left = 0.0_dp
             x_right = m%length
         end if
-        call new_mesh(msh, x_left, x_right, m%ne, m%grading, err, load_positions(m))
-        if (allocated(err)) return
-        call discretise_mesh(m, msh, d)
-    end subroutine new_discretization
+    end subroutine interface_ends
+
+    !> The fewest elements the model's MESH grading can make: one per piece between the load
+    !! positions for LOADS, else 1 (the deck reader checks N_e against it).
+    pure integer function fewest_elements(m) result(n)
+        type(model_t), intent(in) :: m
+        real(dp) :: x_left, x_right
+        n = 1
+        if (trim(m%grading) /= 'LOADS') return
+        call interface_ends(m, x_left, x_right)
+        n = loads_pieces(x_left, x_right, load_positions(m))
+    end function fewest_elements
 
     !> Bases, numbering and constraints of the model's fields on a given mesh (any nodes:
     !! the MESH card's, or an adapted mesh). The one place these rules live.

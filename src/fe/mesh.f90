@@ -20,7 +20,7 @@ module mesh
         real(dp), allocatable :: x(:)        !! node coordinates x(0:ne) [length]
     end type mesh_t
 
-    public :: new_mesh, element_length
+    public :: new_mesh, element_length, loads_pieces
 
     real(dp), parameter :: grading_ratio = 1.1_dp  !! size ratio of neighbouring elements (EDGES)
     integer, parameter :: max_growth = 60           !! largest/smallest element <= 1.1**60 = 304
@@ -86,6 +86,13 @@ contains
     end function graded_sizes
 
     !> Sorted distinct cut points: the ends and the attractors strictly inside.
+    !> The pieces LOADS grading cuts [x_left, x_right] into (it needs an element for each).
+    pure integer function loads_pieces(x_left, x_right, attractors) result(n)
+        real(dp), intent(in) :: x_left, x_right
+        real(dp), intent(in) :: attractors(:)
+        n = size(break_points(x_left, x_right, attractors)) - 1
+    end function loads_pieces
+
     pure function break_points(x_left, x_right, attractors) result(breaks)
         real(dp), intent(in) :: x_left, x_right, attractors(:)
         real(dp), allocatable :: breaks(:)

@@ -14,6 +14,12 @@ module atomic_files
             character(kind=c_char), intent(in) :: oldpath(*), newpath(*)
             integer(c_int) :: c_rename
         end function c_rename
+        ! int remove(const char *pathname);
+        function c_remove(path) bind(c, name='remove')
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int) :: c_remove
+        end function c_remove
     end interface
 
 contains
@@ -30,15 +36,27 @@ contains
         if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))
     end subroutine open_temporary
 
-    !> Close the unit and move `path`.tmp to `path`.
+    !> Close the unit and move `path`.tmp to `path`; if that fails, the temporary file is
+    !! removed (no NAME.tmp is left) and the error says why it may have failed.
     subroutine commit_file(path, unit, err)
         character(len=*), intent(in) :: path
         integer, intent(in) :: unit
         type(error_t), allocatable, intent(out) :: err
         integer :: ios
-        close (unit, iostat=ios)
-        if (ios == 0) ios = c_rename(path//'.tmp'//c_null_char, path//c_null_char)
-        if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path)
+        character(len=256) :: msg
+        msg = ''
+        close (unit, iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            ios = c_remove(path//'.tmp'//c_null_char)
+            call new_error(err, EXIT_INPUT, 'cannot write '//path//': '//trim(msg))
+            return
+        end if
+        if (c_rename(path//'.tmp'//c_null_char, path//c_null_char) /= 0) then
+            ios = c_remove(path//'.tmp'//c_null_char)
+            call new_error(err, EXIT_INPUT, 'cannot write '//path//': it cannot replace what '// &
+                           'is there (a folder of that name, or a file or folder without write '// &
+                           'permission)')
+        end if
     end subroutine commit_file
 
     !> Close and delete a temporary file (after a failure).

@@ -31,6 +31,8 @@ module output_paths
     end interface
 
     public :: prepare_output_dir, check_deck_not_overwritten, stderr_is_terminal
+    public :: case_name, case_number, writes_file, output_files, base_name, check_decks_apart
+    public :: remove_stale_outputs
 
 contains
 
@@ -59,25 +61,250 @@ contains
     end subroutine prepare_output_dir
 
     !> Refuse (exit status 1) when an output of the deck would be the deck itself: the deck
-    !! lies in the output folder and is named STEM.ext with an extension fricon writes.
-    subroutine check_deck_not_overwritten(deck_path, dir, stem, err)
+    !! lies in the output folder and is named like one of the files its n cases write
+    !! (writes_file).
+    subroutine check_deck_not_overwritten(deck_path, dir, stem, n, err)
         character(len=*), intent(in) :: deck_path, dir, stem
+        integer, intent(in) :: n                 !! cases of the deck
         type(error_t), allocatable, intent(out) :: err
         character(len=:), allocatable :: deck_real, dir_real
-        integer :: k
         deck_real = real_path(deck_path)
         dir_real = real_path(dir)
         if (len(deck_real) == 0 .or. len(dir_real) == 0) return
-        do k = 1, size(output_extensions)
-            if (deck_real == dir_real//'/'//stem//trim(output_extensions(k))) then
-                call new_error(err, EXIT_INPUT, 'the deck '//deck_path//' lies in the output '// &
-                    'folder '//dir//' and would be overwritten by its own '// &
-                    trim(output_extensions(k))//' output: give another folder (-o DIR) or '// &
-                    'rename the deck (decks are not overwritten)')
-                return
-            end if
-        end do
+        if (deck_real(1:len(deck_real) - len(base_name(deck_real))) /= dir_real//'/') return
+        if (.not. writes_file(stem, n, base_name(deck_real))) return
+        call new_error(err, EXIT_INPUT, 'the deck '//deck_path//' lies in the output folder '// &
+            dir//' and would be overwritten by one of its own outputs: give another folder '// &
+            '(-o DIR) or rename the deck (decks are not overwritten)')
     end subroutine check_deck_not_overwritten
+
+    !> Refuse (exit status 1) a run of several decks in which one deck would write a file that
+    !! another writes (two decks named alike, or a sweep's STEM_001 beside a deck of that
+    !! name) or would overwrite another deck of the run. Deck k has the path paths(k), writes
+    !! into dirs(k), has the file stem stems(k) and counts(k) cases (0: unreadable, writes
+    !! nothing).
+    subroutine check_decks_apart(paths, dirs, stems, counts, err)
+        character(len=*), intent(in) :: paths(:), dirs(:), stems(:)
+        integer, intent(in) :: counts(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: files(:), deck_real, dir_real
+        integer :: i, j, k
+        do i = 1, size(paths)
+            if (counts(i) < 1) cycle
+            dir_real = real_path(trim(dirs(i)))
+            do j = 1, size(paths)
+                if (j == i) cycle
+                ! deck j overwritten by an output of deck i
+                deck_real = real_path(trim(paths(j)))
+                if (len(deck_real) > 0 .and. len(dir_real) > 0) then
+                    if (deck_real == dir_real//'/'//base_name(deck_real) .and. &
+                        writes_file(trim(stems(i)), counts(i), base_name(deck_real))) then
+                        call new_error(err, EXIT_INPUT, 'the deck '//trim(paths(j))// &
+                            ' would be overwritten by an output of '//trim(paths(i))// &
+                            ': run them with different -o folders, or rename one '// &
+                            '(decks are not overwritten)')
+                        return
+                    end if
+                end if
+                ! the same file written by both
+                if (j < i .or. counts(j) < 1 .or. trim(dirs(i)) /= trim(dirs(j))) cycle
+                files = output_files(trim(stems(j)), counts(j))
+                do k = 1, size(files)
+                    if (.not. writes_file(trim(stems(i)), counts(i), trim(files(k)))) cycle
+                    call new_error(err, EXIT_INPUT, 'the decks '//trim(paths(i))//' and '// &
+                        trim(paths(j))//' would both write '//trim(dirs(i))//'/'// &
+                        trim(files(k))//': run them with different -o folders')
+                    return
+                end do
+            end do
+        end do
+    end subroutine check_decks_apart
+
+    !> Remove what an earlier run of the same deck left in dir that this run does not write
+    !! (n cases; n = 0 for a deck with input errors, which writes nothing): the files of a
+    !! case STEM.* or STEM_NNN.* (any width of NNN, numbered on from 1) whose JSON summary
+    !! names this deck (`"deck": "PATH"`, so that nothing another deck wrote is touched), and
+    !! a sweep's STEM_summary.csv and STEM_sweep.* when such a case of a sweep was removed and
+    !! this run is no sweep. Never the deck itself.
+    subroutine remove_stale_outputs(dir, stem, n, deck_path)
+        character(len=*), intent(in) :: dir, stem, deck_path
+        integer, intent(in) :: n
+        character(len=*), parameter :: sweep_files(3) = [character(len=12) :: '_summary.csv', &
+                                                         '_sweep.gp', '_sweep.png']
+        character(len=:), allocatable :: deck_real, group
+        logical :: swept
+        integer :: width, i, k
+        deck_real = real_path(deck_path)
+        if (n /= 1) call remove_group(dir//'/'//stem, deck_path, deck_real)
+        swept = .false.
+        widths: do width = 3, 9
+            numbers: do i = 1, 10**min(width, 8) - 1
+                group = stem//'_'//padded(i, width)
+                if (n > 1) then
+                    if (writes_file(stem, n, group//'.txt')) cycle numbers
+                end if
+                if (.not. names_deck(dir//'/'//group//'.json', deck_path, deck_real)) exit numbers
+                call remove_group(dir//'/'//group, deck_path, deck_real)
+                swept = .true.
+            end do numbers
+        end do widths
+        if (.not. swept .or. n > 1) return
+        do k = 1, size(sweep_files)
+            call remove_one(dir//'/'//stem//trim(sweep_files(k)), deck_real)
+        end do
+    end subroutine remove_stale_outputs
+
+    !> The files of one case, base.ext for every output extension and their .tmp, if its JSON
+    !! summary names the deck; never the deck itself.
+    subroutine remove_group(base, deck_path, deck_real)
+        character(len=*), intent(in) :: base, deck_path, deck_real
+        integer :: k
+        if (.not. names_deck(base//'.json', deck_path, deck_real)) return
+        do k = 1, size(output_extensions)
+            call remove_one(base//trim(output_extensions(k))//'.tmp', deck_real)
+            if (trim(output_extensions(k)) == '.json') cycle
+            call remove_one(base//trim(output_extensions(k)), deck_real)
+        end do
+        call remove_one(base//'.json', deck_real)   ! last: it is the proof of provenance
+    end subroutine remove_group
+
+    !> Delete a file unless it is the deck (deck_real: the deck's canonical path).
+    subroutine remove_one(path, deck_real)
+        character(len=*), intent(in) :: path, deck_real
+        integer :: u, ios
+        logical :: there
+        inquire (file=path, exist=there)
+        if (.not. there) return
+        if (len(deck_real) > 0) then
+            if (real_path(path) == deck_real) return
+        end if
+        open (newunit=u, file=path, status='old', iostat=ios)
+        if (ios == 0) close (u, status='delete', iostat=ios)
+    end subroutine remove_one
+
+    !> Whether the JSON summary at path was written for the deck: its "deck" line holds the
+    !! deck's path as given, or a path that resolves to the deck's canonical path deck_real.
+    logical function names_deck(path, deck_path, deck_real)
+        character(len=*), intent(in) :: path, deck_path, deck_real
+        character(len=4096) :: line
+        character(len=:), allocatable :: given
+        integer :: u, ios, k
+        logical :: there
+        names_deck = .false.
+        inquire (file=path, exist=there)
+        if (.not. there) return
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            k = index(line, '"deck": "')
+            if (k == 0) cycle
+            given = line(k + 9:)
+            k = index(given, '"', back=.true.)
+            if (k >= 1) then
+                given = given(1:k - 1)
+                names_deck = given == deck_path
+                if (.not. names_deck .and. len(deck_real) > 0) names_deck = real_path(given) == deck_real
+            end if
+            exit
+        end do
+        close (u)
+    end function names_deck
+
+    !> i with leading zeros in width digits.
+    pure function padded(i, width) result(text)
+        integer, intent(in) :: i, width
+        character(len=:), allocatable :: text
+        character(len=12) :: fmt, buf
+        write (fmt, '(a,i0,a,i0,a)') '(i', width, '.', width, ')'
+        write (buf, fmt) i
+        text = trim(buf)
+    end function padded
+
+    !> Whether `file` (a name without its folder) is one of the outputs of a deck of file
+    !! stem `stem` with n cases: STEM.ext for one case; for a sweep STEM_NNN.ext (NNN a case
+    !! number, case_number) and STEM_summary.csv, STEM_sweep.gp, STEM_sweep.png; ext one of
+    !! output_extensions, or that with .tmp (written first, then renamed).
+    pure logical function writes_file(stem, n, file)
+        character(len=*), intent(in) :: stem, file
+        integer, intent(in) :: n
+        character(len=:), allocatable :: name, digits
+        integer :: k, i, ios, n_ext
+        writes_file = .false.
+        name = file
+        if (len(name) > 4) then
+            if (name(len(name) - 3:) == '.tmp') name = name(1:len(name) - 4)
+        end if
+        if (n > 1) then
+            writes_file = name == stem//'_summary.csv' .or. name == stem//'_sweep.gp' .or. &
+                          name == stem//'_sweep.png'
+            if (writes_file) return
+        end if
+        do k = 1, size(output_extensions)
+            n_ext = len_trim(output_extensions(k))
+            if (len(name) <= n_ext) cycle
+            if (name(len(name) - n_ext + 1:) /= output_extensions(k)(1:n_ext)) cycle
+            if (n <= 1) then
+                writes_file = name == stem//output_extensions(k)(1:n_ext)
+            else if (len(name) > len(stem) + 1 + n_ext) then
+                if (name(1:len(stem) + 1) /= stem//'_') cycle
+                digits = name(len(stem) + 2:len(name) - n_ext)
+                if (len(digits) /= len(case_number(n, n))) cycle
+                if (verify(digits, '0123456789') /= 0) cycle
+                read (digits, *, iostat=ios) i
+                writes_file = ios == 0 .and. i >= 1 .and. i <= n
+            end if
+            if (writes_file) return
+        end do
+    end function writes_file
+
+    !> The names of every file the n cases of a deck of file stem `stem` write (writes_file).
+    pure function output_files(stem, n) result(files)
+        character(len=*), intent(in) :: stem
+        integer, intent(in) :: n
+        character(len=:), allocatable :: files(:)
+        integer :: i, k, width
+        width = len(stem) + 1 + len(case_number(n, n)) + maxval(len_trim(output_extensions))
+        width = max(width, len(stem) + len('_summary.csv'))
+        allocate (character(len=width) :: files(size(output_extensions)*n + merge(3, 0, n > 1)))
+        do i = 1, n
+            do k = 1, size(output_extensions)
+                files(size(output_extensions)*(i - 1) + k) = case_name(stem, i, n)// &
+                                                               trim(output_extensions(k))
+            end do
+        end do
+        if (n > 1) files(size(files) - 2:) = [character(len=width) :: stem//'_summary.csv', &
+                                              stem//'_sweep.gp', stem//'_sweep.png']
+    end function output_files
+
+    !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits).
+    pure function case_name(stem, i, n) result(name)
+        character(len=*), intent(in) :: stem
+        integer, intent(in) :: i, n
+        character(len=:), allocatable :: name
+        name = stem
+        if (n > 1) name = stem//'_'//case_number(i, n)
+    end function case_name
+
+    !> i with leading zeros, as wide as n and at least three digits (001, 0042 of 1000).
+    pure function case_number(i, n) result(text)
+        integer, intent(in) :: i, n
+        character(len=:), allocatable :: text
+        integer :: width
+        width = 3
+        do while (10**width <= n .and. width < 9)
+            width = width + 1
+        end do
+        text = padded(i, width)
+    end function case_number
+
+    !> The last component of a path.
+    pure function base_name(path) result(name)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: name
+        name = trim(path(index(path, '/', back=.true.) + 1:))
+    end function base_name
 
     !> The canonical absolute path of an existing file or folder; '' if it cannot be resolved.
     function real_path(path) result(resolved)
