@@ -13,11 +13,17 @@ done
 for pkg in libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox gfortran; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing=1
 done
+# fpm comes from PyPI: a machine without Python's pip gets Debian's
+pip_packages=""
+if ! command -v fpm >/dev/null 2>&1 && ! python3 -m pip --version >/dev/null 2>&1; then
+  pip_packages="python3 python3-pip"
+  missing=1
+fi
 if [ "$missing" -eq 1 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends \
-    gfortran libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox
+    gfortran libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox $pip_packages
 fi
 
 if ! command -v fpm >/dev/null 2>&1; then
