@@ -94,8 +94,12 @@ contains
             merge(max(m%ne, m%adapt_max_ne), m%ne, m%adapt_tol > 0.0_dp), ' gives ', n, &
             ' unknowns and needs about ', need/1.0e9_dp, ' GB (', max(at_once, 1), &
             ' case(s) at once), more than the ', limit/1.0e9_dp, ' GB usable on this machine '// &
-            '(80 % of the memory available): use fewer elements, a graded mesh (MESH EDGES or '// &
-            'LOADS) or fewer --jobs'
+            '(80 % of the memory available): use fewer elements'
+        ! advice that applies: grading only where the mesh is uniform, fewer jobs only where
+        ! several cases run at once
+        if (trim(m%grading) == 'UNIFORM') text = trim(text)//' (a graded mesh, MESH EDGES or '// &
+            'LOADS, needs fewer for the same accuracy)'
+        if (at_once > 1) text = trim(text)//', or fewer --jobs'
         call new_error(err, EXIT_INPUT, trim(text))
     end subroutine check_memory
 end module resource_limits
