@@ -167,6 +167,12 @@ contains
             call new_error(err, EXIT_INPUT, path//': the deck is empty (or not a text file)')
             return
         end if
+        if (binary(raw)) then
+            ! one message, not one per line echoing a kilobyte of unprintable bytes
+            call new_error(err, EXIT_INPUT, path//': not a text file (a NUL byte, or mostly '// &
+                           'bytes that are not printable text): a deck is a text file of cards')
+            return
+        end if
         width = card_width
         do i = 1, n
             width = max(width, len(raw(i)%text))
@@ -177,6 +183,28 @@ contains
         end do
         call parse_deck(path, lines, deck, err)
     end subroutine read_deck
+
+    !> Binary data rather than text: a NUL byte anywhere, or more than a quarter of the first
+    !! 4096 bytes neither printable ASCII nor a blank, tab, carriage return or form feed (a
+    !! text deck with a few stray control or non-ASCII characters gets its per-line messages).
+    pure logical function binary(raw)
+        type(text_line_t), intent(in) :: raw(:)
+        integer :: i, k, c, seen, odd
+        binary = .false.
+        seen = 0
+        odd = 0
+        do i = 1, size(raw)
+            do k = 1, len(raw(i)%text)
+                c = iachar(raw(i)%text(k:k))
+                if (c == 0) binary = .true.
+                if (binary) return
+                if (seen >= 4096) cycle
+                seen = seen + 1
+                if ((c < 32 .and. c /= 9 .and. c /= 13 .and. c /= 12) .or. c > 126) odd = odd + 1
+            end do
+        end do
+        binary = seen > 0 .and. 4*odd > seen
+    end function binary
 
     !> Parse a deck given as lines of text (line i of the deck is text_lines(i)).
     subroutine parse_deck(name, text_lines, deck, err)
