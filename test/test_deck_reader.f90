@@ -1143,7 +1143,7 @@ contains
         lines = beam_nondim()
         lines(1) = '  MODEL   BEAM'
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:1:3-10: card name '// &
-                          '''MODEL'' starts in column 3', 'missing MODEL card'], err)
+                          '''MODEL'' starts in column 3', '1 input error'], err)
         if (allocated(err)) return
         lines(1) = 'MODEL BEAM'
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:1:7-10: MODEL: text '// &

@@ -34,7 +34,8 @@ contains
                  new_unittest('sweep_outputs_never_overwrite_a_deck', test_decks_apart), &
                  new_unittest('failed_write_leaves_no_file', test_failed_write), &
                  new_unittest('stale_outputs_of_the_deck_removed', test_stale_outputs), &
-                 new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh)]
+                 new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh), &
+                 new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -225,6 +226,26 @@ contains
                    refused(refusal, 'at least 4'), 'MESH 2 LOADS with 4 pieces not refused at '// &
                    'its N_e field')
     end subroutine test_loads_mesh
+
+    !> A card line rejected for its characters or layout still counts as that card: a TAB
+    !! after STRUCTURE (two TABs: one message, as TAB) and MODEL starting in column 2 each give
+    !! their own error and no "missing STRUCTURE/MODEL card" besides (a reader would look for
+    !! a card that is there).
+    subroutine test_no_follow_on(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        type(deck_t) :: deck
+        character(len=80), allocatable :: lines(:)
+        lines = beam_deck([character(len=4) ::])
+        lines(4) = 'STRUCTURE'//achar(9)//'3.0E7'//achar(9)//'0.2'
+        lines(1) = ' MODEL    BEAM'
+        call parse_deck('tabs.dat', lines, deck, refusal)
+        call check(err, refused(refusal, 'TAB character in column 10') .and. &
+                   refused(refusal, 'starts in column 2') .and. .not. &
+                   refused(refusal, 'missing') .and. .not. refused(refusal, 'control character') &
+                   .and. refused(refusal, '2 input errors'), 'follow-on errors or a TAB '// &
+                   'reported twice')
+    end subroutine test_no_follow_on
 
     subroutine clean_dir()
         call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)

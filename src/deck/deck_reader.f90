@@ -169,8 +169,8 @@ contains
         end if
         if (binary(raw)) then
             ! one message, not one per line echoing a kilobyte of unprintable bytes
-            call new_error(err, EXIT_INPUT, path//': not a text file (a NUL byte, or mostly '// &
-                           'bytes that are not printable text): a deck is a text file of cards')
+            call new_error(err, EXIT_INPUT, path//': not a text file (mostly bytes that are '// &
+                           'not printable text): a deck is a text file of cards')
             return
         end if
         width = card_width
@@ -184,26 +184,24 @@ contains
         call parse_deck(path, lines, deck, err)
     end subroutine read_deck
 
-    !> Binary data rather than text: a NUL byte anywhere, or more than a quarter of the first
-    !! 4096 bytes neither printable ASCII nor a blank, tab, carriage return or form feed (a
-    !! text deck with a few stray control or non-ASCII characters gets its per-line messages).
+    !> Binary data rather than text: more than a third of the first 4096 bytes neither
+    !! printable ASCII nor a blank, tab, carriage return or form feed (a text deck with a few
+    !! stray control or non-ASCII characters, a NUL say, gets its per-line messages, which
+    !! say where).
     pure logical function binary(raw)
         type(text_line_t), intent(in) :: raw(:)
         integer :: i, k, c, seen, odd
-        binary = .false.
         seen = 0
         odd = 0
-        do i = 1, size(raw)
+        lines: do i = 1, size(raw)
             do k = 1, len(raw(i)%text)
+                if (seen >= 4096) exit lines
                 c = iachar(raw(i)%text(k:k))
-                if (c == 0) binary = .true.
-                if (binary) return
-                if (seen >= 4096) cycle
                 seen = seen + 1
                 if ((c < 32 .and. c /= 9 .and. c /= 13 .and. c /= 12) .or. c > 126) odd = odd + 1
             end do
-        end do
-        binary = seen > 0 .and. 4*odd > seen
+        end do lines
+        binary = seen > 0 .and. 3*odd > seen
     end function binary
 
     !> Parse a deck given as lines of text (line i of the deck is text_lines(i)).
@@ -371,7 +369,10 @@ contains
                 call check_comment(st, i, text_lines(i))
                 cycle lines
             end if
-            if (.not. line_is_clean(st, i, text_lines(i))) cycle lines
+            if (.not. line_is_clean(st, i, text_lines(i))) then
+                call note_unreadable(st, i, text_lines(i))
+                cycle lines
+            end if
             if (st%end_line > 0) then
                 call add_diagnostic(st%diag, i, 1, len_trim(text_lines(i)), 'card after END '// &
                     '(line '//int_text(st%end_line)//'): one problem per deck, END is the '// &
@@ -428,7 +429,7 @@ contains
         tab = index(text(1:n), achar(9))
         ctrl = 0
         chars: do c = 1, n
-            if (c == tab) cycle chars
+            if (iachar(text(c:c)) == 9) cycle chars      ! every TAB: reported once, as a TAB
             if (iachar(text(c:c)) < 32 .or. iachar(text(c:c)) == 127) then
                 ctrl = c
                 exit chars
@@ -505,12 +506,31 @@ contains
         end if
     end subroutine classify_card
 
+    !> A line rejected for its characters or its layout may still name a card (STRUCTURE
+    !! followed by a TAB, MODEL in column 2): that card is not reported missing as well, which
+    !! would send the reader looking for a card that is there.
+    subroutine note_unreadable(st, i, text)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: text
+        character(len=name_width) :: head
+        integer :: id, cut
+        head = text(1:min(len(text), name_width))
+        head = adjustl(head)
+        cut = scan(head, achar(9)//' ')
+        if (cut > 0) head(cut:) = ' '
+        id = card_id(to_upper(head))
+        if (id == 0) return
+        if (st%unreadable_line(id) == 0) st%unreadable_line(id) = i
+    end subroutine note_unreadable
+
     !> Columns 1-10 start with a blank: the name is missing or not left-justified.
     subroutine name_not_left_justified(st, i, card)
         type(state_t), intent(inout) :: st
         integer, intent(in) :: i
         character(len=*), intent(in) :: card
         integer :: p
+        call note_unreadable(st, i, card)
         if (len_trim(card(1:name_width)) == 0) then
             call add_diagnostic(st%diag, i, 1, name_width, 'card name missing: columns 1-10 '// &
                 'are blank but the card has fields', echo_text(card))
