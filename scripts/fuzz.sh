@@ -40,6 +40,7 @@ done
 
 build=fuzz/build
 srcs="src/kinds.f90 src/errors.f90 src/model.f90 src/fe/mesh.f90 src/fe/shape_functions.f90
+      src/fe/mesh_refinement.f90 src/fe/discretization.f90
       src/deck/deck_fields.f90 src/deck/deck_reader.f90 src/deck/plausibility.f90
       fuzz/fuzz_deck.f90"
 fflags="-O1 -g -fcheck=all -fbacktrace"
