@@ -105,6 +105,23 @@ contains
         call complete_model(m)
     end function nondim_beam
 
+    !> NONDIM plate (a = 1, F = 1), loads given.
+    function nondim_plate(rho, zeta, f, nu_f, loads, ne) result(m)
+        real(dp), intent(in) :: rho, zeta, f, nu_f
+        type(load_t), intent(in) :: loads(:)
+        integer, intent(in) :: ne
+        type(model_t) :: m
+        m%kind = MODEL_PLATE
+        m%nondim = .true.
+        m%rho_in = rho
+        m%zeta_in = zeta
+        m%nu_f = nu_f
+        m%f = f
+        m%ne = ne
+        m%loads = loads
+        call complete_model(m)
+    end function nondim_plate
+
     !> int_x0^x of the finite-element sigma (component k: 1 sigma_x, 2 sigma_z) times w(s) =
     !! 1 (beam) or 2 pi s (plate), by a 7-point Gauss rule per element (the module uses 4).
     real(dp) function traction_integral(c, k, x) result(total)
@@ -522,16 +539,8 @@ contains
         cb = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
         do k = 1, 2
             do ne = 16, 32, 16
-                c%m = model_t()
-                c%m%kind = MODEL_PLATE
-                c%m%nondim = .true.
-                c%m%rho_in = 1.0e3_dp
-                c%m%zeta_in = 0.1_dp
-                c%m%nu_f = 0.1_dp
-                c%m%f = merge(0.0_dp, 1.0e3_dp, k == 1)
-                c%m%ne = ne
-                c%m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.125_dp)]
-                call complete_model(c%m)
+                c%m = nondim_plate(1.0e3_dp, 0.1_dp, merge(0.0_dp, 1.0e3_dp, k == 1), 0.1_dp, &
+                                   [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.125_dp)], ne)
                 call solve_model(c, err)
                 if (allocated(err)) return
                 call estimated_entries(c, 'settlement_max', e, i)
@@ -610,15 +619,8 @@ contains
         if (allocated(err)) return
         call check(err, any(c%tab%val(Q_X, :) == 0.0_dp), 'beam: no station at x = 0 exactly')
         if (allocated(err)) return
-        c%m = model_t()
-        c%m%kind = MODEL_PLATE
-        c%m%nondim = .true.
-        c%m%rho_in = 1.0_dp
-        c%m%zeta_in = 0.6_dp
-        c%m%f = 0.0_dp
-        c%m%ne = 20
-        c%m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)]
-        call complete_model(c%m)
+        c%m = nondim_plate(1.0_dp, 0.6_dp, 0.0_dp, 0.3_dp, &
+                           [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)], 20)
         call solve_model(c, err)
         if (allocated(err)) return
         s = summarise(c%m, c%sol, c%tab)
