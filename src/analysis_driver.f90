@@ -18,7 +18,7 @@ module analysis_driver
     use error_estimate, only: estimate_errors
     use adaptive_solve, only: adaptation_t, solve_adaptive
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
-                            case_number, remove_stale_outputs
+                            case_number, remove_stale_outputs, remove_output
     use blas_threads, only: set_blas_threads, blas_thread_count
     use flexibility_cache, only: enable_flexibility_cache
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
@@ -111,6 +111,7 @@ contains
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//deck%path//': '//err%message
             status = err%code
+            call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
             return
         end if
         ! a single case that takes a while: its size first, then each Newton step
@@ -481,9 +482,15 @@ contains
             call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
                               result%entries, s, result%message, &
                               report_notes(result%warnings, ''), err_report, result%adaptation)
-            call write_summary_json(base//'.json', result%name, deck%path, m, result%status, &
-                                    result%message, result%entries, s, sol, tab, err_report, &
-                                    result%adaptation, result%warnings)
+            if (.not. allocated(err_report)) call write_summary_json(base//'.json', result%name, &
+                deck%path, m, result%status, result%message, result%entries, s, sol, tab, &
+                err_report, result%adaptation, result%warnings)
+            if (allocated(err_report)) then
+                ! the failure's own report cannot be written: that is what the user must hear
+                call remove_case_files(base)
+                result%status = err_report%code
+                result%message = trim(result%message)//'; and its report: '//err_report%message
+            end if
             return
         end if
         call write_data_file(base//'.dat', m, tab, err)
@@ -569,16 +576,14 @@ contains
         call remove_files(base, ext)
     end subroutine remove_temporaries
 
+    !> base.ext for each ext, where it looks like fricon's output (never a deck given such a
+    !! name: output_paths::remove_output).
     subroutine remove_files(base, ext)
         character(len=*), intent(in) :: base
         character(len=*), intent(in) :: ext(:)
-        integer :: k, u, ios
-        logical :: there
+        integer :: k
         do k = 1, size(ext)
-            inquire (file=base//trim(ext(k)), exist=there)
-            if (.not. there) cycle
-            open (newunit=u, file=base//trim(ext(k)), status='old', iostat=ios)
-            if (ios == 0) close (u, status='delete', iostat=ios)
+            call remove_output(base//trim(ext(k)))
         end do
     end subroutine remove_files
 
@@ -642,10 +647,12 @@ contains
             return
         end if
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
-            ".gp' && mv -f '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
+            ".gp' && mv -fT '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
             cmdstat=cmd_status)
         if (cmd_status /= 0 .or. exit_status /= 0) then
-            note = 'figure '//base//'.png not drawn: gnuplot failed on '//base//'.gp'
+            ! (mv -T: a folder named like the figure is not a place to move it into)
+            note = 'figure '//base//'.png not drawn: gnuplot failed on '//base//'.gp, or '// &
+                   base//'.png cannot be replaced'
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
     end subroutine render_png

@@ -127,7 +127,8 @@ contains
     subroutine test_failed_write(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
-        integer :: status, k
+        integer :: status, k, u
+        character(len=80) :: line
         character(len=*), parameter :: ext(6) = ['.txt ', '.dat ', '.json', '.gp  ', '.png ', &
                                                  '.tmp ']
         call clean_dir()
@@ -143,6 +144,19 @@ contains
                        exists(dir//'/w.csv.tmp'), 'a file was left: w'//trim(ext(k)))
             if (allocated(err)) return
         end do
+        ! a deck (or any file not fricon's) named like an output is neither replaced nor
+        ! deleted: the case ends with status 1, the file is as it was
+        call clean_dir()
+        open (newunit=u, file=dir//'/w.dat', status='replace', action='write')
+        write (u, '(a)') '* a deck named like the data file'
+        close (u)
+        call run_analysis(deck, dir, output_unit, error_unit, status, run_options_t(figures=.false.))
+        line = ''
+        open (newunit=u, file=dir//'/w.dat', status='old', action='read')
+        read (u, '(a)') line
+        close (u)
+        call check(err, status == EXIT_INPUT .and. line == '* a deck named like the data file', &
+                   'a file that is not fricon''s output was replaced or deleted')
     end subroutine test_failed_write
 
     !> What an earlier run of the same deck wrote and this one does not is removed: a sweep of
@@ -154,26 +168,31 @@ contains
         type(deck_t) :: deck
         integer :: status, u
         type(run_options_t) :: opt
+        character(len=*), parameter :: deck_path = 'build/test_stale/st.dat'
         opt%figures = .false.
         opt%estimates = .false.
         call clean_dir()
+        ! the deck exists as a file: its canonical path is what the JSON records and matches
+        call execute_command_line('rm -rf build/test_stale && mkdir -p build/test_stale && '// &
+                                  'touch '//deck_path)
         open (newunit=u, file=dir//'/st_004.json', status='replace', action='write')
         write (u, '(a)') '{'
         write (u, '(a)') '  "deck": "other.dat",'
+        write (u, '(a)') '  "deck_file": "/elsewhere/other.dat",'
         close (u)
-        call parse_deck('st.dat', beam_deck(['F  ', '0.3', '0.4', '0.5']), deck, err)
+        call parse_deck(deck_path, beam_deck(['F  ', '0.3', '0.4', '0.5']), deck, err)
         if (allocated(err)) return
         call run_analysis(deck, dir, output_unit, error_unit, status, opt)
         call check(err, status == EXIT_OK .and. exists(dir//'/st_003.txt'), 'sweep of three')
         if (allocated(err)) return
-        call parse_deck('st.dat', beam_deck(['F  ', '0.3', '0.4']), deck, err)
+        call parse_deck(deck_path, beam_deck(['F  ', '0.3', '0.4']), deck, err)
         if (allocated(err)) return
         call run_analysis(deck, dir, output_unit, error_unit, status, opt)
         call check(err, status == EXIT_OK .and. exists(dir//'/st_002.txt') .and. .not. &
                    exists(dir//'/st_003.txt') .and. .not. exists(dir//'/st_003.json') .and. &
                    exists(dir//'/st_summary.csv'), 'sweep of two: case 3 of three left')
         if (allocated(err)) return
-        call parse_deck('st.dat', beam_deck([character(len=4) ::]), deck, err)
+        call parse_deck(deck_path, beam_deck([character(len=4) ::]), deck, err)
         if (allocated(err)) return
         call run_analysis(deck, dir, output_unit, error_unit, status, opt)
         call check(err, status == EXIT_OK .and. exists(dir//'/st.txt') .and. .not. &
@@ -181,7 +200,7 @@ contains
                    exists(dir//'/st_summary.csv') .and. .not. exists(dir//'/st_sweep.gp'), &
                    'one case: the sweep''s files left')
         if (allocated(err)) return
-        deck%path = 'st.dat'
+        deck%path = deck_path
         call run_analysis_of_bad_deck(deck, status)
         call check(err, status == EXIT_INPUT .and. .not. exists(dir//'/st.txt') .and. .not. &
                    exists(dir//'/st.json') .and. exists(dir//'/st_004.json'), &

@@ -169,8 +169,9 @@ contains
         end if
         if (binary(raw)) then
             ! one message, not one per line echoing a kilobyte of unprintable bytes
-            call new_error(err, EXIT_INPUT, path//': not a text file (mostly bytes that are '// &
-                           'not printable text): a deck is a text file of cards')
+            call new_error(err, EXIT_INPUT, path//': not a text file (many control bytes; a '// &
+                           'UTF-16 file is not read either): a deck is a text file of cards, '// &
+                           'ASCII or UTF-8')
             return
         end if
         width = card_width
@@ -184,10 +185,11 @@ contains
         call parse_deck(path, lines, deck, err)
     end subroutine read_deck
 
-    !> Binary data rather than text: more than a third of the first 4096 bytes neither
-    !! printable ASCII nor a blank, tab, carriage return or form feed (a text deck with a few
-    !! stray control or non-ASCII characters, a NUL say, gets its per-line messages, which
-    !! say where).
+    !> Binary data rather than text: more than a fifth of the first 4096 bytes control
+    !! characters other than tab, carriage return and form feed (UTF-8 text, whose bytes above
+    !! 127 are letters, is text: a Cyrillic comment is no reason to refuse a deck; a text deck
+    !! with a stray control character, a NUL say, gets its per-line message, which says
+    !! where; UTF-16 has a NUL in every other byte).
     pure logical function binary(raw)
         type(text_line_t), intent(in) :: raw(:)
         integer :: i, k, c, seen, odd
@@ -198,10 +200,10 @@ contains
                 if (seen >= 4096) exit lines
                 c = iachar(raw(i)%text(k:k))
                 seen = seen + 1
-                if ((c < 32 .and. c /= 9 .and. c /= 13 .and. c /= 12) .or. c > 126) odd = odd + 1
+                if ((c < 32 .and. c /= 9 .and. c /= 13 .and. c /= 12) .or. c == 127) odd = odd + 1
             end do
         end do lines
-        binary = seen > 0 .and. 3*odd > seen
+        binary = seen > 0 .and. 5*odd > seen
     end function binary
 
     !> Parse a deck given as lines of text (line i of the deck is text_lines(i)).
@@ -607,10 +609,13 @@ contains
                     int_text(st%first_line(C_NONDIM))//'): a deck gives either the '// &
                     'nondimensional groups or physical GEOMETRY, STRUCTURE and SOIL')
             end do
-        else if (all(st%first_line(physical(1:3)) == 0)) then
+        else if (all(st%first_line(physical(1:3)) == 0) .and. &
+                 all(st%unreadable_line(physical(1:3)) == 0) .and. &
+                 st%unreadable_line(C_NONDIM) == 0) then
+            ! (a NONDIM, GEOMETRY, ... line with an error of its own is there: not missing)
             call deck_error(st, 'missing problem data: give NONDIM (nondimensional groups) '// &
                             'or GEOMETRY, STRUCTURE and SOIL (physical data)')
-        else
+        else if (st%unreadable_line(C_NONDIM) == 0) then
             do k = 1, 3
                 if (missing(st, physical(k))) call deck_error(st, 'missing '// &
                     trim(card_names(physical(k)))//' card (a physical deck needs GEOMETRY, '// &

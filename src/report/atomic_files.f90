@@ -3,6 +3,7 @@
 module atomic_files
     use iso_c_binding, only: c_int, c_char, c_null_char
     use errors, only: error_t, new_error, EXIT_INPUT
+    use output_paths, only: looks_like_output
     implicit none
     private
     public :: open_temporary, commit_file, discard_file
@@ -51,6 +52,14 @@ contains
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': '//trim(msg))
             return
         end if
+        if (existing_foreign(path)) then
+            ! a deck, or any file of the user's, given an output's name: never replaced
+            ios = c_remove(path//'.tmp'//c_null_char)
+            call new_error(err, EXIT_INPUT, 'not written: '//path//' exists and is not a '// &
+                           'fricon output (a deck?); fricon does not overwrite it: rename it '// &
+                           'or write elsewhere (-o DIR)')
+            return
+        end if
         if (c_rename(path//'.tmp'//c_null_char, path//c_null_char) /= 0) then
             ios = c_remove(path//'.tmp'//c_null_char)
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': it cannot replace what '// &
@@ -58,6 +67,22 @@ contains
                            'permission)')
         end if
     end subroutine commit_file
+
+    !> A regular file is at path and does not look like fricon's output (a folder is left to
+    !! rename's own error).
+    logical function existing_foreign(path)
+        character(len=*), intent(in) :: path
+        logical :: there
+        integer :: u, ios
+        existing_foreign = .false.
+        inquire (file=path, exist=there)
+        if (.not. there) return
+        open (newunit=u, file=path, status='old', action='read', access='stream', &
+              form='unformatted', iostat=ios)
+        if (ios /= 0) return                      ! a folder, or unreadable
+        close (u)
+        existing_foreign = .not. looks_like_output(path)
+    end function existing_foreign
 
     !> Close and delete a temporary file (after a failure).
     subroutine discard_file(unit)

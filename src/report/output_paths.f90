@@ -32,7 +32,7 @@ module output_paths
 
     public :: prepare_output_dir, check_deck_not_overwritten, stderr_is_terminal
     public :: case_name, case_number, writes_file, output_files, base_name, check_decks_apart
-    public :: remove_stale_outputs
+    public :: remove_stale_outputs, remove_output, canonical_path, looks_like_output
 
 contains
 
@@ -107,7 +107,8 @@ contains
                     end if
                 end if
                 ! the same file written by both
-                if (j < i .or. counts(j) < 1 .or. trim(dirs(i)) /= trim(dirs(j))) cycle
+                if (j < i .or. counts(j) < 1) cycle
+                if (.not. same_folder(trim(dirs(i)), trim(dirs(j)))) cycle
                 files = output_files(trim(stems(j)), counts(j))
                 do k = 1, size(files)
                     if (.not. writes_file(trim(stems(i)), counts(i), trim(files(k)))) cycle
@@ -122,75 +123,138 @@ contains
 
     !> Remove what an earlier run of the same deck left in dir that this run does not write
     !! (n cases; n = 0 for a deck with input errors, which writes nothing): the files of a
-    !! case STEM.* or STEM_NNN.* (any width of NNN, numbered on from 1) whose JSON summary
-    !! names this deck (`"deck": "PATH"`, so that nothing another deck wrote is touched), and
-    !! a sweep's STEM_summary.csv and STEM_sweep.* when such a case of a sweep was removed and
-    !! this run is no sweep. Never the deck itself.
+    !! case STEM.* or STEM_NNN.* (any width of NNN; numbers scanned on until 1000 in a row are
+    !! absent, so a shard's or a failed write's gaps do not stop it) whose JSON summary
+    !! records this deck's canonical path (`"deck_file"`: nothing another deck wrote is
+    !! touched, whatever folder it was run from), and a sweep's STEM_summary*.csv and
+    !! STEM_sweep.* when such a case of a sweep was removed and this run is no sweep. Only
+    !! files that look like fricon's outputs are deleted (remove_output): never a deck.
     subroutine remove_stale_outputs(dir, stem, n, deck_path)
         character(len=*), intent(in) :: dir, stem, deck_path
         integer, intent(in) :: n
-        character(len=*), parameter :: sweep_files(3) = [character(len=12) :: '_summary.csv', &
-                                                         '_sweep.gp', '_sweep.png']
         character(len=:), allocatable :: deck_real, group
         logical :: swept
-        integer :: width, i, k
+        integer :: width, i, misses, k, j
         deck_real = real_path(deck_path)
-        if (n /= 1) call remove_group(dir//'/'//stem, deck_path, deck_real)
+        if (len(deck_real) == 0) return          ! no deck file: nothing can be proven its own
+        if (n /= 1) call remove_group(dir//'/'//stem, deck_real)
         swept = .false.
         widths: do width = 3, 9
-            numbers: do i = 1, 10**min(width, 8) - 1
+            misses = 0
+            i = 0
+            numbers: do while (misses < 1000 .and. i < 10**min(width, 8) - 1)
+                i = i + 1
                 group = stem//'_'//padded(i, width)
                 if (n > 1) then
-                    if (writes_file(stem, n, group//'.txt')) cycle numbers
+                    if (writes_file(stem, n, group//'.txt')) then
+                        misses = 0
+                        cycle numbers
+                    end if
                 end if
-                if (.not. names_deck(dir//'/'//group//'.json', deck_path, deck_real)) exit numbers
-                call remove_group(dir//'/'//group, deck_path, deck_real)
+                if (.not. names_deck(dir//'/'//group//'.json', deck_real)) then
+                    misses = misses + 1
+                    cycle numbers
+                end if
+                misses = 0
+                call remove_group(dir//'/'//group, deck_real)
                 swept = .true.
             end do numbers
         end do widths
         if (.not. swept .or. n > 1) return
-        do k = 1, size(sweep_files)
-            call remove_one(dir//'/'//stem//trim(sweep_files(k)), deck_real)
+        call remove_output(dir//'/'//stem//'_summary.csv')
+        call remove_output(dir//'/'//stem//'_sweep.gp')
+        call remove_output(dir//'/'//stem//'_sweep.png')
+        do k = 2, 64                              ! the shards' summaries (--shard I/N)
+            do j = 1, k
+                call remove_output(dir//'/'//stem//'_summary.shard-'//int_string(j)//'-of-'// &
+                                   int_string(k)//'.csv')
+            end do
         end do
     end subroutine remove_stale_outputs
 
     !> The files of one case, base.ext for every output extension and their .tmp, if its JSON
-    !! summary names the deck; never the deck itself.
-    subroutine remove_group(base, deck_path, deck_real)
-        character(len=*), intent(in) :: base, deck_path, deck_real
+    !! summary records the deck (deck_real: its canonical path).
+    subroutine remove_group(base, deck_real)
+        character(len=*), intent(in) :: base, deck_real
         integer :: k
-        if (.not. names_deck(base//'.json', deck_path, deck_real)) return
+        if (.not. names_deck(base//'.json', deck_real)) return
         do k = 1, size(output_extensions)
-            call remove_one(base//trim(output_extensions(k))//'.tmp', deck_real)
+            call remove_output(base//trim(output_extensions(k))//'.tmp')
             if (trim(output_extensions(k)) == '.json') cycle
-            call remove_one(base//trim(output_extensions(k)), deck_real)
+            call remove_output(base//trim(output_extensions(k)))
         end do
-        call remove_one(base//'.json', deck_real)   ! last: it is the proof of provenance
+        call remove_output(base//'.json')   ! last: it is the proof of provenance
     end subroutine remove_group
 
-    !> Delete a file unless it is the deck (deck_real: the deck's canonical path).
-    subroutine remove_one(path, deck_real)
-        character(len=*), intent(in) :: path, deck_real
+    !> Delete path if it exists and looks like a file fricon writes, by its first bytes and
+    !! its extension (a .tmp by the extension before it): a report starts with '=', a data
+    !! file or figure script with '#', a JSON summary with '{', a station CSV has a 'key
+    !! [unit]' header and a sweep summary starts with 'case,', a figure is a PNG. A deck
+    !! starts with none of these (a card name, or a comment '*', '$' or 'C '), so no deck
+    !! given an output's name is ever deleted.
+    subroutine remove_output(path)
+        character(len=*), intent(in) :: path
         integer :: u, ios
         logical :: there
         inquire (file=path, exist=there)
         if (.not. there) return
-        if (len(deck_real) > 0) then
-            if (real_path(path) == deck_real) return
-        end if
+        if (.not. looks_like_output(path)) return
         open (newunit=u, file=path, status='old', iostat=ios)
         if (ios == 0) close (u, status='delete', iostat=ios)
-    end subroutine remove_one
+    end subroutine remove_output
 
-    !> Whether the JSON summary at path was written for the deck: its "deck" line holds the
-    !! deck's path as given, or a path that resolves to the deck's canonical path deck_real.
-    logical function names_deck(path, deck_path, deck_real)
-        character(len=*), intent(in) :: path, deck_path, deck_real
-        character(len=4096) :: line
+    !> See remove_output.
+    logical function looks_like_output(path)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: name
+        character(len=200) :: head
+        integer :: u, ios, n
+        looks_like_output = .false.
+        name = path
+        if (len(name) > 4) then
+            if (name(len(name) - 3:) == '.tmp') name = name(1:len(name) - 4)
+        end if
+        head = ''
+        open (newunit=u, file=path, status='old', action='read', access='stream', &
+              form='unformatted', iostat=ios)
+        if (ios /= 0) return
+        read (u, iostat=ios) head
+        close (u)
+        n = index(head, achar(10)) - 1
+        if (n < 0) n = len_trim(head)
+        if (len_trim(head) == 0) then
+            looks_like_output = .true.            ! an empty file (a cut-off write): nobody's deck
+            return
+        end if
+        if (ends_with(name, '.txt')) then
+            looks_like_output = head(1:1) == '='
+        else if (ends_with(name, '.dat') .or. ends_with(name, '.gp')) then
+            looks_like_output = head(1:1) == '#'
+        else if (ends_with(name, '.json')) then
+            looks_like_output = head(1:1) == '{'
+        else if (ends_with(name, '.csv')) then
+            looks_like_output = head(1:5) == 'case,' .or. index(head(1:max(n, 1)), ' [') > 0
+        else if (ends_with(name, '.png')) then
+            looks_like_output = head(1:4) == achar(137)//'PNG'
+        end if
+    end function looks_like_output
+
+    pure logical function ends_with(text, tail)
+        character(len=*), intent(in) :: text, tail
+        ends_with = len(text) >= len(tail)
+        if (ends_with) ends_with = text(len(text) - len(tail) + 1:) == tail
+    end function ends_with
+
+    !> Whether the JSON summary at path was written for the deck: its "deck_file" holds the
+    !! deck's canonical path deck_real (JSON escapes of quotes and backslashes undone).
+    logical function names_deck(path, deck_real)
+        character(len=*), intent(in) :: path, deck_real
+        character(len=8192) :: line
         character(len=:), allocatable :: given
         integer :: u, ios, k
         logical :: there
         names_deck = .false.
+        if (len(deck_real) == 0) return
         inquire (file=path, exist=there)
         if (.not. there) return
         open (newunit=u, file=path, status='old', action='read', iostat=ios)
@@ -198,19 +262,45 @@ contains
         do
             read (u, '(a)', iostat=ios) line
             if (ios /= 0) exit
-            k = index(line, '"deck": "')
+            k = index(line, '"deck_file": "')
             if (k == 0) cycle
-            given = line(k + 9:)
+            given = line(k + 14:)
             k = index(given, '"', back=.true.)
-            if (k >= 1) then
-                given = given(1:k - 1)
-                names_deck = given == deck_path
-                if (.not. names_deck .and. len(deck_real) > 0) names_deck = real_path(given) == deck_real
-            end if
+            if (k >= 1) names_deck = json_unescaped(given(1:k - 1)) == deck_real
             exit
         end do
         close (u)
     end function names_deck
+
+    !> A JSON string's text with \" and \\ (the escapes a path can need) undone.
+    pure function json_unescaped(text) result(plain)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: plain
+        integer :: i
+        plain = ''
+        i = 1
+        do while (i <= len(text))
+            if (text(i:i) == '\' .and. i < len(text)) i = i + 1
+            plain = plain//text(i:i)
+            i = i + 1
+        end do
+    end function json_unescaped
+
+    pure function int_string(i) result(text)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: text
+        character(len=12) :: buf
+        write (buf, '(i0)') i
+        text = trim(buf)
+    end function int_string
+
+    !> The canonical absolute path of an existing file ('' if it cannot be resolved): what a
+    !! JSON summary records as "deck_file".
+    function canonical_path(path) result(resolved)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: resolved
+        resolved = real_path(path)
+    end function canonical_path
 
     !> i with leading zeros in width digits.
     pure function padded(i, width) result(text)
@@ -221,6 +311,41 @@ contains
         write (buf, fmt) i
         text = trim(buf)
     end function padded
+
+    !> Two spellings of one folder: the same canonical path where both exist, else the same
+    !! text once './' steps, doubled and trailing slashes are dropped.
+    logical function same_folder(a, b)
+        character(len=*), intent(in) :: a, b
+        character(len=:), allocatable :: ra, rb
+        ra = real_path(a)
+        rb = real_path(b)
+        if (len(ra) > 0 .and. len(rb) > 0) then
+            same_folder = ra == rb
+        else
+            same_folder = tidy_folder(a) == tidy_folder(b)
+        end if
+    end function same_folder
+
+    pure function tidy_folder(dir) result(t)
+        character(len=*), intent(in) :: dir
+        character(len=:), allocatable :: t
+        integer :: k
+        t = trim(dir)//'/'
+        do
+            k = index(t, '/./')
+            if (k == 0) exit
+            t = t(1:k)//t(k + 3:)
+        end do
+        do
+            k = index(t, '//')
+            if (k == 0) exit
+            t = t(1:k)//t(k + 2:)
+        end do
+        if (len(t) > 2) then
+            if (t(1:2) == './') t = t(3:)
+        end if
+        if (len(t) > 1) t = t(1:len(t) - 1)
+    end function tidy_folder
 
     !> Whether `file` (a name without its folder) is one of the outputs of a deck of file
     !! stem `stem` with n cases: STEM.ext for one case; for a sweep STEM_NNN.ext (NNN a case
@@ -239,6 +364,9 @@ contains
         if (n > 1) then
             writes_file = name == stem//'_summary.csv' .or. name == stem//'_sweep.gp' .or. &
                           name == stem//'_sweep.png'
+            ! a shard's summary, STEM_summary.shard-I-of-N.csv (--shard I/N)
+            if (len(name) > len(stem) + 19) writes_file = writes_file .or. &
+                (name(1:len(stem) + 15) == stem//'_summary.shard-' .and. ends_with(name, '.csv'))
             if (writes_file) return
         end if
         do k = 1, size(output_extensions)

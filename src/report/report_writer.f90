@@ -4,6 +4,7 @@ module report_writer
     use kinds, only: dp, pi
     use errors, only: error_t
     use atomic_files, only: open_temporary, commit_file
+    use output_paths, only: canonical_path
     use model, only: model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, flexural_rigidity, &
                      relative_stiffness, soil_shear_modulus, friction_compliance, &
                      total_vertical_load, has_concentrated_load
@@ -135,6 +136,9 @@ contains
         write (u, '(a)') '{'
         write (u, '(a)') '  "case": '//json_string(name)//','
         write (u, '(a)') '  "deck": '//json_string(deck_path)//','
+        ! the deck's canonical path: how a later run of the same deck, from any folder, knows
+        ! these files for its own (output_paths::remove_stale_outputs)
+        write (u, '(a)') '  "deck_file": '//json_string(canonical_path(deck_path))//','
         write (u, '(a)') '  "title": '//json_string(trim(m%title))//','
         write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM)))//','
         write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
