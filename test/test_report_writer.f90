@@ -9,6 +9,7 @@ module test_report_writer
     use deck_reader, only: deck_t, parse_deck, case_model
     use model, only: model_t
     use output_paths, only: writes_file, check_decks_apart
+    use atomic_files, only: open_temporary, commit_file
     use analysis_driver, only: run_analysis, run_options_t
     use figure_templates, only: panel_template, sweep_template
     use blas_threads, only: set_blas_threads, blas_thread_count
@@ -35,7 +36,8 @@ contains
                  new_unittest('failed_write_leaves_no_file', test_failed_write), &
                  new_unittest('stale_outputs_of_the_deck_removed', test_stale_outputs), &
                  new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh), &
-                 new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on)]
+                 new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on), &
+                 new_unittest('incomplete_file_not_committed', test_incomplete_file)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -265,6 +267,30 @@ contains
                    .and. refused(refusal, '2 input errors'), 'follow-on errors or a TAB '// &
                    'reported twice')
     end subroutine test_no_follow_on
+
+    !> A file whose last line is cut (what a full disk leaves: gfortran's buffered writes and
+    !! close report nothing there; seen on a 40 kB tmpfs, where every case printed "solved"
+    !! over empty files) is not committed: an error, and neither the file nor its .tmp. A
+    !! complete one is.
+    subroutine test_incomplete_file(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        integer :: u
+        call clean_dir()
+        ! (a stream, as the disk leaves it: a formatted file's close would end the line)
+        open (newunit=u, file=dir//'/cut.txt.tmp', status='replace', access='stream', &
+              form='unformatted', action='write')
+        write (u) '= a report cut in its first line'
+        call commit_file(dir//'/cut.txt', u, refusal)
+        call check(err, refused(refusal, 'incomplete') .and. .not. exists(dir//'/cut.txt') &
+                   .and. .not. exists(dir//'/cut.txt.tmp'), 'an incomplete file was committed')
+        if (allocated(err)) return
+        call open_temporary(dir//'/whole.txt', u, refusal)
+        write (u, '(a)') '= a whole report'
+        call commit_file(dir//'/whole.txt', u, refusal)
+        call check(err, .not. allocated(refusal) .and. exists(dir//'/whole.txt'), &
+                   'a complete file was not committed')
+    end subroutine test_incomplete_file
 
     subroutine clean_dir()
         call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)

@@ -52,6 +52,14 @@ contains
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': '//trim(msg))
             return
         end if
+        if (.not. complete(path//'.tmp')) then
+            ! a full disk: gfortran's buffered writes and close report nothing, and the file
+            ! is cut at a block boundary or empty
+            ios = c_remove(path//'.tmp'//c_null_char)
+            call new_error(err, EXIT_INPUT, 'cannot write '//path//': the file came out '// &
+                           'incomplete (is the disk full?)')
+            return
+        end if
         if (existing_foreign(path)) then
             ! a deck, or any file of the user's, given an output's name: never replaced
             ios = c_remove(path//'.tmp'//c_null_char)
@@ -67,6 +75,24 @@ contains
                            'permission)')
         end if
     end subroutine commit_file
+
+    !> A text file written completely: not empty, and its last byte the end of a line (every
+    !! file fricon writes through here ends its last line).
+    logical function complete(path)
+        character(len=*), intent(in) :: path
+        integer :: u, ios, size_bytes
+        character(len=1) :: last
+        complete = .false.
+        open (newunit=u, file=path, status='old', action='read', access='stream', &
+              form='unformatted', iostat=ios)
+        if (ios /= 0) return
+        inquire (unit=u, size=size_bytes)
+        if (size_bytes > 0) then
+            read (u, pos=size_bytes, iostat=ios) last
+            complete = ios == 0 .and. last == achar(10)
+        end if
+        close (u)
+    end function complete
 
     !> A regular file is at path and does not look like fricon's output (a folder is left to
     !! rename's own error).
