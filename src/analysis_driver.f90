@@ -18,7 +18,8 @@ module analysis_driver
     use error_estimate, only: estimate_errors
     use adaptive_solve, only: adaptation_t, solve_adaptive
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
-                            case_number, remove_stale_outputs, remove_output
+                            case_number, remove_stale_outputs, remove_output, canonical_path, &
+                            remove_shard_summaries
     use blas_threads, only: set_blas_threads, blas_thread_count
     use flexibility_cache, only: enable_flexibility_cache
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
@@ -92,7 +93,7 @@ contains
         end do validate
         if (status /= EXIT_OK) then
             ! exit 1 writes no output, and leaves none of an earlier run of this deck
-            call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
+            if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
             return
         end if
         if (present(options)) opt = options
@@ -111,7 +112,7 @@ contains
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//deck%path//': '//err%message
             status = err%code
-            call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
+            if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
             return
         end if
         ! a single case that takes a while: its size first, then each Newton step
@@ -156,7 +157,7 @@ contains
         end if
         ! what an earlier run of this deck wrote and this one did not (a longer sweep, a sweep
         ! where there is now one case, or one case where there is now a sweep)
-        call remove_stale_outputs(out_dir, deck%stem, n, deck%path)
+        if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, n, deck%path)
     end subroutine run_analysis
 
     !> Refuse (exit status 1) a case that alone needs more memory than the machine has; solve
@@ -241,12 +242,21 @@ contains
         character(len=40) :: shard
         if (opt%shard_count > 1) then
             write (shard, '(a,i0,a,i0)') '.shard-', opt%shard_index, '-of-', opt%shard_count
+            ! the summaries of an earlier split into another number of shards are stale
+            call remove_shard_summaries(out_dir, stem, opt%shard_count)
             call write_summary_csv(out_dir//'/'//stem//'_summary'//trim(shard)//'.csv', cases(1), &
                                    pack(results, selected), err)
         else
+            call remove_shard_summaries(out_dir, stem, 0)
             call write_summary_csv(out_dir//'/'//stem//'_summary.csv', cases(1), results, err)
             if (.not. allocated(err)) call write_sweep_plot(out_dir, stem, cases, results, &
                                                             opt%figures, err)
+            if (allocated(err)) then
+                ! no summary or overlay of an earlier run beside this run's cases
+                call remove_output(out_dir//'/'//stem//'_summary.csv')
+                call remove_output(out_dir//'/'//stem//'_sweep.gp')
+                call remove_output(out_dir//'/'//stem//'_sweep.png')
+            end if
         end if
     end subroutine write_sweep_outputs
 
@@ -484,7 +494,7 @@ contains
                               report_notes(result%warnings, ''), err_report, result%adaptation)
             if (.not. allocated(err_report)) call write_summary_json(base//'.json', result%name, &
                 deck%path, m, result%status, result%message, result%entries, s, sol, tab, &
-                err_report, result%adaptation, result%warnings)
+                err_report, result%adaptation, result%warnings, deck_file_of(deck))
             if (allocated(err_report)) then
                 ! the failure's own report cannot be written: that is what the user must hear
                 call remove_case_files(base)
@@ -499,7 +509,10 @@ contains
         if (.not. allocated(err)) call write_summary_json(base//'.json', result%name, deck%path, &
                                                           m, EXIT_OK, '', result%entries, s, &
                                                           sol, tab, err, result%adaptation, &
-                                                          result%warnings)
+                                                          result%warnings, deck_file_of(deck))
+        ! no figure or CSV of an earlier run beside results that have none
+        if (.not. allocated(err) .and. .not. figures) call remove_output(base//'.png')
+        if (.not. allocated(err) .and. m%nondim) call remove_output(base//'.csv')
         if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
                                                          result%label, s, err)
         if (allocated(err)) then
@@ -558,6 +571,15 @@ contains
         character(len=*), parameter :: ext(5) = ['.dat', '.csv', '.gp ', '.png', '.txt']
         call remove_files(base, ext)
     end subroutine remove_stale
+
+    !> The deck's canonical path for the JSON summaries ('' for the built-in default, which is
+    !! no file: outputs of a deck that happens to lie at input/default.dat are not its own).
+    function deck_file_of(deck) result(path)
+        type(deck_t), intent(in) :: deck
+        character(len=:), allocatable :: path
+        path = ''
+        if (deck%from_file) path = canonical_path(deck%path)
+    end function deck_file_of
 
     !> Every file of a case (a write that failed leaves none of the others).
     subroutine remove_case_files(base)
@@ -637,6 +659,7 @@ contains
         note = ''
         if (index(base, "'") > 0 .or. index(base, '"') > 0) then
             note = 'figure not rendered: the output path contains a quote'
+            call remove_output(base//'.png')
             return
         end if
         call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exit_status, &
@@ -644,15 +667,18 @@ contains
         if (cmd_status /= 0 .or. exit_status /= 0) then
             note = 'figure '//base//'.png not drawn: gnuplot is not installed (the script '// &
                    base//'.gp is written; scripts/setup.sh installs gnuplot)'
+            call remove_output(base//'.png')      ! not an earlier run's figure beside it
             return
         end if
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
-            ".gp' && mv -fT '"//base//".png.tmp' '"//base//".png'", exitstat=exit_status, &
-            cmdstat=cmd_status)
+            ".gp' && tail -c 12 '"//base//".png.tmp' | grep -qa IEND && mv -fT '"//base// &
+            ".png.tmp' '"//base//".png'", exitstat=exit_status, cmdstat=cmd_status)
         if (cmd_status /= 0 .or. exit_status /= 0) then
-            ! (mv -T: a folder named like the figure is not a place to move it into)
-            note = 'figure '//base//'.png not drawn: gnuplot failed on '//base//'.gp, or '// &
-                   base//'.png cannot be replaced'
+            ! (a PNG ends with its IEND chunk: gnuplot exits 0 on a full disk with the file
+            ! cut; mv -T: a folder named like the figure is not a place to move it into)
+            note = 'figure '//base//'.png not drawn: gnuplot failed on '//base//'.gp, the '// &
+                   'figure came out incomplete (disk full?), or '//base//'.png cannot be replaced'
+            call remove_output(base//'.png')
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
     end subroutine render_png
@@ -679,7 +705,12 @@ contains
             labels = [character(len=200) :: labels, one_word(results(i)%label)]
             means = [means, results(i)%mean_pressure]
         end do
-        if (first == 0) return
+        if (first == 0 .or. .not. figures) call remove_output(out_dir//'/'//stem//'_sweep.png')
+        if (first == 0) then
+            ! no solved case: an earlier overlay would show curves of files that are gone
+            call remove_output(out_dir//'/'//stem//'_sweep.gp')
+            return
+        end if
         call write_sweep_script(out_dir//'/'//stem//'_sweep.gp', stem, cases(first), names, &
                                 labels, means, err)
         if (allocated(err)) return

@@ -184,11 +184,13 @@ contains
         close (u)
         call parse_deck(deck_path, beam_deck(['F  ', '0.3', '0.4', '0.5']), deck, err)
         if (allocated(err)) return
+        deck%from_file = .true.        ! as read_deck would: the deck is the file deck_path
         call run_analysis(deck, dir, output_unit, error_unit, status, opt)
         call check(err, status == EXIT_OK .and. exists(dir//'/st_003.txt'), 'sweep of three')
         if (allocated(err)) return
         call parse_deck(deck_path, beam_deck(['F  ', '0.3', '0.4']), deck, err)
         if (allocated(err)) return
+        deck%from_file = .true.
         call run_analysis(deck, dir, output_unit, error_unit, status, opt)
         call check(err, status == EXIT_OK .and. exists(dir//'/st_002.txt') .and. .not. &
                    exists(dir//'/st_003.txt') .and. .not. exists(dir//'/st_003.json') .and. &
@@ -196,6 +198,7 @@ contains
         if (allocated(err)) return
         call parse_deck(deck_path, beam_deck([character(len=4) ::]), deck, err)
         if (allocated(err)) return
+        deck%from_file = .true.
         call run_analysis(deck, dir, output_unit, error_unit, status, opt)
         call check(err, status == EXIT_OK .and. exists(dir//'/st.txt') .and. .not. &
                    exists(dir//'/st_001.txt') .and. .not. exists(dir//'/st_002.dat') .and. .not. &
@@ -221,6 +224,7 @@ contains
             return
         end if
         bad%sweeps(1)%values(1) = -10.0_dp       ! a beam of negative length: case 1 invalid
+        bad%from_file = .true.
         call run_analysis(bad, dir, output_unit, error_unit, status)
     end subroutine run_analysis_of_bad_deck
 

@@ -61,6 +61,8 @@ module deck_reader
         character(len=80), allocatable :: lines(:)   !! raw lines, for the input echo (index = line)
         type(model_t) :: base                        !! the problem, after complete_model
         type(sweep_t), allocatable :: sweeps(:)      !! SWEEP cards in deck order
+        logical :: from_file = .false.               !! read from the file `path` (read_deck);
+                                                     !! the built-in default is not
     end type deck_t
 
     ! Card identifiers: index into card_names.
@@ -183,6 +185,7 @@ contains
             lines(i) = raw(i)%text
         end do
         call parse_deck(path, lines, deck, err)
+        deck%from_file = .true.
     end subroutine read_deck
 
     !> Binary data rather than text: more than a fifth of the first 4096 bytes control

@@ -32,6 +32,17 @@ contains
         type(error_t), allocatable, intent(out) :: err
         integer :: ios
         character(len=256) :: msg
+        logical :: there
+        inquire (file=path//'.tmp', exist=there)
+        if (there) then
+            if (.not. looks_like_output(path//'.tmp')) then
+                ! a file of the user's named like a temporary output: not replaced
+                call new_error(err, EXIT_INPUT, 'not written: '//path//'.tmp exists and is '// &
+                               'not a fricon output; fricon does not overwrite it: rename it '// &
+                               'or write elsewhere (-o DIR)')
+                return
+            end if
+        end if
         open (newunit=unit, file=path//'.tmp', status='replace', action='write', &
               iostat=ios, iomsg=msg)
         if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))

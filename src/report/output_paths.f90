@@ -33,6 +33,7 @@ module output_paths
     public :: prepare_output_dir, check_deck_not_overwritten, stderr_is_terminal
     public :: case_name, case_number, writes_file, output_files, base_name, check_decks_apart
     public :: remove_stale_outputs, remove_output, canonical_path, looks_like_output
+    public :: remove_shard_summaries
 
 contains
 
@@ -164,13 +165,23 @@ contains
         call remove_output(dir//'/'//stem//'_summary.csv')
         call remove_output(dir//'/'//stem//'_sweep.gp')
         call remove_output(dir//'/'//stem//'_sweep.png')
-        do k = 2, 64                              ! the shards' summaries (--shard I/N)
+        call remove_shard_summaries(dir, stem, 0)
+    end subroutine remove_stale_outputs
+
+    !> The shards' summaries STEM_summary.shard-I-of-N.csv (--shard I/N) of every N up to 64
+    !! but keep_n (0: all): an earlier split into another number of shards.
+    subroutine remove_shard_summaries(dir, stem, keep_n)
+        character(len=*), intent(in) :: dir, stem
+        integer, intent(in) :: keep_n
+        integer :: k, j
+        do k = 2, 64
+            if (k == keep_n) cycle
             do j = 1, k
                 call remove_output(dir//'/'//stem//'_summary.shard-'//int_string(j)//'-of-'// &
                                    int_string(k)//'.csv')
             end do
         end do
-    end subroutine remove_stale_outputs
+    end subroutine remove_shard_summaries
 
     !> The files of one case, base.ext for every output extension and their .tmp, if its JSON
     !! summary records the deck (deck_real: its canonical path).

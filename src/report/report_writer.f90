@@ -114,7 +114,7 @@ contains
     !> output/CASE.json: status, units, the key results (summary_table), contact intervals
     !! and the checks. A failed case gets its status and message, and no results.
     subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err, &
-                                  adaptation, warnings)
+                                  adaptation, warnings, deck_file)
         character(len=*), intent(in) :: path, name, deck_path, message
         type(model_t), intent(in) :: m
         integer, intent(in) :: status
@@ -125,6 +125,9 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
         character(len=*), intent(in), optional :: warnings(:)    !! as the report prints them
+        character(len=*), intent(in), optional :: deck_file      !! the deck's canonical path
+                                                                 !! ('' for no file; default:
+                                                                 !! deck_path's)
         type(units_t) :: un
         integer :: u, i
         logical :: adapted
@@ -138,7 +141,11 @@ contains
         write (u, '(a)') '  "deck": '//json_string(deck_path)//','
         ! the deck's canonical path: how a later run of the same deck, from any folder, knows
         ! these files for its own (output_paths::remove_stale_outputs)
-        write (u, '(a)') '  "deck_file": '//json_string(canonical_path(deck_path))//','
+        if (present(deck_file)) then
+            write (u, '(a)') '  "deck_file": '//json_string(deck_file)//','
+        else
+            write (u, '(a)') '  "deck_file": '//json_string(canonical_path(deck_path))//','
+        end if
         write (u, '(a)') '  "title": '//json_string(trim(m%title))//','
         write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM)))//','
         write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
