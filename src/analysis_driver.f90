@@ -111,8 +111,9 @@ contains
         call fit_memory(cases, selected, threads, err)
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//deck%path//': '//err%message
+            ! (a machine too small now is no fault of the deck: earlier results, and those of
+            ! the other shards of a job array, stay)
             status = err%code
-            if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
             return
         end if
         ! a single case that takes a while: its size first, then each Newton step
