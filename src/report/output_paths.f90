@@ -4,6 +4,7 @@
 module output_paths
     use iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
     use errors, only: error_t, new_error, EXIT_INPUT
+    use deck_fields, only: int_text
     implicit none
     private
 
@@ -69,8 +70,8 @@ contains
         integer, intent(in) :: n                 !! cases of the deck
         type(error_t), allocatable, intent(out) :: err
         character(len=:), allocatable :: deck_real, dir_real
-        deck_real = real_path(deck_path)
-        dir_real = real_path(dir)
+        deck_real = canonical_path(deck_path)
+        dir_real = canonical_path(dir)
         if (len(deck_real) == 0 .or. len(dir_real) == 0) return
         if (deck_real(1:len(deck_real) - len(base_name(deck_real))) /= dir_real//'/') return
         if (.not. writes_file(stem, n, base_name(deck_real))) return
@@ -92,11 +93,11 @@ contains
         integer :: i, j, k
         do i = 1, size(paths)
             if (counts(i) < 1) cycle
-            dir_real = real_path(trim(dirs(i)))
+            dir_real = canonical_path(trim(dirs(i)))
             do j = 1, size(paths)
                 if (j == i) cycle
                 ! deck j overwritten by an output of deck i
-                deck_real = real_path(trim(paths(j)))
+                deck_real = canonical_path(trim(paths(j)))
                 if (len(deck_real) > 0 .and. len(dir_real) > 0) then
                     if (deck_real == dir_real//'/'//base_name(deck_real) .and. &
                         writes_file(trim(stems(i)), counts(i), base_name(deck_real))) then
@@ -136,7 +137,7 @@ contains
         character(len=:), allocatable :: deck_real, group
         logical :: swept
         integer :: width, i, misses, k, j
-        deck_real = real_path(deck_path)
+        deck_real = canonical_path(deck_path)
         if (len(deck_real) == 0) return          ! no deck file: nothing can be proven its own
         if (n /= 1) call remove_group(dir//'/'//stem, deck_real)
         swept = .false.
@@ -177,8 +178,8 @@ contains
         do k = 2, 64
             if (k == keep_n) cycle
             do j = 1, k
-                call remove_output(dir//'/'//stem//'_summary.shard-'//int_string(j)//'-of-'// &
-                                   int_string(k)//'.csv')
+                call remove_output(dir//'/'//stem//'_summary.shard-'//int_text(j)//'-of-'// &
+                                   int_text(k)//'.csv')
             end do
         end do
     end subroutine remove_shard_summaries
@@ -297,22 +298,6 @@ contains
         end do
     end function json_unescaped
 
-    pure function int_string(i) result(text)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        text = trim(buf)
-    end function int_string
-
-    !> The canonical absolute path of an existing file ('' if it cannot be resolved): what a
-    !! JSON summary records as "deck_file".
-    function canonical_path(path) result(resolved)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: resolved
-        resolved = real_path(path)
-    end function canonical_path
-
     !> i with leading zeros in width digits.
     pure function padded(i, width) result(text)
         integer, intent(in) :: i, width
@@ -328,8 +313,8 @@ contains
     logical function same_folder(a, b)
         character(len=*), intent(in) :: a, b
         character(len=:), allocatable :: ra, rb
-        ra = real_path(a)
-        rb = real_path(b)
+        ra = canonical_path(a)
+        rb = canonical_path(b)
         if (len(ra) > 0 .and. len(rb) > 0) then
             same_folder = ra == rb
         else
@@ -445,8 +430,9 @@ contains
         name = trim(path(index(path, '/', back=.true.) + 1:))
     end function base_name
 
-    !> The canonical absolute path of an existing file or folder; '' if it cannot be resolved.
-    function real_path(path) result(resolved)
+    !> The canonical absolute path of an existing file or folder; '' if it cannot be resolved
+    !! (what a JSON summary records as "deck_file").
+    function canonical_path(path) result(resolved)
         character(len=*), intent(in) :: path
         character(len=:), allocatable :: resolved
         character(kind=c_char) :: buffer(path_max)
@@ -463,7 +449,7 @@ contains
         do n = 1, len(resolved)
             resolved(n:n) = buffer(n)
         end do
-    end function real_path
+    end function canonical_path
 
     !> Standard error (file descriptor 2) is a terminal: progress is shown by default.
     logical function stderr_is_terminal()
