@@ -51,7 +51,7 @@ program bench_linalg
         call get_command_argument(i, arg)
         read (arg, *) ne
         m = m0
-        m%ne = ne
+        m%mesh%ne = ne
         call bench_one(m)
     end do
 
@@ -79,8 +79,8 @@ contains
         logical :: symmetric
         call new_discretization(m, d, err)
         if (allocated(err)) error stop 'discretisation failed'
-        n_rep = max(1, min(20, 4000/(m%ne*m%ne/100 + 1)))
-        if (m%ne >= 320) n_rep = 1
+        n_rep = max(1, min(20, 4000/(m%mesh%ne*m%mesh%ne/100 + 1)))
+        if (m%mesh%ne >= 320) n_rep = 1
         t_t = huge(1.0_dp); t_km = t_t; t_build = t_t; t_solve = t_t; t_fact = t_t
         t_setup = t_t; t_schur = t_t
         repeats: do rep = 1, n_rep
@@ -89,7 +89,7 @@ contains
             t_t = min(t_t, now() - t0)
             t0 = now()
             allocate (k(d%nv, d%nv), mm(d%nr, d%nv))
-            call assemble_stiffness(section_of(m), d, k)
+            call assemble_stiffness(section_of(m%structure), d, k)
             call assemble_coupling(m, d, mm)
             t_km = min(t_km, now() - t0)
             deallocate (k, mm, t_mat)
@@ -123,7 +123,7 @@ contains
         end do repeats
         write (*, '(a,i6,a,i6,a,i5,a,f9.4,a,f9.4,a,f9.4,a,f9.4,a,f9.4,a,i4,a,i4,a,f9.4,a,f6.1,'// &
                'a,f9.4,a,f9.4,a,f6.1,a)') &
-            '|', m%ne, '|', d%n, '|', d%nr, '|', t_t, '|', t_km, '|', t_build, '|', t_solve, &
+            '|', m%mesh%ne, '|', d%n, '|', d%nr, '|', t_t, '|', t_km, '|', t_build, '|', t_solve, &
             '|', t_solve - t_build, '|', sol%n_solves, '|', sol%n_factorisations, '|', &
             t_fact, '|', &
             (t_solve - t_build)/t_fact, '|', t_setup, '|', t_schur, '|', &

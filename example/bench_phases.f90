@@ -154,9 +154,9 @@ contains
         allocate (r%t(n_phase, nm), r%info(n_info, nm), r%z_diff(nm))
         do i = 1, nm
             m = m0
-            m%ne = ne_list(i)
+            m%mesh%ne = ne_list(i)
             call measure_mesh(deck, m, label, tmp_dir, r, i)
-            write (output_unit, '(a,i5,a,f8.3,a)') '# '//path//' N_e', m%ne, ': total', &
+            write (output_unit, '(a,i5,a,f8.3,a)') '# '//path//' N_e', m%mesh%ne, ': total', &
                 sum(r%t(:, i)), ' s (least of repetitions)'
             flush (output_unit)
         end do
@@ -176,7 +176,7 @@ contains
         r%t(:, i) = huge(1.0_dp)
         r%info(:, i) = huge(1.0_dp)
         r%z_diff(i) = 0.0_dp
-        r%reps(i) = repetitions(m%ne)
+        r%reps(i) = repetitions(m%mesh%ne)
         do rep = 1, r%reps(i)
             call run_once(deck, m, label, tmp_dir, t, info, r, i)
             r%t(:, i) = min(r%t(:, i), t)
@@ -247,7 +247,7 @@ contains
         t_t = now() - t0
         if (allocated(err)) error stop 'bench_phases: T assembly failed'
         t0 = now()
-        k = compressed(stiffness_entries(section_of(m), d))
+        k = compressed(stiffness_entries(section_of(m%structure), d))
         mm = compressed(coupling_entries(m, d))
         t_km = now() - t0
         if (k%ncol /= d%nv .or. mm%nrow /= d%nr) error stop 'bench_phases: K or M misshapen'
@@ -270,7 +270,7 @@ contains
         type(discretization_t) :: dc
         logical :: nest
         real(dp) :: t0
-        if (m%method /= METHOD_NEWTON .or. is_active(plan_reduction(m, d))) &
+        if (m%solver%method /= METHOD_NEWTON .or. is_active(plan_reduction(m, d))) &
             error stop 'bench_phases: the replica covers Newton without model reduction only'
         t0 = now()
         allocate (sol%history(0))
@@ -340,7 +340,7 @@ contains
         if (allocated(err)) error stop 'bench_phases: tabulate failed'
         t0 = now()
         s = summarise(m, sol, tab)
-        e = summary_entries(m, s, contact_extent(tab, m%length))
+        e = summary_entries(m, s, contact_extent(tab, m%structure%length))
         t_summary = now() - t0
         t0 = now()
         call estimate_errors(m, d, e, sol%coarse, s%edge_in_contact)
@@ -472,7 +472,8 @@ contains
         call put(u, '')
         call put(u, '## '//trim(case_title(k))//' ('//trim(decks(k))//', N_e changed)')
         call put(u, '')
-        call put(u, '| phase |'//join_ne(r%ne, ' ms |')//' fitted p | fitted on N_e | local p | '// &
+        call put(u, '| phase |'//join_ne(r%ne, &
+            ' ms |')//' fitted p | fitted on N_e | local p | '// &
                  'p, all meshes | expected p | share at N_e = '//int_text(r%ne(nm))//' |')
         call put(u, '|---|'//repeat('---:|', nm)//'---:|---|---:|---:|---|---:|')
         do ip = 1, n_phase
@@ -585,7 +586,8 @@ contains
         write (ratios, '(f5.1," | ",f5.1)') solve_ratio(r, i), &
             sum(r%t(P_KM:P_CHECKS, i))/r%info(I_SCHUR_FACT, i)
         line = '| '//int_text(r%ne(i))//' | '//int_text(r%n(i))//' | '//int_text(r%nr(i))//' | '// &
-               int_text(r%reps(i))//' | '//int_text(r%solves(i))//' | '//int_text(r%factorisations(i))// &
+               int_text(r%reps(i))//' | '//int_text(r%solves(i))//' | '// &
+                   int_text(r%factorisations(i))// &
                ' | '//ms(r%info(I_SCHUR_SETUP, i))//' | '//ms(r%info(I_SCHUR_FACT, i))//' | '// &
                ms(r%info(I_WHOLE, i))//' | '//ms(replica)//' | '//trim(adjustl(buf))//' | '// &
                trim(ratios)//' |'
@@ -699,7 +701,8 @@ contains
             'set lmargin at screen 0.45; set rmargin at screen 0.78']
         integer :: u, k, ip
         open (newunit=u, file=out_dir//'/phases.gp', status='replace', action='write')
-        write (u, '(a)') '# bench_phases: run from the project folder: gnuplot '//out_dir//'/phases.gp'
+        write (u, '(a)') '# bench_phases: run from the project folder: gnuplot '//out_dir// &
+            '/phases.gp'
         write (u, '(a)') "set terminal pngcairo size 1500,620 font 'Sans,11' noenhanced"
         write (u, '(a)') "set output '"//out_dir//"/phases.png'"
         write (u, '(a)') "set datafile missing '?'"
@@ -725,7 +728,8 @@ contains
                     trim(phase_name(ip))//"', "
             end do
             write (u, '(a)') "'"//out_dir//"/phases.dat' index "//int_text(k - 1)//' using 1:'// &
-                int_text(n_phase + 2)//" with linespoints lw 3 pt 7 lc rgb 'black' title 'total', "// &
+                int_text(n_phase + 2)// &
+                    " with linespoints lw 3 pt 7 lc rgb 'black' title 'total', "// &
                 "1e-3 with lines dt 2 lc rgb 'gray40' title '1 ms (fit floor)'"
         end do
         write (u, '(a)') 'unset multiplot'

@@ -32,7 +32,8 @@ program bench_simplifications
             read (arg, *) ne_list(i)
         end do
     end if
-    write (output_unit, '(a)') '| case | N_e | simplification | unknowns full | unknowns solved '// &
+    write (output_unit, &
+        '(a)') '| case | N_e | simplification | unknowns full | unknowns solved '// &
         '| saved | linear solves full / simpl. | full s | simpl. s | assembly s | solve s full '// &
         '| solve s simpl. | time saved | max station diff |'
     write (output_unit, '(a)') '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|'// &
@@ -50,12 +51,12 @@ contains
         real(dp), intent(in) :: rho, f
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_PLATE
+        m%structure%kind = MODEL_PLATE
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = 0.1_dp
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = 0.1_dp
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
         call complete_model(m)
     end function plate
@@ -64,13 +65,13 @@ contains
         real(dp), intent(in) :: f, x
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_BEAM
+        m%structure%kind = MODEL_BEAM
         m%nondim = .true.
-        m%rho_in = 0.01_dp
-        m%zeta_in = 0.1_dp
-        m%beta_in = 0.05_dp
-        m%f = f
-        m%ne = ne
+        m%groups%rho = 0.01_dp
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = 0.05_dp
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=x)]
         call complete_model(m)
     end function beam
@@ -135,7 +136,7 @@ contains
         call new_discretization(m, d, err)
         red = plan_reduction(m, d)
         full = m
-        full%simplify = .false.
+        full%solver%simplify = .false.
         call timed_solve(full, d, sol_f, tab_f, t_f)
         call timed_solve(m, d, sol_s, tab_s, t_s)
         t_a = assembly_seconds(m, d)
@@ -149,7 +150,7 @@ contains
         text = text(len('simplifications used: ') + 1:index(text, ', saved') - 1)
         write (output_unit, '(a,"|",i0,"|",a,"|",i0,"|",i0,"|",f0.1,"%|",i0," / ",i0,"|",'// &
             'es9.2,"|",es9.2,"|",es9.2,"|",es9.2,"|",es9.2,"|",f0.1,"%|",es9.2,"|")') &
-            '| '//name//' ', m%ne, ' '//text//' ', red%n_full, red%n_reduced, &
+            '| '//name//' ', m%mesh%ne, ' '//text//' ', red%n_full, red%n_reduced, &
             100.0_dp*real(red%n_full - red%n_reduced, dp)/real(red%n_full, dp), &
             sol_f%n_solves, sol_s%n_solves, t_f, t_s, t_a, t_f - t_a, t_s - t_a, &
             100.0_dp*(t_f - t_s)/t_f, diff

@@ -107,7 +107,7 @@ contains
         if (allocated(err)) error stop 'bench_tabulation: cannot read the deck'
         call case_model(deck, 1, m, label, err)
         if (allocated(err)) error stop 'bench_tabulation: cannot build the case'
-        m%ne = ne
+        m%mesh%ne = ne
         call new_discretization(m, d, err)
         if (allocated(err)) error stop 'bench_tabulation: discretisation failed'
         call solve_contact(m, d, sol, err)

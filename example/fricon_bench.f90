@@ -108,7 +108,7 @@ contains
                         'wide beam b/l = 1', 'grid', runs)
         do k = 20, 80, 60
             m = grid_model(MODEL_PLATE, 1.0e-3_dp, 0.1_dp, 0.6_dp, k)
-            m%interp = INTERP_P2
+            m%mesh%interp = INTERP_P2
             write (name, '(a,i0)') 'plate P2 rho 1e-3 f 0.6 N_e ', k
             call bench_both(m, name, 'grid', runs)
         end do
@@ -121,14 +121,14 @@ contains
         real(dp), intent(in), optional :: h_load   !! beam: horizontal load (default f V/4)
         real(dp), intent(in), optional :: beta     !! beam: b/l (default 0.05)
         type(model_t) :: m
-        m%kind = kind
+        m%structure%kind = kind
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%beta_in = 0.05_dp
-        if (present(beta)) m%beta_in = beta
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = zeta
+        m%groups%beta = 0.05_dp
+        if (present(beta)) m%groups%beta = beta
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
         if (kind == MODEL_BEAM) m%loads(1)%fx = 0.25_dp*f
         if (present(h_load)) m%loads(1)%fx = h_load
@@ -159,11 +159,11 @@ contains
         type(error_t), allocatable :: err
         integer(int64) :: t0, t1, t2, rate
         m = m0
-        m%method = method
+        m%solver%method = method
         r%label = name
         r%set = set
         r%method = method
-        r%ne = m%ne
+        r%ne = m%mesh%ne
         call system_clock(t0, rate)
         call new_discretization(m, d, err)
         if (.not. allocated(err)) call solve_contact(m, d, sol, err)

@@ -71,15 +71,15 @@ contains
         logical, intent(in) :: plate
         type(model_t) :: m
         m%nondim = .true.
-        m%rho_in = 1.0e-3_dp
-        m%zeta_in = 0.1_dp
-        m%f = 0.6_dp
+        m%groups%rho = 1.0e-3_dp
+        m%groups%zeta = 0.1_dp
+        m%interface%f = 0.6_dp
         if (plate) then
-            m%kind = MODEL_PLATE
+            m%structure%kind = MODEL_PLATE
             m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.1_dp)]
         else
-            m%kind = MODEL_BEAM
-            m%beta_in = 0.05_dp
+            m%structure%kind = MODEL_BEAM
+            m%groups%beta = 0.05_dp
             m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=0.1_dp, x1=0.0_dp)]
         end if
     end function base_model
@@ -90,27 +90,27 @@ contains
         integer, intent(in) :: k, ne
         type(model_t) :: m
         m = base_model(plate)
-        m%ne = ne
-        m%interp = INTERP_P1
+        m%mesh%ne = ne
+        m%mesh%interp = INTERP_P1
         select case (k)
         case (2)
-            m%grading = 'EDGES'
+            m%mesh%grading = 'EDGES'
         case (3)
-            m%grading = 'LOADS'
+            m%mesh%grading = 'LOADS'
         case (4)
-            m%interp = INTERP_P2
+            m%mesh%interp = INTERP_P2
         case (5)
-            m%interp = INTERP_S2
+            m%mesh%interp = INTERP_S2
         case (6)
-            m%grading = 'LOADS'
-            m%interp(2:3) = INTERP_S2
+            m%mesh%grading = 'LOADS'
+            m%mesh%interp(2:3) = INTERP_S2
         case (7)
-            m%interp(2:3) = INTERP_S2
+            m%mesh%interp(2:3) = INTERP_S2
         case (8, 9)
-            m%ne = adapt_start
-            m%adapt_tol = tol_list(ne)      ! ne: the index into tol_list
-            m%adapt_max_ne = adapt_max
-            if (k == 9) m%interp(2:3) = INTERP_S2
+            m%mesh%ne = adapt_start
+            m%mesh%adapt_tol = tol_list(ne)      ! ne: the index into tol_list
+            m%mesh%adapt_max_ne = adapt_max
+            if (k == 9) m%mesh%interp(2:3) = INTERP_S2
         end select
         call complete_model(m)
     end function discretised
@@ -140,7 +140,7 @@ contains
             call new_discretization(m, d, err)
         end if
         if (.not. allocated(err)) then
-            if (m%adapt_tol > 0.0_dp) then
+            if (m%mesh%adapt_tol > 0.0_dp) then
                 ! the whole adaptation: every cycle's solve and its two estimate solves
                 call solve_adaptive(m, d, sol, info, err)
             else
@@ -164,8 +164,8 @@ contains
         q(2) = tab%val(Q_SZ, i0)*cols(column_index(cols, 'Sigma_z'))%scale
         q(3) = maxval(tab%val(Q_SZ, :))*cols(column_index(cols, 'Sigma_z'))%scale
         q(4) = maxval(abs(tab%val(Q_M, :)))*cols(column_index(cols, merge('M/(Fl)', 'M_r/F ', &
-                                                                          m%kind == MODEL_BEAM)))%scale
-        q(5) = contact_extent(tab, m%length)
+                                                                          m%structure%kind == MODEL_BEAM)))%scale
+        q(5) = contact_extent(tab, m%structure%length)
     end subroutine measure
 
     !> Reference, two ways, each quantity taken from the one with the smaller uncertainty:
@@ -189,7 +189,7 @@ contains
         call extrapolate(q, q_ref, uncertainty)
         source = 'a'
         m = discretised(plate, 8, size(tol_list))
-        m%adapt_max_ne = reference_max
+        m%mesh%adapt_max_ne = reference_max
         call measure(m, q(:, 1), seconds, unknowns, ok, final_mesh=msh)
         if (.not. ok) return
         do j = 2, 3
@@ -220,7 +220,8 @@ contains
             if (d1 /= 0.0_dp .and. d2 /= 0.0_dp .and. d1*d2 > 0.0_dp) &
                 p = max(0.5_dp, min(4.0_dp, log(d2/d1)/log(2.0_dp)))
             q_ref(i) = q(i, 3) + d1/(2.0_dp**p - 1.0_dp)
-            if (i == 5) q_ref(i) = q(i, 3)           ! the extent moves by stations: no extrapolation
+            if (i == 5) q_ref(i) = q(i, &
+                3)           ! the extent moves by stations: no extrapolation
             uncertainty(i) = abs(q_ref(i) - q(i, 3))
             if (i == 5) uncertainty(i) = abs(q(i, 3) - q(i, 2))
         end do
@@ -252,7 +253,8 @@ contains
             end do
         end do discretisations
         open (newunit=u, file=stem//'.txt', status='replace', action='write')
-        write (u, '(a)') '# work-precision, '//trim(merge('PLATE rho 0.001 zeta 0.1 f 0.6, disk load r <= 0.1 a           ', &
+        write (u, '(a)') '# work-precision, '// &
+            trim(merge('PLATE rho 0.001 zeta 0.1 f 0.6, disk load r <= 0.1 a           ', &
             'BEAM rho 0.001 zeta 0.1 beta 0.05 f 0.6, central load H = 0.1 V', plate))
         write (u, '(a)') '# reference (a): Richardson of P1/LOADS N_e 320, 640 (order from 160/320/640)'
         write (u, '(a,i0,a)') '# reference (b): the P1-ADAPT mesh of tol 1e-4 (at most ', &
@@ -349,7 +351,8 @@ contains
         write (u, '(a)') "set terminal pngcairo size 2100,1000 font 'Sans,11' noenhanced"
         write (u, '(a)') "set output '"//stem//".png'"
         write (u, '(a)') "set multiplot layout 2,4 title 'Work-precision, "// &
-            trim(merge('PLATE (rho 0.001, f 0.6, disk load) ', 'BEAM (rho 0.001, f 0.6, H = 0.1 V)  ', &
+            trim(merge('PLATE (rho 0.001, f 0.6, disk load) ', &
+                'BEAM (rho 0.001, f 0.6, H = 0.1 V)  ', &
                        plate))//": error against solve time' font 'Sans,14'"
         write (u, '(a)') 'set logscale xy; set grid; set format y "%.0e"; set format x "%.0e"'
         write (u, '(a)') "set linetype 9 lc rgb '#e0007a' lw 3    # the ninth family: magenta (8 is black)"
@@ -361,10 +364,12 @@ contains
                 ">0)?$"//int_text(4 + i)//":1/0) w lp pt 7 lw 2 t word(names, k+1)"
         end do
         write (u, '(a)') "unset logscale x; set logscale x; set xlabel 'unknowns'"
-        write (u, '(a)') "set title 'error of W(0) against unknowns'; plot for [k=0:"//int_text(n_disc - 1)// &
+        write (u, '(a)') "set title 'error of W(0) against unknowns'; plot for [k=0:"// &
+            int_text(n_disc - 1)// &
             "] '"//stem//".txt' index k u 3:(($5>0)?$5:1/0) w lp pt 7 lw 2 t word(names, k+1)"
         write (u, '(a)') "set title 'error of Sigma_z(0) against unknowns'; plot for [k=0:"// &
-            int_text(n_disc - 1)//"] '"//stem//".txt' index k u 3:(($6>0)?$6:1/0) w lp pt 7 lw 2 "// &
+            int_text(n_disc - 1)//"] '"//stem// &
+                ".txt' index k u 3:(($6>0)?$6:1/0) w lp pt 7 lw 2 "// &
             "t word(names, k+1)"
         write (u, '(a)') 'unset multiplot'
         close (u)

@@ -35,7 +35,8 @@ module adaptive_solve
     use mesh, only: mesh_t
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes, &
                                nearest_node
-    use discretization, only: discretization_t, discretise_mesh, load_positions, loads_on_nodes
+    use applied_loads, only: load_positions
+    use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
     use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
@@ -170,7 +171,7 @@ contains
         estimate_due = .true.
         if (ne_last <= 0 .or. ne >= 2*ne_last .or. est_last >= huge(1.0_dp)) return
         predicted = est_last*(real(ne_last, dp)/real(ne, dp))**2
-        estimate_due = predicted <= skip_factor*m%adapt_tol
+        estimate_due = predicted <= skip_factor*m%mesh%adapt_tol
     end function estimate_due
 
     pure logical function same_mesh(a, b)
@@ -183,8 +184,8 @@ contains
         type(model_t), intent(in) :: m
         type(adaptation_t), intent(out) :: info
         info%adapted = .true.
-        info%tol = m%adapt_tol
-        info%max_ne = m%adapt_max_ne
+        info%tol = m%mesh%adapt_tol
+        info%max_ne = m%mesh%adapt_max_ne
         info%note = ''
         info%worst = ''
         allocate (info%history_ne(0), info%history_estimate(0), info%entries(0))
@@ -247,7 +248,7 @@ contains
         if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, tab_nodes, err)
         if (allocated(err)) error stop 'adaptive_solve: a solved case could not be tabulated'
         s = summarise(m, sol, tab_nodes)
-        a%e = summary_entries(m, s, contact_extent(tab_nodes, m%length))
+        a%e = summary_entries(m, s, contact_extent(tab_nodes, m%structure%length))
         call locate_boundaries(sol, a%boundary, a%liftoff)
         if (allocated(a%eta)) deallocate (a%eta)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere
@@ -304,7 +305,7 @@ contains
         real(dp), intent(in) :: boundary(:)
         logical :: pinned(0:msh%ne)
         integer :: k
-        pinned = pinned_nodes(msh, load_positions(m))
+        pinned = pinned_nodes(msh, load_positions(m%loads))
         do k = 1, size(boundary)
             pinned(nearest_node(msh, boundary(k))) = .true.
         end do
@@ -322,8 +323,8 @@ contains
         if (size(boundary) == 0) return
         do i = 1, size(e)
             if (trim(e(i)%key) /= 'contact_extent_t') cycle
-            t = e(i)%value*m%length
-            floor = minval(abs(boundary - t))/m%length
+            t = e(i)%value*m%structure%length
+            floor = minval(abs(boundary - t))/m%structure%length
         end do
     end function extent_floor
 
@@ -438,7 +439,7 @@ contains
         integer, parameter :: q(3) = [Q_W, Q_SZ, Q_M]
         integer :: j, k, i
         scales(1) = maxval(abs(tab%val(Q_W, :)))
-        scales(2) = s%mean_pressure*merge(m%b, 1.0_dp, m%kind == MODEL_BEAM)
+        scales(2) = s%mean_pressure*merge(m%structure%b, 1.0_dp, m%structure%kind == MODEL_BEAM)
         scales(3) = maxval(abs(tab%val(Q_M, :)))
         scales = max(scales, tiny(1.0_dp))
         node_diff = 0.0_dp
@@ -449,7 +450,7 @@ contains
                 node_diff(i) = max(node_diff(i), diff)
             end do
         end do stations
-        eta = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%length* &
+        eta = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%structure%length* &
               max(node_diff(:d%msh%ne - 1), node_diff(1:))
     end function indicators
 
@@ -484,7 +485,7 @@ contains
         integer :: i
         allocate (x(0))
         do i = 1, size(a%e)
-            if (a%rel(i) >= 0.0_dp .and. a%rel(i) <= m%adapt_tol) cycle
+            if (a%rel(i) >= 0.0_dp .and. a%rel(i) <= m%mesh%adapt_tol) cycle
             if (.not. (estimated_and_defined(a%e(i)))) cycle
             select case (trim(a%e(i)%key))
             case ('settlement_max')
@@ -518,7 +519,7 @@ contains
         real(dp), allocatable :: x(:)
         integer :: k, i, ne
         ne = d%msh%ne
-        x = [load_positions(m), boundary]
+        x = [load_positions(m%loads), boundary]
         rough = .false.
         do k = 1, size(x)
             i = nearest_node(d%msh, x(k))
@@ -526,7 +527,7 @@ contains
             if (i < ne) rough(i + 1) = .true.
         end do
         if (tab%state(tab%n) /= STATE_LIFTOFF) rough(ne) = .true.
-        if (m%kind == MODEL_BEAM .and. tab%state(1) /= STATE_LIFTOFF) rough(1) = .true.
+        if (m%structure%kind == MODEL_BEAM .and. tab%state(1) /= STATE_LIFTOFF) rough(1) = .true.
     end function feature_elements
 
     !> The next mesh: nodes snapped onto the located boundaries, then the marked elements
@@ -540,7 +541,7 @@ contains
         logical, allocatable :: marked(:), pinned(:)
         integer :: k, node, budget
         next = d%msh
-        budget = m%adapt_max_ne - d%msh%ne
+        budget = m%mesh%adapt_max_ne - d%msh%ne
         short = .true.
         if (budget <= 0) return
         marked = element_marks(d, a)
@@ -549,7 +550,7 @@ contains
         short = .not. (short .or. any(marked))
         if (.not. any(marked)) return
         allocate (pinned(0:next%ne))     ! node numbers from 0, as the mesh's
-        pinned(:) = pinned_nodes(next, load_positions(m))
+        pinned(:) = pinned_nodes(next, load_positions(m%loads))
         do k = 1, size(a%boundary)
             call snap_node(next, a%boundary(k), pinned, node)
             if (node >= 0) pinned(node) = .true.

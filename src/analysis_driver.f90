@@ -97,7 +97,7 @@ contains
             return
         end if
         if (present(options)) opt = options
-        if (opt%full_model) cases(:)%simplify = .false.
+        if (opt%full_model) cases(:)%solver%simplify = .false.
         call prepare_output_dir(out_dir, err)
         if (.not. allocated(err)) call check_deck_not_overwritten(deck%path, out_dir, deck%stem, &
                                                                   n, err)
@@ -180,7 +180,7 @@ contains
                 return
             end if
             largest = max(largest, memory_needed(case_unknowns(cases(i)), &
-                                                 cases(i)%method == METHOD_TWOLOOP))
+                                                 cases(i)%solver%method == METHOD_TWOLOOP))
         end do
         threads = max(1, min(threads, int(0.8_dp*available/max(largest, 1.0_dp))))
     end subroutine fit_memory
@@ -195,7 +195,7 @@ contains
         if (time_needed(n) < 2.0_dp) return
         write (unit, '(a,i0,a,f0.1,a)') 'fricon: '//name//': ', n, ' unknowns, about '// &
             seconds(time_needed(n))//' and ', &
-            memory_needed(n, m%method == METHOD_TWOLOOP)/1.0e9_dp, ' GB (rough estimates)'
+            memory_needed(n, m%solver%method == METHOD_TWOLOOP)/1.0e9_dp, ' GB (rough estimates)'
         flush (unit)
     end subroutine announce_size
 
@@ -312,13 +312,13 @@ contains
         result%name = name
         result%label = label
         result%message = ''
-        result%rho = relative_stiffness(m)
+        result%rho = relative_stiffness(m%structure, m%ground)
         result%warnings = input_warnings(m)
         call solve_on_mesh(m, progress_unit, d, sol, tab, s, extent, result, err)
-        if (.not. allocated(err) .and. m%adapt_tol <= 0.0_dp) &
+        if (.not. allocated(err) .and. m%mesh%adapt_tol <= 0.0_dp) &
             call refine_until_admissible(m, progress_unit, d, sol, tab, s, extent, result, err)
         if (.not. allocated(err)) call require_admissible(s, err)
-        result%elements = m%ne
+        result%elements = m%mesh%ne
         if (result%adaptation%adapted) result%elements = result%adaptation%ne
         if (allocated(err)) then
             result%status = err%code
@@ -327,7 +327,7 @@ contains
         else
             result%warnings = [character(len=warning_length) :: result%warnings, &
                                settlement_warnings(m, s%w_max%value)]
-            if (m%adapt_tol <= 0.0_dp .and. .not. loads_on_nodes(m, d%msh)) &
+            if (m%mesh%adapt_tol <= 0.0_dp .and. .not. loads_on_nodes(m, d%msh)) &
                 result%warnings = [character(len=warning_length) :: result%warnings, &
                                    'a POINT, RING or MOMENT load lies between two nodes of '// &
                                    'the mesh: results near it converge at first order only '// &
@@ -362,7 +362,7 @@ contains
         extent = -1.0_dp
         call new_discretization(m, d, err)
         if (.not. allocated(err)) then
-            if (m%adapt_tol > 0.0_dp) then
+            if (m%mesh%adapt_tol > 0.0_dp) then
                 call solve_adaptive(m, d, sol, result%adaptation, err)
             else if (progress_unit >= 0) then
                 call solve_contact(m, d, sol, err, progress_unit)
@@ -376,7 +376,7 @@ contains
         if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, design, err)
         if (allocated(err)) return
         s = summarise(m, sol, design)
-        extent = contact_extent(design, m%length)
+        extent = contact_extent(design, m%structure%length)
     end subroutine solve_on_mesh
 
     !> A case solved with the law of the complete problem (its residual checks passed) whose
@@ -401,20 +401,20 @@ contains
         character(len=120) :: where
         real(dp) :: excess, allowance
         integer :: ne_deck, k
-        ne_deck = m%ne
+        ne_deck = m%mesh%ne
         excess = s%admissibility
         allowance = s%admissibility_tol
         doublings: do k = 1, max_doublings
-            if (s%admissibility <= s%admissibility_tol .or. 2*m%ne > max_auto_elements) &
+            if (s%admissibility <= s%admissibility_tol .or. 2*m%mesh%ne > max_auto_elements) &
                 exit doublings
             if (.not. finer_fits(m)) exit doublings
-            m%ne = 2*m%ne
+            m%mesh%ne = 2*m%mesh%ne
             call solve_on_mesh(m, progress_unit, d, sol, tab, s, extent, result, err)
             if (allocated(err)) exit doublings
         end do doublings
-        if (m%ne == ne_deck) return
+        if (m%mesh%ne == ne_deck) return
         write (where, '(a,i0,a,i0,a,i0)') 'friction not resolved pointwise on N_e = ', &
-            ne_deck, ', mesh refined to N_e = ', m%ne
+            ne_deck, ', mesh refined to N_e = ', m%mesh%ne
         if (allocated(err)) then
             call add_context(err, trim(where))
             return
@@ -425,9 +425,9 @@ contains
             return
         end if
         write (text, '(a,i0,a,i0,a,es8.2,a,es8.2,a,i0,a)') 'mesh refined from N_e = ', &
-            ne_deck, ' to ', m%ne, ': friction not resolved pointwise on the deck''s mesh '// &
+            ne_deck, ' to ', m%mesh%ne, ': friction not resolved pointwise on the deck''s mesh '// &
             '(max(|Sigma_x| - f Sigma_z) ', excess, ' > allowed ', allowance, &
-            '); results are for N_e = ', m%ne, ' (doc/CHOICES.md)'
+            '); results are for N_e = ', m%mesh%ne, ' (doc/CHOICES.md)'
         result%warnings = [character(len=warning_length) :: result%warnings, text]
     end subroutine refine_until_admissible
 
@@ -439,7 +439,7 @@ contains
         type(model_t) :: finer
         type(error_t), allocatable :: err
         finer = m
-        finer%ne = 2*m%ne
+        finer%mesh%ne = 2*m%mesh%ne
         call check_memory(finer, 1, memory_available(), err)
         finer_fits = .not. allocated(err)
     end function finer_fits
@@ -546,7 +546,8 @@ contains
         ! the solver holds the law in the Galerkin sense (its residual is checked before); a
         ! pointwise excess beyond the allowance is then a mesh too coarse for the slip
         ! (doc/CHOICES.md, very soft beams at eps_bar = 1e-12)
-        write (text, '(a,es10.3,a,es10.3,a)') 'the friction admissibility check failed: max(|Sigma_x| '// &
+        write (text, &
+            '(a,es10.3,a,es10.3,a)') 'the friction admissibility check failed: max(|Sigma_x| '// &
             '- f Sigma_z) = ', s%admissibility, ' exceeds the ', s%admissibility_tol, &
             ' the regularised law allows at the largest slip: the law holds on average over '// &
             'each traction function but is not resolved pointwise on this mesh: refine it'

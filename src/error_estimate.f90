@@ -51,18 +51,18 @@ contains
         type(entry_t), allocatable :: e2(:), e4(:)
         real(dp) :: h_edge
         logical :: ok2, ok4, nodes2, nodes4, singular_edge
-        if (m%ne/4 < min_coarse_elements) return
+        if (m%mesh%ne/4 < min_coarse_elements) return
         allocate (reuse(0))
         if (present(known)) reuse = known
-        call coarse_entries(m, m%ne/2, reuse, e2, ok2, nodes2)
+        call coarse_entries(m, m%mesh%ne/2, reuse, e2, ok2, nodes2)
         if (.not. ok2) return
-        call coarse_entries(m, m%ne/4, reuse, e4, ok4, nodes4)
+        call coarse_entries(m, m%mesh%ne/4, reuse, e4, ok4, nodes4)
         if (.not. ok4) return
         ! the contact extent moves by whole stations: at least half the largest element (as t)
-        h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%length
+        h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%structure%length
         singular_edge = .false.
         if (present(edge_in_contact)) singular_edge = edge_in_contact .and. &
-                                                      trim(m%grading) == 'UNIFORM'
+                                                      trim(m%mesh%grading) == 'UNIFORM'
         call attach_estimates(m, e, e2, e4, 2.0_dp, 0.5_dp*h_edge, &
                               loads_on_nodes(m, d%msh) .and. nodes2 .and. nodes4, singular_edge)
     end subroutine estimate_errors
@@ -140,7 +140,7 @@ contains
                                                         !! base in contact
         logical :: p1
         p = 4.0_dp
-        p1 = m%interp(2) == INTERP_P1 .or. m%interp(3) == INTERP_P1
+        p1 = m%mesh%interp(2) == INTERP_P1 .or. m%mesh%interp(3) == INTERP_P1
         if (trim(key) == 'pressure_centre') p = merge(1.0_dp, 2.0_dp, p1)
         if (.not. kinks_on_nodes .and. any(m%loads%kind /= LOAD_PATCH)) p = 1.0_dp
         if (present(singular_edge)) then
@@ -169,7 +169,7 @@ contains
         type(error_t), allocatable :: err
         integer :: k
         mc = m
-        mc%ne = ne
+        mc%mesh%ne = ne
         ok = .false.
         on_nodes = .false.
         call new_discretization(mc, d, err)
@@ -219,7 +219,7 @@ contains
         if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, design, err)
         if (allocated(err)) return
         s = summarise(m, sol, design)
-        e = summary_entries(m, s, contact_extent(design, m%length))
+        e = summary_entries(m, s, contact_extent(design, m%structure%length))
         if (present(node_tab)) node_tab = design
         ok = .true.
     end subroutine case_entries

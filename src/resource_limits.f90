@@ -40,7 +40,7 @@ contains
         type(error_t), allocatable :: err
         type(model_t) :: mc
         mc = m
-        if (m%adapt_tol > 0.0_dp) mc%ne = max(m%ne, m%adapt_max_ne)
+        if (m%mesh%adapt_tol > 0.0_dp) mc%mesh%ne = max(m%mesh%ne, m%mesh%adapt_max_ne)
         call new_discretization(mc, d, err)
         n = 0
         if (.not. allocated(err)) n = d%n
@@ -87,17 +87,19 @@ contains
         character(len=400) :: text
         integer :: n
         n = case_unknowns(m)
-        need = memory_needed(n, m%method == METHOD_TWOLOOP)*real(max(at_once, 1), dp)
+        need = memory_needed(n, m%solver%method == METHOD_TWOLOOP)*real(max(at_once, 1), dp)
         limit = usable_fraction*available
         if (need <= limit) return
         write (text, '(a,i0,a,i0,a,f0.1,a,i0,a,f0.1,a)') 'N_e = ', &
-            merge(max(m%ne, m%adapt_max_ne), m%ne, m%adapt_tol > 0.0_dp), ' gives ', n, &
+            merge(max(m%mesh%ne, m%mesh%adapt_max_ne), m%mesh%ne, m%mesh%adapt_tol > 0.0_dp), &
+                ' gives ', n, &
             ' unknowns and needs about ', need/1.0e9_dp, ' GB (', max(at_once, 1), &
             ' case(s) at once), more than the ', limit/1.0e9_dp, ' GB usable on this machine '// &
             '(80 % of the memory available): use fewer elements'
         ! advice that applies: grading only where the mesh is uniform, fewer jobs only where
         ! several cases run at once
-        if (trim(m%grading) == 'UNIFORM') text = trim(text)//' (a graded mesh, MESH EDGES or '// &
+        if (trim(m%mesh%grading) == 'UNIFORM') text = trim(text)// &
+            ' (a graded mesh, MESH EDGES or '// &
             'LOADS, needs fewer for the same accuracy)'
         if (at_once > 1) text = trim(text)//', or fewer --jobs'
         call new_error(err, EXIT_INPUT, trim(text))

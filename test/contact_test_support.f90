@@ -19,14 +19,14 @@ contains
         real(dp), intent(in) :: rho, zeta, nu_f, f
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_PLATE
+        m%structure%kind = MODEL_PLATE
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%nu = 0.3_dp
-        m%nu_f = nu_f
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = zeta
+        m%structure%nu = 0.3_dp
+        m%ground%nu_f = nu_f
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
         call complete_model(m)
     end function nondim_plate
@@ -37,15 +37,15 @@ contains
         real(dp), intent(in) :: rho, zeta, beta, f, h_load
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_BEAM
+        m%structure%kind = MODEL_BEAM
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%beta_in = beta
-        m%nu = 0.3_dp
-        m%nu_f = 0.1_dp
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = zeta
+        m%groups%beta = beta
+        m%structure%nu = 0.3_dp
+        m%ground%nu_f = 0.1_dp
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=h_load, x1=0.0_dp)]
         call complete_model(m)
     end function nondim_beam

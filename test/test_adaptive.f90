@@ -107,15 +107,15 @@ contains
         real(dp), intent(in) :: f, tol
         integer, intent(in) :: max_ne
         type(model_t) :: m
-        m%kind = MODEL_PLATE
+        m%structure%kind = MODEL_PLATE
         m%nondim = .true.
-        m%rho_in = 1.0e3_dp
-        m%zeta_in = 0.1_dp
-        m%nu_f = 0.1_dp
-        m%f = f
-        m%ne = 16
-        m%adapt_tol = tol
-        m%adapt_max_ne = max_ne
+        m%groups%rho = 1.0e3_dp
+        m%groups%zeta = 0.1_dp
+        m%ground%nu_f = 0.1_dp
+        m%interface%f = f
+        m%mesh%ne = 16
+        m%mesh%adapt_tol = tol
+        m%mesh%adapt_max_ne = max_ne
         m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)]
         call complete_model(m)
     end function punch
@@ -276,8 +276,10 @@ contains
         integer :: k
         call read_deck('input/plate_adapt.dat', deck, err)
         if (allocated(err)) return
-        call check(err, deck%base%adapt_tol == 1.0e-3_dp .and. deck%base%adapt_max_ne == 400 &
-                   .and. deck%base%ne == 16, 'input/plate_adapt.dat: ADAPT 1.0E-3 400, MESH 16')
+        call check(err, &
+            deck%base%mesh%adapt_tol == 1.0e-3_dp .and. deck%base%mesh%adapt_max_ne == 400 &
+                   .and. deck%base%mesh%ne == 16, &
+                       'input/plate_adapt.dat: ADAPT 1.0E-3 400, MESH 16')
         if (allocated(err)) return
         lines = deck%lines
         do k = 1, size(lines)
@@ -285,7 +287,8 @@ contains
         end do
         call parse_deck('adapt_default.dat', lines, deck, err)
         if (allocated(err)) return
-        call check(err, deck%base%adapt_tol == 5.0e-3_dp .and. deck%base%adapt_max_ne == 1000, &
+        call check(err, &
+            deck%base%mesh%adapt_tol == 5.0e-3_dp .and. deck%base%mesh%adapt_max_ne == 1000, &
                    'ADAPT with f2 blank: max_elements 1000')
     end subroutine test_card
 
@@ -313,11 +316,11 @@ contains
         call check(err, formal_order(m, 'pressure_centre', .true.) == 1.0_dp .and. &
                    formal_order(m, 'settlement_max', .true.) == 4.0_dp, 'P1 plate, disk load')
         if (allocated(err)) return
-        m%interp(2:3) = INTERP_S2
+        m%mesh%interp(2:3) = INTERP_S2
         call check(err, formal_order(m, 'pressure_centre', .true.) == 2.0_dp .and. &
                    formal_order(m, 'settlement_max', .true.) == 4.0_dp, 'S2 plate, disk load')
         if (allocated(err)) return
-        m%kind = MODEL_BEAM
+        m%structure%kind = MODEL_BEAM
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
         call check(err, formal_order(m, 'settlement_max', .false.) == 1.0_dp .and. &
                    formal_order(m, 'moment_sagging', .false.) == 1.0_dp, &
@@ -326,7 +329,7 @@ contains
         call check(err, formal_order(m, 'settlement_max', .true.) == 4.0_dp, &
                    'S2 beam, point load on a node (C0 there)')
         if (allocated(err)) return
-        m%interp(2:3) = 1
+        m%mesh%interp(2:3) = 1
         call check(err, formal_order(m, 'settlement_max', .false.) == 1.0_dp .and. &
                    formal_order(m, 'moment_sagging', .false.) == 1.0_dp, &
                    'P1 beam, point load between nodes (no kink inside an element)')
@@ -365,22 +368,23 @@ contains
         call require_unresolved(m, err)
         if (allocated(err)) return
         call solve_case(deck, m, label, dir, 'soft', .false., .false., -1, res)
-        call check(err, res%status == EXIT_OK .and. m%ne > 20 .and. res%elements == m%ne, &
+        call check(err, &
+            res%status == EXIT_OK .and. m%mesh%ne > 20 .and. res%elements == m%mesh%ne, &
                    'very soft beam: not solved '// &
                    'on a refined mesh: '//res%message)
         if (allocated(err)) return
         call check(err, any(index(res%warnings, 'mesh refined from N_e = 20 to') > 0), &
                    'very soft beam: the refinement is not reported')
         if (allocated(err)) return
-        call check(err, json_has(dir//'/soft.json', '"elements": ', m%ne) .and. &
+        call check(err, json_has(dir//'/soft.json', '"elements": ', m%mesh%ne) .and. &
                    json_has(dir//'/soft.json', '"warnings": ["mesh refined from N_e = 20 to ', &
-                            m%ne), 'very soft beam: the JSON does not give the refined mesh')
+                            m%mesh%ne), 'very soft beam: the JSON does not give the refined mesh')
         if (allocated(err)) return
         call case_model(deck, 1, m_direct, label, err)
         if (allocated(err)) return
-        m_direct%ne = m%ne
+        m_direct%mesh%ne = m%mesh%ne
         call solve_case(deck, m_direct, label, dir, 'soft_direct', .false., .false., -1, direct)
-        call check(err, direct%status == EXIT_OK .and. m_direct%ne == m%ne .and. &
+        call check(err, direct%status == EXIT_OK .and. m_direct%mesh%ne == m%mesh%ne .and. &
                    size(direct%entries) == size(res%entries), 'direct solve on the final mesh')
         if (allocated(err)) return
         do k = 1, size(res%entries)
@@ -392,7 +396,7 @@ contains
         if (.not. allocated(err)) call case_model(deck, 1, m, label, err)
         if (allocated(err)) return
         call solve_case(deck, m, label, dir, 'beam', .false., .false., -1, res)
-        call check(err, res%status == EXIT_OK .and. m%ne == 20 .and. &
+        call check(err, res%status == EXIT_OK .and. m%mesh%ne == 20 .and. &
                    all(index(res%warnings, 'mesh refined') == 0), &
                    'input/beam_nondim.dat refined although its friction is resolved')
         call execute_command_line('rm -rf '//dir)

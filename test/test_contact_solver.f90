@@ -50,7 +50,8 @@ contains
         m = nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, 0.0_dp, 40)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check_close(err, nd(m, tab, 'W', 1), relative_stiffness(m)/4.0_dp, &
+        call check_close(err, nd(m, tab, 'W', 1), relative_stiffness(m%structure, &
+            m%ground)/4.0_dp, &
                          1.0e-2_dp, 0.0_dp, 'rigid punch W(0)')
         if (allocated(err)) return
         do i = 1, tab%n
@@ -113,10 +114,11 @@ contains
         if (allocated(err)) return
         w_bonded = nd(m, tab, 'W', 1)
         c = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
-        call check_close(err, w_bonded, relative_stiffness(m)/(4.0_dp*c), 2.0e-2_dp, 0.0_dp, &
+        call check_close(err, w_bonded, relative_stiffness(m%structure, m%ground)/(4.0_dp*c), &
+            2.0e-2_dp, 0.0_dp, &
                          'bonded punch W(0)')
         if (allocated(err)) return
-        w_free = relative_stiffness(m)/4.0_dp
+        w_free = relative_stiffness(m%structure, m%ground)/4.0_dp
         call check(err, w_bonded < w_free, 'bonded punch is not stiffer than the frictionless one')
     end subroutine test_bonded_punch
 
@@ -148,11 +150,13 @@ contains
         m = nondim_plate(1.0e-3_dp, 0.05_dp, 0.1_dp, 0.5_dp, 40)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, contact_extent(tab, m%length) < 0.9_dp .and. tab%state(tab%n) == STATE_LIFTOFF, &
+        call check(err, contact_extent(tab, &
+            m%structure%length) < 0.9_dp .and. tab%state(tab%n) == STATE_LIFTOFF, &
                    'flexible plate did not lift off')
         if (allocated(err)) return
         ! penalty: sigma_z = -(eta_bar/c) gap in the lift-off zone, so sigma_z * gap = O(eta_bar)
-        call check(err, tab%complementarity <= 1.0e3_dp*m%eta_bar, 'complementarity violated')
+        call check(err, tab%complementarity <= 1.0e3_dp*m%interface%eta_bar, &
+            'complementarity violated')
         if (allocated(err)) return
         call check(err, all(tab%val(Q_GAP, :) > 0.0_dp .or. tab%state /= STATE_LIFTOFF), &
                    'lift-off station without a positive gap')
@@ -172,13 +176,15 @@ contains
         m = nondim_plate(0.01_dp, 0.2_dp, 0.1_dp, 0.2_dp, 30)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%eps_bar, &
+        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', &
+            0) <= 1.0e3_dp*m%interface%eps_bar, &
                    'plate: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
         if (allocated(err)) return
         m = nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20)
         call run(m, sol, tab, err)
         if (allocated(err)) return
-        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%eps_bar, &
+        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', &
+            0) <= 1.0e3_dp*m%interface%eps_bar, &
                    'beam: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
     end subroutine test_admissibility
 
@@ -198,7 +204,7 @@ contains
         eps = [1.0e-1_dp, 1.0e-4_dp, 1.0e-7_dp, 1.0e-8_dp]
         do k = 1, 4
             m = nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20)
-            m%eps_bar = eps(k)
+            m%interface%eps_bar = eps(k)
             call run(m, sol, tab, err)
             if (allocated(err)) return
             mid = (tab%n + 1)/2
@@ -228,7 +234,8 @@ contains
         call check(err, allocated(run_err), 'H > f V was solved')
         if (allocated(err)) return
         call check(err, run_err%code == EXIT_ANALYSIS .and. &
-                   index(run_err%message, 'sliding') > 0, 'H > f V: expected status 2 and a sliding message')
+                   index(run_err%message, 'sliding') > 0, &
+                       'H > f V: expected status 2 and a sliding message')
     end subroutine test_sliding
 
     !> An upward net load has no equilibrium on a tensionless soil: status 2.
@@ -257,17 +264,17 @@ contains
         type(station_table_t) :: tab
         type(error_t), allocatable :: run_err
         m = nondim_plate(1.0e-3_dp, 0.05_dp, 0.1_dp, 0.5_dp, 20)
-        m%method = METHOD_TWOLOOP
-        m%max_outer = 2
+        m%solver%method = METHOD_TWOLOOP
+        m%solver%max_outer = 2
         call run(m, sol, tab, run_err)
         call check(err, allocated(run_err), 'two outer iterations should not suffice')
         if (allocated(err)) return
         call check(err, run_err%code == EXIT_ANALYSIS .and. &
                    index(run_err%message, 'did not converge') > 0, 'expected status 2')
         if (allocated(err)) return
-        m%method = METHOD_NEWTON
-        m%max_outer = 100
-        m%max_inner = 1
+        m%solver%method = METHOD_NEWTON
+        m%solver%max_outer = 100
+        m%solver%max_inner = 1
         call run(m, sol, tab, run_err)
         call check(err, allocated(run_err), 'one Newton step per stage should not suffice')
         if (allocated(err)) return
@@ -287,7 +294,7 @@ contains
         if (allocated(err)) return
         call check(err, maxval(abs(sol%reaction - sol%applied)) <= 1.0e-8_dp .and. &
                    sol%residual(2) <= 1.0e-8_dp .and. &
-                   sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%eps_bar, &
+                   sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= 1.0e3_dp*m%interface%eps_bar, &
                    'soft beam: equilibrium, interface residual or admissibility violated')
     end subroutine test_soft_beam
 
@@ -301,7 +308,7 @@ contains
         type(station_table_t) :: tab
         type(error_t), allocatable :: run_err
         m = nondim_plate(1.0e4_dp, 0.1_dp, 0.1_dp, 1.0e3_dp, 150)
-        m%grading = 'EDGES'
+        m%mesh%grading = 'EDGES'
         call run(m, sol, tab, run_err)
         if (.not. allocated(run_err)) then
             ! solved after all: then it must satisfy its checks
@@ -322,8 +329,8 @@ contains
         integer :: k
         do k = 1, 2
             m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 20)
-            m%max_inner = 1000000000
-            m%method = merge(METHOD_NEWTON, METHOD_TWOLOOP, k == 1)
+            m%solver%max_inner = 1000000000
+            m%solver%method = merge(METHOD_NEWTON, METHOD_TWOLOOP, k == 1)
             call run(m, sol, tab, err)
             if (allocated(err)) return
         end do

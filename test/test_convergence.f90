@@ -113,13 +113,13 @@ contains
         real(dp), intent(in) :: rho, f
         type(load_t), intent(in) :: load
         type(model_t) :: m
-        m%kind = MODEL_PLATE
+        m%structure%kind = MODEL_PLATE
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = 0.1_dp
-        m%nu = 0.3_dp
-        m%nu_f = 0.1_dp
-        m%f = f
+        m%groups%rho = rho
+        m%groups%zeta = 0.1_dp
+        m%structure%nu = 0.3_dp
+        m%ground%nu_f = 0.1_dp
+        m%interface%f = f
         allocate (m%loads(1))
         m%loads(1) = load
         call complete_model(m)
@@ -132,7 +132,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(problem_t) :: prob
         prob%m = nondim_plate(rho_rigid, 0.0_dp, load_t(kind=LOAD_POINT, fz=1.0_dp))
-        prob%w_exact = relative_stiffness(prob%m)/4.0_dp
+        prob%w_exact = relative_stiffness(prob%m%structure, prob%m%ground)/4.0_dp
         call punch_orders(prob, 'frictionless rigid punch, rho = 1e4: W(0) against rho/4 '// &
                           '(Boussinesq)', .true., err)
     end subroutine test_rigid_punch
@@ -145,9 +145,9 @@ contains
         type(problem_t) :: prob
         real(dp) :: c, nu_f
         prob%m = nondim_plate(rho_rigid, f_bonded, load_t(kind=LOAD_POINT, fz=1.0_dp))
-        nu_f = prob%m%nu_f
+        nu_f = prob%m%ground%nu_f
         c = (1.0_dp - nu_f)*log(3.0_dp - 4.0_dp*nu_f)/(1.0_dp - 2.0_dp*nu_f)
-        prob%w_exact = relative_stiffness(prob%m)/(4.0_dp*c)
+        prob%w_exact = relative_stiffness(prob%m%structure, prob%m%ground)/(4.0_dp*c)
         prob%want_stick = .true.
         call punch_orders(prob, 'bonded rigid punch, rho = 1e4, f = 1e3: W(0) against '// &
                           'rho/(4c) (Mossakovskii)', .false., err)
@@ -227,8 +227,8 @@ contains
         character(len=160) :: text
         prob%m = nondim_plate(1.0e-12_dp, f_bonded, &
                               load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp))
-        prob%m%eps_bar = 1.0e-10_dp
-        prob%w_exact = relative_stiffness(prob%m)/pi
+        prob%m%interface%eps_bar = 1.0e-10_dp
+        prob%w_exact = relative_stiffness(prob%m%structure, prob%m%ground)/pi
         prob%matching = .true.
         prob%want_stick = .true.
         n_mesh = [5, 0, 0]
@@ -268,13 +268,13 @@ contains
         allocate (s%ne(n_levels), s%error(n_levels), s%h_edge(n_levels))
         levels: do k = 1, n_levels
             m = prob%m
-            m%ne = 4*2**(k - 1)
-            m%grading = merge('EDGES  ', 'UNIFORM', mesh == MESH_EDGES)
-            m%interp(FIELD_SX:FIELD_SZ) = family
-            if (prob%matching) m%interp(FIELD_U:FIELD_PSI) = family
+            m%mesh%ne = 4*2**(k - 1)
+            m%mesh%grading = merge('EDGES  ', 'UNIFORM', mesh == MESH_EDGES)
+            m%mesh%interp(FIELD_SX:FIELD_SZ) = family
+            if (prob%matching) m%mesh%interp(FIELD_U:FIELD_PSI) = family
             call solve_w0(m, mesh == MESH_RADICAL, prob%want_stick, w0, s%h_edge(k), err)
             if (allocated(err)) return
-            s%ne(k) = m%ne
+            s%ne(k) = m%mesh%ne
             s%error(k) = w0/prob%w_exact - 1.0_dp
         end do levels
     end subroutine run_series
@@ -297,11 +297,12 @@ contains
         if (allocated(err)) return
         if (radical) then
             ! same number of elements, so the numbering of new_discretization still holds
-            radical_nodes: do i = 0, m%ne
-                d%msh%x(i) = m%length*(1.0_dp - (1.0_dp - real(i, dp)/real(m%ne, dp))**3)
+            radical_nodes: do i = 0, m%mesh%ne
+                d%msh%x(i) = m%structure%length*(1.0_dp - (1.0_dp - real(i, dp)/real(m%mesh%ne, &
+                    dp))**3)
             end do radical_nodes
             rebuild_bases: do field = FIELD_U, FIELD_SZ
-                call new_basis(d%basis(field), d%msh, m%interp(field))
+                call new_basis(d%basis(field), d%msh, m%mesh%interp(field))
             end do rebuild_bases
         end if
         call solve_contact(m, d, sol, err)
@@ -309,8 +310,8 @@ contains
         call tabulate(m, d, sol, tab, err)
         if (allocated(err)) return
         w0 = nd(m, tab, 'W', 1)
-        h_edge = (d%msh%x(m%ne) - d%msh%x(m%ne - 1))/m%length
-        write (text, '(a,i0,a)') 'N_e = ', m%ne, ': '
+        h_edge = (d%msh%x(m%mesh%ne) - d%msh%x(m%mesh%ne - 1))/m%structure%length
+        write (text, '(a,i0,a)') 'N_e = ', m%mesh%ne, ': '
         ! a spurious "converged" state (all points in tension) misses equilibrium by ~F; the
         ! round-off of the stiff punch (rho = 1e4) leaves up to ~1e-6 F (N_e = 64)
         call check(err, abs(sol%reaction(1) - sol%applied(1)) <= 1.0e-4_dp*sol%applied(1), &
@@ -320,7 +321,7 @@ contains
         call check(err, all(tab%state == STATE_STICK), trim(text)//'bonded case has a '// &
                    'station in lift-off or slip')
         if (allocated(err)) return
-        if (m%rho_in >= 1.0e-6_dp) return
+        if (m%groups%rho >= 1.0e-6_dp) return
         ! no plate stiffness: M^T r = q with matching spaces reproduces the uniform load. The
         ! residual stiffness (rho = 1e-12) leaves a rim singularity of tiny amplitude whose value
         ! at the rim node grows as the rim element shrinks (~3e-7 at N_e = 64); 1e-5 allows for

@@ -202,11 +202,12 @@ contains
         call parse_ok('input/default.dat', lines, deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check(err, m%kind == MODEL_PLATE .and. .not. m%nondim, 'default: physical PLATE')
+            call check(err, m%structure%kind == MODEL_PLATE .and. .not. m%nondim, &
+                'default: physical PLATE')
             if (allocated(err)) return
             call check(err, deck%stem == 'default' .and. size(deck%lines) == size(lines), 'stem')
             if (allocated(err)) return
-            call check(err, trim(m%force_unit) == 'kN' .and. trim(m%length_unit) == 'm', 'units')
+            call check(err, trim(m%units%force) == 'kN' .and. trim(m%units%length) == 'm', 'units')
             if (allocated(err)) return
             call check(err, size(m%loads) == 1 .and. m%loads(1)%kind == LOAD_PATCH, 'one PATCH')
             if (allocated(err)) return
@@ -214,13 +215,13 @@ contains
             if (allocated(err)) return
             call check_close(err, m%loads(1)%x2, 0.4_dp, 0.0_dp, 0.0_dp, 'x2')
             if (allocated(err)) return
-            call check_close(err, m%length, 6.0_dp, 0.0_dp, 0.0_dp, 'a')
+            call check_close(err, m%structure%length, 6.0_dp, 0.0_dp, 0.0_dp, 'a')
             if (allocated(err)) return
-            call check_close(err, m%e, 30.0e6_dp, 0.0_dp, 0.0_dp, 'E')
+            call check_close(err, m%structure%e, 30.0e6_dp, 0.0_dp, 0.0_dp, 'E')
             if (allocated(err)) return
-            call check_close(err, m%e_f, 40.0e3_dp, 0.0_dp, 0.0_dp, 'E_f')
+            call check_close(err, m%ground%e_f, 40.0e3_dp, 0.0_dp, 0.0_dp, 'E_f')
             if (allocated(err)) return
-            call check(err, m%ne == 40 .and. all(m%interp == INTERP_P1), 'MESH 40 P1')
+            call check(err, m%mesh%ne == 40 .and. all(m%mesh%interp == INTERP_P1), 'MESH 40 P1')
             if (allocated(err)) return
             call check(err, index(m%title, 'Circular concrete raft') == 1, 'title')
             if (allocated(err)) return
@@ -299,28 +300,31 @@ contains
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check_close(err, m%eps_bar, 1.0e-6_dp, 0.0_dp, 0.0_dp, 'eps_bar default')
+            call check_close(err, m%interface%eps_bar, 1.0e-6_dp, 0.0_dp, 0.0_dp, 'eps_bar default')
             if (allocated(err)) return
-            call check_close(err, m%nu, 0.3_dp, 0.0_dp, 0.0_dp, 'NONDIM nu default')
+            call check_close(err, m%structure%nu, 0.3_dp, 0.0_dp, 0.0_dp, 'NONDIM nu default')
             if (allocated(err)) return
-            call check_close(err, m%nu_f, 0.1_dp, 0.0_dp, 0.0_dp, 'NONDIM nu_f default')
+            call check_close(err, m%ground%nu_f, 0.1_dp, 0.0_dp, 0.0_dp, 'NONDIM nu_f default')
             if (allocated(err)) return
-            call check_close(err, m%k_shear, 5.0_dp/6.0_dp, 1.0e-15_dp, 0.0_dp, 'k default')
+            call check_close(err, m%structure%k_shear, 5.0_dp/6.0_dp, 1.0e-15_dp, 0.0_dp, &
+                'k default')
             if (allocated(err)) return
-            call check(err, m%ne == 20 .and. m%grading == 'UNIFORM' .and. &
-                       all(m%interp == INTERP_P1), 'MESH defaults 20 UNIFORM P1')
+            call check(err, m%mesh%ne == 20 .and. m%mesh%grading == 'UNIFORM' .and. &
+                       all(m%mesh%interp == INTERP_P1), 'MESH defaults 20 UNIFORM P1')
             if (allocated(err)) return
-            call check(err, m%max_outer == 100 .and. m%max_inner == 100, 'max iterations')
+            call check(err, m%solver%max_outer == 100 .and. m%solver%max_inner == 100, &
+                'max iterations')
             if (allocated(err)) return
-            call check_close(err, m%tol_outer, 1.0e-8_dp, 0.0_dp, 0.0_dp, 'tol outer')
+            call check_close(err, m%solver%tol_outer, 1.0e-8_dp, 0.0_dp, 0.0_dp, 'tol outer')
             if (allocated(err)) return
-            call check_close(err, m%tol_inner, 1.0e-10_dp, 0.0_dp, 0.0_dp, 'tol inner')
+            call check_close(err, m%solver%tol_inner, 1.0e-10_dp, 0.0_dp, 0.0_dp, 'tol inner')
             if (allocated(err)) return
-            call check_close(err, m%eta_bar, 1.0e-9_dp, 0.0_dp, 0.0_dp, 'eta_bar')
+            call check_close(err, m%interface%eta_bar, 1.0e-9_dp, 0.0_dp, 0.0_dp, 'eta_bar')
             if (allocated(err)) return
-            call check(err, m%tau0_start < 0.0_dp .and. m%stations == 0, 'tau0 and stations')
+            call check(err, m%solver%tau0_start < 0.0_dp .and. m%output%stations == 0, &
+                'tau0 and stations')
             if (allocated(err)) return
-            call check(err, m%method == METHOD_NEWTON, 'SOLVER method defaults to NEWTON')
+            call check(err, m%solver%method == METHOD_NEWTON, 'SOLVER method defaults to NEWTON')
             if (allocated(err)) return
             call check(err, m%loads(1)%x1 == 0.0_dp .and. m%loads(1)%kind == LOAD_POINT, &
                        'POINT x1 defaults to the centre')
@@ -342,18 +346,20 @@ contains
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check(err, m%kind == MODEL_BEAM .and. m%ne == 10 .and. m%grading == 'EDGES', &
+            call check(err, &
+                m%structure%kind == MODEL_BEAM .and. m%mesh%ne == 10 .and. m%mesh%grading == 'EDGES', &
                        'lower-case MODEL and MESH')
             if (allocated(err)) return
-            call check(err, all(m%interp == [INTERP_P2, INTERP_S2, INTERP_P1, INTERP_P1, &
+            call check(err, all(m%mesh%interp == [INTERP_P2, INTERP_S2, INTERP_P1, INTERP_P1, &
                                              INTERP_P2]), 'interpolation words')
             if (allocated(err)) return
-            call check(err, m%max_outer == 50 .and. m%max_inner == 60 .and. m%stations == 11, &
+            call check(err, &
+                m%solver%max_outer == 50 .and. m%solver%max_inner == 60 .and. m%output%stations == 11, &
                        'SOLVER counts and OUTPUT stations')
             if (allocated(err)) return
-            call check_close(err, m%tau0_start, 0.2_dp, 0.0_dp, 0.0_dp, 'tau0')
+            call check_close(err, m%solver%tau0_start, 0.2_dp, 0.0_dp, 0.0_dp, 'tau0')
             if (allocated(err)) return
-            call check(err, m%method == METHOD_TWOLOOP, 'SOLVER method word twoloop')
+            call check(err, m%solver%method == METHOD_TWOLOOP, 'SOLVER method word twoloop')
         end associate
     end subroutine test_case_insensitive
 
@@ -366,12 +372,12 @@ contains
         lines = [lines(1:4), card('SOLVER', '', '', '', '', '', '', 'NEWTON'), lines(5)]
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
-        call check(err, deck%base%method == METHOD_NEWTON, 'SOLVER method NEWTON')
+        call check(err, deck%base%solver%method == METHOD_NEWTON, 'SOLVER method NEWTON')
         if (allocated(err)) return
         lines(5) = card('SOLVER', '', '', '', '', '', '', 'TWOLOOP')
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
-        call check(err, deck%base%method == METHOD_TWOLOOP, 'SOLVER method TWOLOOP')
+        call check(err, deck%base%solver%method == METHOD_TWOLOOP, 'SOLVER method TWOLOOP')
         if (allocated(err)) return
         lines(5) = card('SOLVER', '', '', '', '', '', '', 'SECANT')
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:5:71-80: SOLVER method', &
@@ -389,7 +395,7 @@ contains
                  lines(4:5), '* after END', '']
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
-        call check(err, deck%base%kind == MODEL_BEAM .and. size(deck%base%loads) == 1, &
+        call check(err, deck%base%structure%kind == MODEL_BEAM .and. size(deck%base%loads) == 1, &
                    'comments and blank cards ignored')
     end subroutine test_comments
 
@@ -405,19 +411,19 @@ contains
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check_close(err, m%length, 10.0_dp, 0.0_dp, 0.0_dp, 'l = 1.0E+1')
+            call check_close(err, m%structure%length, 10.0_dp, 0.0_dp, 0.0_dp, 'l = 1.0E+1')
             if (allocated(err)) return
-            call check_close(err, m%h, 0.5_dp, 0.0_dp, 0.0_dp, 'h = 5.E-1')
+            call check_close(err, m%structure%h, 0.5_dp, 0.0_dp, 0.0_dp, 'h = 5.E-1')
             if (allocated(err)) return
-            call check_close(err, m%b, 1.0_dp, 0.0_dp, 0.0_dp, 'b = +1')
+            call check_close(err, m%structure%b, 1.0_dp, 0.0_dp, 0.0_dp, 'b = +1')
             if (allocated(err)) return
-            call check_close(err, m%e, 3.0e7_dp, 0.0_dp, 0.0_dp, 'E = 3.0e7')
+            call check_close(err, m%structure%e, 3.0e7_dp, 0.0_dp, 0.0_dp, 'E = 3.0e7')
             if (allocated(err)) return
-            call check_close(err, m%nu, 0.2_dp, 0.0_dp, 0.0_dp, 'nu = 2.0D-1')
+            call check_close(err, m%structure%nu, 0.2_dp, 0.0_dp, 0.0_dp, 'nu = 2.0D-1')
             if (allocated(err)) return
-            call check_close(err, m%k_shear, 0.8_dp, 0.0_dp, 0.0_dp, 'k = .8')
+            call check_close(err, m%structure%k_shear, 0.8_dp, 0.0_dp, 0.0_dp, 'k = .8')
             if (allocated(err)) return
-            call check_close(err, m%e_f, 4.0e4_dp, 0.0_dp, 0.0_dp, 'E_f = 4E4')
+            call check_close(err, m%ground%e_f, 4.0e4_dp, 0.0_dp, 0.0_dp, 'E_f = 4E4')
             if (allocated(err)) return
             call check_close(err, m%loads(1)%fx, -150.0_dp, 0.0_dp, 0.0_dp, 'F_x = -1.5E2')
             if (allocated(err)) return
@@ -435,16 +441,17 @@ contains
         call parse_ok('beam.dat', lines, deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check(err, m%kind == MODEL_BEAM .and. size(m%loads) == 3, 'beam with 3 loads')
+            call check(err, m%structure%kind == MODEL_BEAM .and. size(m%loads) == 3, &
+                'beam with 3 loads')
             if (allocated(err)) return
             call check(err, m%loads(2)%line == 7 .and. m%loads(3)%line == 8, 'load lines')
             if (allocated(err)) return
-            call check_close(err, total_vertical_load(m), 1200.0_dp, 1.0e-15_dp, 0.0_dp, &
+            call check_close(err, total_vertical_load(m%loads), 1200.0_dp, 1.0e-15_dp, 0.0_dp, &
                              'total vertical load (moment excluded)')
             if (allocated(err)) return
-            call check_close(err, m%b, 1.0_dp, 0.0_dp, 0.0_dp, 'b')
+            call check_close(err, m%structure%b, 1.0_dp, 0.0_dp, 0.0_dp, 'b')
             if (allocated(err)) return
-            call check(err, trim(m%force_unit) == 'N' .and. trim(m%length_unit) == 'm', &
+            call check(err, trim(m%units%force) == 'N' .and. trim(m%units%length) == 'm', &
                        'default unit labels N, m')
         end associate
     end subroutine test_physical_beam
@@ -456,19 +463,22 @@ contains
         call parse_ok('t.dat', beam_nondim(), deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check(err, m%nondim .and. m%kind == MODEL_BEAM, 'NONDIM beam')
+            call check(err, m%nondim .and. m%structure%kind == MODEL_BEAM, 'NONDIM beam')
             if (allocated(err)) return
-            call check_close(err, relative_stiffness(m), 0.0025_dp, 1.0e-13_dp, 0.0_dp, 'rho')
+            call check_close(err, relative_stiffness(m%structure, m%ground), 0.0025_dp, &
+                1.0e-13_dp, 0.0_dp, 'rho')
             if (allocated(err)) return
-            call check_close(err, m%h/m%length, 0.1_dp, 1.0e-15_dp, 0.0_dp, 'zeta = h/l')
+            call check_close(err, m%structure%h/m%structure%length, 0.1_dp, 1.0e-15_dp, 0.0_dp, &
+                'zeta = h/l')
             if (allocated(err)) return
-            call check_close(err, m%b/m%length, 0.05_dp, 1.0e-15_dp, 0.0_dp, 'beta = b/l')
+            call check_close(err, m%structure%b/m%structure%length, 0.05_dp, 1.0e-15_dp, 0.0_dp, &
+                'beta = b/l')
             if (allocated(err)) return
-            call check_close(err, total_vertical_load(m), 1.0_dp, 0.0_dp, 0.0_dp, 'F = 1')
+            call check_close(err, total_vertical_load(m%loads), 1.0_dp, 0.0_dp, 0.0_dp, 'F = 1')
             if (allocated(err)) return
             call check_close(err, m%loads(1)%fx, 0.1_dp, 0.0_dp, 0.0_dp, 'F_x / F')
             if (allocated(err)) return
-            call check_close(err, m%f, 0.6_dp, 0.0_dp, 0.0_dp, 'f')
+            call check_close(err, m%interface%f, 0.6_dp, 0.0_dp, 0.0_dp, 'f')
         end associate
     end subroutine test_nondim_beam
 
@@ -478,11 +488,14 @@ contains
         call parse_ok('t.dat', plate_nondim(), deck, err)
         if (allocated(err)) return
         associate (m => deck%base)
-            call check_close(err, relative_stiffness(m), 0.01_dp, 1.0e-13_dp, 0.0_dp, 'rho')
+            call check_close(err, relative_stiffness(m%structure, m%ground), 0.01_dp, 1.0e-13_dp, &
+                0.0_dp, 'rho')
             if (allocated(err)) return
-            call check_close(err, m%h/m%length, 0.1_dp, 1.0e-15_dp, 0.0_dp, 'zeta = h/a')
+            call check_close(err, m%structure%h/m%structure%length, 0.1_dp, 1.0e-15_dp, 0.0_dp, &
+                'zeta = h/a')
             if (allocated(err)) return
-            call check(err, m%length == 1.0_dp .and. m%e == 1.0_dp, 'a = 1, E = 1')
+            call check(err, m%structure%length == 1.0_dp .and. m%structure%e == 1.0_dp, &
+                'a = 1, E = 1')
         end associate
     end subroutine test_nondim_plate
 
@@ -494,7 +507,7 @@ contains
         lines(4) = card('SOIL', '40.0E3', '0.5')
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
-        call check_close(err, deck%base%nu_f, 0.5_dp, 0.0_dp, 0.0_dp, 'nu_f = 0.5 accepted')
+        call check_close(err, deck%base%ground%nu_f, 0.5_dp, 0.0_dp, 0.0_dp, 'nu_f = 0.5 accepted')
     end subroutine test_nu_f_half
 
     subroutine test_sweep_expansion(err)
@@ -523,10 +536,12 @@ contains
             if (allocated(err)) return
             call check(err, label == trim(expected(i)), 'label of case '//int_text(i)//': '//label)
             if (allocated(err)) return
-            call check_close(err, relative_stiffness(m), rho(1 + (i - 1)/size(f)), 1.0e-13_dp, &
+            call check_close(err, relative_stiffness(m%structure, m%ground), &
+                rho(1 + (i - 1)/size(f)), 1.0e-13_dp, &
                              0.0_dp, 'rho of case '//int_text(i))
             if (allocated(err)) return
-            call check_close(err, m%f, f(mod(i - 1, 2) + 1), 0.0_dp, 0.0_dp, 'f of case '//int_text(i))
+            call check_close(err, m%interface%f, f(mod(i - 1, 2) + 1), 0.0_dp, 0.0_dp, &
+                'f of case '//int_text(i))
             if (allocated(err)) return
         end do cases
         call case_model(deck, 7, m, label, cerr)
@@ -873,7 +888,7 @@ contains
         lines(1) = bom//lines(1)
         call parse_ok('t.dat', lines, deck, err)
         if (allocated(err)) return
-        call check(err, deck%base%kind == MODEL_BEAM, 'MODEL after a BOM not read')
+        call check(err, deck%base%structure%kind == MODEL_BEAM, 'MODEL after a BOM not read')
     end subroutine test_utf8_bom
 
     !> A non-ASCII character in a card (not a comment) is an error naming its column.
@@ -974,7 +989,7 @@ contains
             call check(err, .not. allocated(perr), 'fuzz regression deck: a case refused')
             if (allocated(err)) return
         end do
-        call check(err, deck%base%nu_f == 0.5_dp, 'nu_f = 0.5 not read')
+        call check(err, deck%base%ground%nu_f == 0.5_dp, 'nu_f = 0.5 not read')
     end subroutine test_fuzz_regressions
 
     !> '#' or '!' in column 1: an unknown card with a hint on the comment marks.

@@ -74,7 +74,7 @@ contains
         if (allocated(err)) return
         call case_model(deck, 1, c%m, label, err)
         if (allocated(err)) return
-        if (ne > 0) c%m%ne = ne
+        if (ne > 0) c%m%mesh%ne = ne
         call solve_model(c, err)
     end subroutine solve_deck
 
@@ -94,13 +94,13 @@ contains
         type(load_t), intent(in) :: loads(:)
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_BEAM
+        m%structure%kind = MODEL_BEAM
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = 0.1_dp
-        m%beta_in = beta
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = beta
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = loads
         call complete_model(m)
     end function nondim_beam
@@ -111,13 +111,13 @@ contains
         type(load_t), intent(in) :: loads(:)
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_PLATE
+        m%structure%kind = MODEL_PLATE
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = zeta
-        m%nu_f = nu_f
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = zeta
+        m%ground%nu_f = nu_f
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = loads
         call complete_model(m)
     end function nondim_plate
@@ -139,7 +139,7 @@ contains
             do g = 1, 7
                 s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
                 wt = 0.5_dp*wg(g)*(hi - lo)
-                if (c%m%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*s
+                if (c%m%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*s
                 sig = traction_at(c%d, c%sol%z(c%d%nv + 1:), e, &
                                   2.0_dp*(s - lo)/(c%d%msh%x(e) - lo) - 1.0_dp)
                 total = total + wt*sig(k)
@@ -181,7 +181,8 @@ contains
         if (allocated(err)) return
         stations: do i = 1, c%tab%n
             x = c%tab%val(Q_X, i)
-            q_expect = traction_integral(c, 2, x) - 0.4_dp*min(max(x - 0.1_dp, 0.0_dp), 0.2_dp)/0.2_dp
+            q_expect = traction_integral(c, 2, x) - 0.4_dp*min(max(x - 0.1_dp, 0.0_dp), &
+                0.2_dp)/0.2_dp
             n_expect = traction_integral(c, 1, x)
             ! the point load is left of the section, or at it on the right-limit station
             if (x > -0.2_dp + 1.0e-12_dp .or. (abs(x + 0.2_dp) <= 1.0e-12_dp .and. &
@@ -206,11 +207,13 @@ contains
         type(case_t) :: c
         type(summary_t) :: s
         integer :: i
-        c%m = nondim_beam(0.05_dp, 0.05_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)], 20)
+        c%m = nondim_beam(0.05_dp, 0.05_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, &
+            x1=0.0_dp)], 20)
         call solve_model(c, err)
         if (allocated(err)) return
         i = minloc(abs(c%tab%val(Q_X, :)), dim=1)
-        call check(err, c%tab%val(Q_X, i + 1) == c%tab%val(Q_X, i), 'the load station is not doubled')
+        call check(err, c%tab%val(Q_X, i + 1) == c%tab%val(Q_X, i), &
+            'the load station is not doubled')
         if (allocated(err)) return
         call check_close(err, c%tab%val(Q_Q, i), 0.5_dp, 1.0e-9_dp, 0.0_dp, 'Q(0-)')
         if (allocated(err)) return
@@ -240,11 +243,11 @@ contains
         call solve_deck('input/strip_footing.dat', 0, c, err)
         if (allocated(err)) return
         x = c%tab%val(Q_X, :)
-        rhs = -c%tab%val(Q_Q, :) - 0.5_dp*c%m%h*c%tab%val(Q_SX_FE, :)
+        rhs = -c%tab%val(Q_Q, :) - 0.5_dp*c%m%structure%h*c%tab%val(Q_SX_FE, :)
         slope_max = 0.0_dp
         do i = 1, c%tab%n - 1
             if (x(i + 1) > x(i)) slope_max = max(slope_max, (abs(c%tab%val(Q_SZ_FE, i + 1) - &
-                c%tab%val(Q_SZ_FE, i)) + 0.5_dp*c%m%h*abs(c%tab%val(Q_SX_FE, i + 1) - &
+                c%tab%val(Q_SZ_FE, i)) + 0.5_dp*c%m%structure%h*abs(c%tab%val(Q_SX_FE, i + 1) - &
                 c%tab%val(Q_SX_FE, i)))/(x(i + 1) - x(i)))
         end do
         pairs: do i = 1, c%tab%n - 1
@@ -278,7 +281,8 @@ contains
             x = coarse%tab%val(Q_X, i)
             if (abs(abs(x) - 3.5_dp) < 0.3_dp) cycle stations   ! Q jumps inside the patches
             e = minloc(abs(0.5_dp*(fine%d%msh%x(1:) + fine%d%msh%x(:fine%d%msh%ne - 1)) - x), dim=1)
-            res = resultants(section_of(fine%m), displacement_at(fine%d, fine%sol%z(1:fine%d%nv), &
+            res = resultants(section_of(fine%m%structure), displacement_at(fine%d, &
+                fine%sol%z(1:fine%d%nv), &
                                                                  e, 0.0_dp))
             q_fine = res(3)
             call check(err, abs(q_fine - coarse%tab%val(Q_Q, i)) <= 2.0e-2_dp*q_max, &
@@ -299,19 +303,23 @@ contains
         call solve_deck('input/tank_raft.dat', 0, c, err)
         if (allocated(err)) return
         j = minloc(abs(c%tab%val(Q_X, :) - 7.5_dp), dim=1)
-        call check_close(err, c%tab%val(Q_Q, j) - c%tab%val(Q_Q, j + 1), 7069.0_dp/(2.0_dp*pi*7.5_dp), &
+        call check_close(err, c%tab%val(Q_Q, j) - c%tab%val(Q_Q, j + 1), &
+            7069.0_dp/(2.0_dp*pi*7.5_dp), &
                          1.0e-9_dp, 0.0_dp, 'jump of Q_r at the wall ring')
         if (allocated(err)) return
-        call check(err, c%tab%val(Q_Q, 1) == 0.0_dp .and. abs(c%tab%val(Q_Q, c%tab%n)) < 1.0e-6_dp, &
+        call check(err, c%tab%val(Q_Q, 1) == 0.0_dp .and. abs(c%tab%val(Q_Q, &
+            c%tab%n)) < 1.0e-6_dp, &
                    'Q_r(0) or Q_r(a) not zero')
         if (allocated(err)) return
-        call check_close(err, c%tab%val(Q_M, 1), c%tab%val(Q_MT, 1), 1.0e-12_dp, 0.0_dp, 'M_r(0) = M_t(0)')
+        call check_close(err, c%tab%val(Q_M, 1), c%tab%val(Q_MT, 1), 1.0e-12_dp, 0.0_dp, &
+            'M_r(0) = M_t(0)')
         if (allocated(err)) return
         stations: do i = 2, c%tab%n
             r = c%tab%val(Q_X, i)
             inside = 12064.0_dp*(r/8.0_dp)**2
             if (r > 7.5_dp .or. i > j) inside = inside + 7069.0_dp
-            call check_close(err, 2.0_dp*pi*r*c%tab%val(Q_Q, i), traction_integral(c, 2, r) - inside, &
+            call check_close(err, 2.0_dp*pi*r*c%tab%val(Q_Q, i), traction_integral(c, 2, &
+                r) - inside, &
                              0.0_dp, 1.0e-8_dp*19133.0_dp, '2 pi r Q_r by statics')
             if (allocated(err)) return
         end do stations
@@ -390,7 +398,8 @@ contains
         call check(err, count(lifted) >= 3, 'plate_nondim should lift off')
         if (allocated(err)) return
         call check(err, all(c%tab%val(Q_GAP, :) > 0.0_dp .or. .not. lifted) .and. &
-                   all(c%tab%val(Q_GAP, :) == 0.0_dp .or. lifted), 'gap: positive where lifted, 0 else')
+                   all(c%tab%val(Q_GAP, :) == 0.0_dp .or. lifted), &
+                       'gap: positive where lifted, 0 else')
         if (allocated(err)) return
         call check(err, all(c%tab%flag == 0) .and. &
                    all(c%tab%val(Q_SZ, :) >= -c%tab%tension_tol), 'tension or overlap at a station')
@@ -421,7 +430,8 @@ contains
         call solve_deck('input/strip_footing.dat', 0, c, err)
         if (allocated(err)) return
         call check(err, zigzag(c%tab%val(Q_SZ_FE, :)) > 2.0e-2_dp .and. &
-                   zigzag(c%tab%val(Q_SX_FE, :)) > 1.0e-1_dp, 'the FE tractions no longer oscillate')
+                   zigzag(c%tab%val(Q_SX_FE, :)) > 1.0e-1_dp, &
+                       'the FE tractions no longer oscillate')
         if (allocated(err)) return
         call check(err, zigzag(c%tab%val(Q_SZ, :)) < 5.0e-3_dp .and. &
                    zigzag(c%tab%val(Q_SX, :)) < 4.0e-2_dp, 'recovered tractions oscillate')
@@ -440,7 +450,8 @@ contains
             i = minloc(abs(c%tab%val(Q_X, :) - 3.0_dp), dim=1)     ! a node at every N_e
             p(k) = c%tab%val(Q_SZ, i)
         end do
-        call check(err, abs(p(3) - p(2)) < abs(p(2) - p(1)) .and. abs(p(4) - p(3)) < abs(p(3) - p(2)) &
+        call check(err, &
+            abs(p(3) - p(2)) < abs(p(2) - p(1)) .and. abs(p(4) - p(3)) < abs(p(3) - p(2)) &
                    .and. abs(p(4) - p(3)) < 1.0e-3_dp*p(4), 'recovered pressure does not converge')
     end subroutine test_recovery_converges
 
@@ -479,7 +490,8 @@ contains
         type(summary_t) :: s
         real(dp) :: covered
         integer :: k
-        c%m = nondim_beam(1.0_dp, 0.05_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.3_dp)], 40)
+        c%m = nondim_beam(1.0_dp, 0.05_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, &
+            x1=0.3_dp)], 40)
         call solve_model(c, err)
         if (allocated(err)) return
         s = summarise(c%m, c%sol, c%tab)
@@ -496,7 +508,8 @@ contains
         k = minloc(abs(c%tab%val(Q_X, :)), dim=1)
         call check(err, s%centre_defined .and. c%tab%val(Q_X, k) == 0.0_dp, 'no centre value')
         if (allocated(err)) return
-        call check_close(err, s%centre_pressure, c%tab%val(Q_SZ, k)/c%m%b, 1.0e-14_dp, 0.0_dp, &
+        call check_close(err, s%centre_pressure, c%tab%val(Q_SZ, k)/c%m%structure%b, 1.0e-14_dp, &
+            0.0_dp, &
                          'pressure_centre is the station value at x = 0')
     end subroutine test_summary_liftoff
 
@@ -576,7 +589,8 @@ contains
                    'the patch edge r = 0.4 should be a station and not a node')
         if (allocated(err)) return
         s = summarise(c%m, c%sol, c%tab)
-        call check(err, abs(s%q_abs_max%x - 0.4_dp) < 1.0e-12_dp, 'max |Q_r| not at the column face')
+        call check(err, abs(s%q_abs_max%x - 0.4_dp) < 1.0e-12_dp, &
+            'max |Q_r| not at the column face')
         if (allocated(err)) return
         call check_close(err, 2.0_dp*pi*0.4_dp*s%q_abs_max%value, &
                          traction_integral(c, 2, 0.4_dp) - 8000.0_dp, 0.0_dp, 1.0e-8_dp*8000.0_dp, &
@@ -613,7 +627,7 @@ contains
         call check(err, c%tab%state(1) == STATE_LIFTOFF .and. s%edge_point_in_contact(1), &
                    'beam: the left end should lift off and the point at d be in contact')
         if (allocated(err)) return
-        expect = station_interpolate(c%tab, Q_SZ, -6.0_dp + 0.8_dp)/c%m%b
+        expect = station_interpolate(c%tab, Q_SZ, -6.0_dp + 0.8_dp)/c%m%structure%b
         call check_close(err, s%edge_pressure(1), expect, 1.0e-12_dp, 0.0_dp, &
                          'beam: pressure at d from the left end')
         if (allocated(err)) return
@@ -650,7 +664,7 @@ contains
         call check(err, .not. s%mt_hog%defined .and. s%mt_sag%defined .and. s%m_hog%defined &
                    .and. s%m_sag%defined .and. s%m_hog%value > 0.0_dp, 'defined moment extremes')
         if (allocated(err)) return
-        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%length))
+        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%structure%length))
         do i = 1, size(e)
             if (index(e(i)%key, 'hoop_moment_hogging') == 1) &
                 call check(err, .not. e(i)%defined, trim(e(i)%key)//' should be n/a')
@@ -678,11 +692,12 @@ contains
         call solve_deck('input/plate_physical.dat', 0, c, err)
         if (allocated(err)) return
         every = c%m
-        every%stations = 0
+        every%output%stations = 0
         call tabulate(every, c%d, c%sol, nodes, err)
         if (allocated(err)) return
         hog_nodes = maxval(nodes%val(Q_M, :))
-        call check(err, c%m%stations == 21 .and. maxval(c%tab%val(Q_M, :)) < 0.99_dp*hog_nodes, &
+        call check(err, c%m%output%stations == 21 .and. maxval(c%tab%val(Q_M, &
+            :)) < 0.99_dp*hog_nodes, &
                    'plate_physical: the peak should lie between printed stations')
         if (allocated(err)) return
         call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
@@ -829,7 +844,7 @@ contains
         type(summary_t) :: s
         integer :: k
         s = summarise(c%m, c%sol, c%tab)
-        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%length))
+        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%structure%length))
         call estimate_errors(c%m, c%d, e, c%sol%coarse, s%edge_in_contact)
         i = 0
         do k = 1, size(e)

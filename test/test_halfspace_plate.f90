@@ -695,10 +695,10 @@ contains
                 variant = nondim_plate(0.01_dp, 0.1_dp, 0.3_dp, 0.5_dp, 24)   ! nu_f
             case (2)
                 variant = m
-                variant%grading = 'EDGES'
+                variant%mesh%grading = 'EDGES'
             case (3)
                 variant = m
-                variant%interp(FIELD_SZ) = INTERP_S2
+                variant%mesh%interp(FIELD_SZ) = INTERP_S2
             case (4)
                 variant = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.5_dp, 0.0_dp, 24)
             case (5)

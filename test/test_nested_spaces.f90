@@ -10,8 +10,8 @@ module test_nested_spaces
     use harness, only: unittest_t, new_unittest, error_t, check
     use model, only: model_t, load_t, MODEL_PLATE, MODEL_BEAM, LOAD_POINT, LOAD_RING, FIELD_SX, &
                      FIELD_SZ, complete_model
-    use discretization, only: discretization_t, new_discretization, discretise_mesh, &
-                              load_positions
+    use discretization, only: discretization_t, new_discretization, discretise_mesh
+    use applied_loads, only: load_positions
     use mesh, only: mesh_t
     use mesh_refinement, only: coarsened, pinned_nodes
     use halfspace_operator, only: assemble_flexibility
@@ -63,16 +63,16 @@ contains
         integer, intent(in) :: kind, family
         character(len=*), intent(in) :: grading
         type(model_t) :: m
-        m%kind = kind
+        m%structure%kind = kind
         m%nondim = .true.
-        m%rho_in = 0.01_dp
-        m%zeta_in = 0.1_dp
-        m%beta_in = 0.05_dp
-        m%nu_f = 0.1_dp
-        m%ne = 41
-        m%grading = grading
-        m%interp(FIELD_SX) = family
-        m%interp(FIELD_SZ) = family
+        m%groups%rho = 0.01_dp
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = 0.05_dp
+        m%ground%nu_f = 0.1_dp
+        m%mesh%ne = 41
+        m%mesh%grading = grading
+        m%mesh%interp(FIELD_SX) = family
+        m%mesh%interp(FIELD_SZ) = family
         if (kind == MODEL_PLATE) then
             m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
             if (grading == 'LOADS') m%loads = [load_t(kind=LOAD_RING, fz=1.0_dp, x1=0.37_dp), &
@@ -98,7 +98,7 @@ contains
         call new_discretization(m, d, run_err)
         if (.not. allocated(run_err)) call assemble_flexibility(m, d, t_f, run_err)
         if (.not. allocated(run_err)) then
-            call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m)), coarse, pinned_c)
+            call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m%loads)), coarse, pinned_c)
             call discretise_mesh(m, coarse, dc)
             call assemble_flexibility(m, dc, t_direct, run_err)
         end if
@@ -106,8 +106,10 @@ contains
         call check(err, .not. allocated(run_err), 'assembly or restriction failed')
         if (allocated(err)) return
         diff = maxval(abs(t_c - t_direct))/maxval(abs(t_direct))
-        write (text, '(a,a,i0,a,i0,a,es9.2)') trim(merge('PLATE', 'BEAM ', m%kind == MODEL_PLATE)) &
-            //' '//trim(interp_name(m%interp(FIELD_SZ)))//' '//trim(m%grading), ', N_e ', &
+        write (text, '(a,a,i0,a,i0,a,es9.2)') trim(merge('PLATE', 'BEAM ', &
+            m%structure%kind == MODEL_PLATE)) &
+            //' '//trim(interp_name(m%mesh%interp(FIELD_SZ)))//' '//trim(m%mesh%grading), &
+                ', N_e ', &
             d%msh%ne, ' -> ', dc%msh%ne, ': max |P^T T P - T_c| / max |T_c| = ', diff
         write (*, '(4x,a)') trim(text)
         call check(err, size(t_c, 1) == dc%nr .and. diff <= 1.0e-13_dp, trim(text))

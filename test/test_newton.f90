@@ -80,8 +80,8 @@ contains
             return
         end if
         eq_tol = 1.0e-8_dp
-        v = total_vertical_load(m)
-        scale = v*[1.0_dp, 1.0_dp, m%length]
+        v = total_vertical_load(m%loads)
+        scale = v*[1.0_dp, 1.0_dp, m%structure%length]
         call check(err, all(abs(sol%reaction - sol%applied) <= eq_tol*scale), &
                    what//': reactions do not balance the loads')
         if (allocated(err)) return
@@ -91,13 +91,17 @@ contains
         ! scale of a gap: the settlements (a tensile Gauss point may sit where every station
         ! is still in contact, whose reported gap is 0)
         gap = max(maxval(abs(tab%val(Q_GAP, :))), maxval(abs(tab%val(Q_W, :))))
-        call check(err, -sol%min_sigma_z <= 10.0_dp*m%eta_bar/friction_compliance(m)*gap, &
+        call check(err, &
+            -sol%min_sigma_z <= 10.0_dp*m%interface%eta_bar/friction_compliance(m%structure, &
+                m%ground)*gap, &
                    what//': complementarity violated (tension beyond the penalty law)')
         if (allocated(err)) return
         p_max = maxval(nd_all(m, tab, 'Sigma_z^h'))
-        slip_law = m%eps_bar/(1.0_dp - m%eps_bar**2)*maxval(abs(tab%val(Q_SLIP, :))) &
-                   /friction_compliance(m)*nd(m, tab, 'Sigma_z', 0)
-        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', 0) <= max(1.0e3_dp*m%eps_bar &
+        slip_law = m%interface%eps_bar/(1.0_dp - m%interface%eps_bar**2) &
+            *maxval(abs(tab%val(Q_SLIP, :))) &
+                   /friction_compliance(m%structure, m%ground)*nd(m, tab, 'Sigma_z', 0)
+        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', &
+            0) <= max(1.0e3_dp*m%interface%eps_bar &
                    *max(1.0_dp, p_max), 10.0_dp*slip_law), what//': friction not admissible')
         if (present(sol_out)) sol_out = sol
         if (present(tab_out)) tab_out = tab
@@ -131,9 +135,9 @@ contains
         if (allocated(err)) return
         call case_model(deck, 1, m, label, err)
         if (allocated(err)) return
-        m%grading = 'EDGES'
+        m%mesh%grading = 'EDGES'
         meshes_loop: do k = 1, size(meshes)
-            m%ne = meshes(k)
+            m%mesh%ne = meshes(k)
             write (what, '(a,i0)') 'beam_physical.dat EDGES N_e = ', meshes(k)
             call require_solved(m, trim(what), err)
             if (allocated(err)) return
@@ -150,7 +154,7 @@ contains
         integer :: k
         meshes_loop: do k = 1, size(meshes)
             m = nondim_plate(1.0e-3_dp, 0.1_dp, 0.1_dp, 0.6_dp, meshes(k))
-            m%interp = INTERP_P2
+            m%mesh%interp = INTERP_P2
             write (what, '(a,i0)') 'P2 plate N_e = ', meshes(k)
             call require_solved(m, trim(what), err)
             if (allocated(err)) return
@@ -173,14 +177,14 @@ contains
         frictions: do i = 1, size(fs)
             meshes_loop: do k = 1, size(meshes)
                 m = model_t()
-                m%kind = MODEL_PLATE
+                m%structure%kind = MODEL_PLATE
                 m%nondim = .true.
-                m%rho_in = 1.0e-6_dp
-                m%zeta_in = 0.1_dp
-                m%nu = 0.3_dp
-                m%nu_f = 0.1_dp
-                m%f = fs(i)
-                m%ne = meshes(k)
+                m%groups%rho = 1.0e-6_dp
+                m%groups%zeta = 0.1_dp
+                m%structure%nu = 0.3_dp
+                m%ground%nu_f = 0.1_dp
+                m%interface%f = fs(i)
+                m%mesh%ne = meshes(k)
                 m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.1_dp)]
                 call complete_model(m)
                 write (what, '(a,f3.1,a,i0)') 'soft plate, disk load, f ', fs(i), &
@@ -207,7 +211,7 @@ contains
         call centre_settlement(m, w_ref, err)
         if (allocated(err)) return
         m = nondim_beam(1.0e-3_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.1_dp, 40)
-        m%interp(FIELD_U:FIELD_SZ) = INTERP_S2
+        m%mesh%interp(FIELD_U:FIELD_SZ) = INTERP_S2
         call centre_settlement(m, w_s2, err)
         if (allocated(err)) return
         call check(err, abs(w_s2/w_ref - 1.0_dp) <= 2.0e-4_dp, &
@@ -290,8 +294,8 @@ contains
                         else
                             m = nondim_plate(rhos(i), zetas(j), 0.1_dp, 0.6_dp, 40)
                         end if
-                        m%method = method
-                        if (i == j) m%interp(FIELD_U:FIELD_SZ) = INTERP_S2
+                        m%solver%method = method
+                        if (i == j) m%mesh%interp(FIELD_U:FIELD_SZ) = INTERP_S2
                         write (what, '(a,2(a,es8.1),a,i0)') merge('beam ', 'plate', &
                             kind == MODEL_BEAM), ' rho', rhos(i), ' zeta', zetas(j), &
                             ' method ', method
@@ -324,7 +328,7 @@ contains
         integer :: k
         cases(1) = nondim_plate(1.0e6_dp, 1.0e-3_dp, 0.1_dp, 0.6_dp, 160)
         cases(2) = cases(1)
-        cases(2)%interp(FIELD_U:FIELD_SZ) = INTERP_P2
+        cases(2)%mesh%interp(FIELD_U:FIELD_SZ) = INTERP_P2
         cases(3) = nondim_beam(1.0e6_dp, 1.0e-3_dp, 0.05_dp, 0.6_dp, 0.1_dp, 160)
         cases_loop: do k = 1, size(cases)
             call require_solved(cases(k), names(k)//' N_e 160', err, sol)
@@ -348,7 +352,7 @@ contains
         cases(2) = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.3_dp, 40)
         cases(3) = nondim_beam(1.0e-5_dp, 0.2_dp, 0.05_dp, 0.6_dp, 0.1_dp, 30)
         cases_loop: do k = 1, size(cases)
-            cases(k)%method = METHOD_NEWTON
+            cases(k)%solver%method = METHOD_NEWTON
             call require_solved(cases(k), 'agreement case, Newton', err, newton)
             if (allocated(err)) return
             call require_two_loop_agrees(cases(k), newton, 'agreement case', err)
@@ -369,10 +373,10 @@ contains
         type(discretization_t) :: d
         real(dp) :: diff(2)
         mt = m
-        mt%method = METHOD_TWOLOOP
-        mt%tol_outer = 1.0e-13_dp
-        mt%tol_inner = 1.0e-13_dp
-        mt%max_outer = 1000
+        mt%solver%method = METHOD_TWOLOOP
+        mt%solver%tol_outer = 1.0e-13_dp
+        mt%solver%tol_inner = 1.0e-13_dp
+        mt%solver%max_outer = 1000
         call require_solved(mt, what//', two-loop', err, two_loop)
         if (allocated(err)) return
         call new_discretization(mt, d, err)
@@ -402,7 +406,7 @@ contains
         if (allocated(err)) return
         call case_model(deck, 5, m, label, err)
         if (allocated(err)) return
-        m%method = METHOD_NEWTON
+        m%solver%method = METHOD_NEWTON
         call require_solved(m, 'fig07_ref case 5', err)
         if (allocated(err)) return
         call new_discretization(m, d, err)
@@ -432,7 +436,7 @@ contains
         if (allocated(err)) return
         call case_model(deck, 3, m, label, err)
         if (allocated(err)) return
-        m%method = METHOD_NEWTON
+        m%solver%method = METHOD_NEWTON
         call require_solved(m, 'fig07_s2 case 3, Newton', err, newton)
         if (allocated(err)) return
         call check(err, newton%n_outer == 1, 'fig07_s2 case 3: the plain Newton stage '// &
@@ -565,7 +569,8 @@ contains
         ! the third alone: its forward substitution starts at its only nonzero, row n
         xt(1:1, :) = transpose(b(:, 3:3))
         call band_cholesky_solve_rows(factor, kd, xt(1:1, :))
-        call check(err, maxval(abs(xt(1, :) - x_ref(:, 3))) <= 1.0e-14_dp*maxval(abs(x_ref(:, 3))), &
+        call check(err, maxval(abs(xt(1, :) - x_ref(:, 3))) <= 1.0e-14_dp*maxval(abs(x_ref(:, &
+            3))), &
                    'band_cholesky_solve_rows from its first nonzero row differs from dpbtrs')
         if (allocated(err)) return
         do c = 1, nrhs

@@ -45,13 +45,13 @@ contains
         integer, intent(in) :: ne
         type(load_t), intent(in) :: loads(:)
         type(model_t) :: m
-        m%kind = MODEL_BEAM
+        m%structure%kind = MODEL_BEAM
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = 0.1_dp
-        m%beta_in = 0.05_dp
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = 0.05_dp
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = loads
         call complete_model(m)
     end function beam
@@ -61,12 +61,12 @@ contains
         real(dp), intent(in) :: rho, f
         integer, intent(in) :: ne
         type(model_t) :: m
-        m%kind = MODEL_PLATE
+        m%structure%kind = MODEL_PLATE
         m%nondim = .true.
-        m%rho_in = rho
-        m%zeta_in = 0.1_dp
-        m%f = f
-        m%ne = ne
+        m%groups%rho = rho
+        m%groups%zeta = 0.1_dp
+        m%interface%f = f
+        m%mesh%ne = ne
         m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
         call complete_model(m)
     end function plate
@@ -91,7 +91,7 @@ contains
         call stations(m, tab_s, red, err)
         if (allocated(err)) return
         full = m
-        full%simplify = .false.
+        full%solver%simplify = .false.
         call stations(full, tab_f, red, err)
         if (allocated(err)) return
         red = plan_reduction(m, discretised(m))
@@ -166,11 +166,11 @@ contains
         m = beam(0.001_dp, 0.3_dp, 40, [load_t(kind=LOAD_POINT, fz=0.4_dp, x1=-0.3_dp), &
                  load_t(kind=LOAD_PATCH, fz=0.2_dp, x1=-0.1_dp, x2=0.1_dp), &
                  load_t(kind=LOAD_POINT, fz=0.4_dp, x1=0.3_dp)])
-        m%interp = INTERP_P2
-        m%grading = 'EDGES'
+        m%mesh%interp = INTERP_P2
+        m%mesh%grading = 'EDGES'
         call require_half(m, 'P2 EDGES, three loads', err)
         if (allocated(err)) return
-        m%grading = 'LOADS'
+        m%mesh%grading = 'LOADS'
         call require_half(m, 'P2 LOADS, three loads', err)
     end subroutine test_half_p2
 
@@ -179,7 +179,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m
         m = beam(0.01_dp, 0.6_dp, 40, [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)])
-        m%interp = INTERP_S2
+        m%mesh%interp = INTERP_S2
         call require_half(m, 'S2 uniform, central load', err)
     end subroutine test_half_s2
 
@@ -224,11 +224,12 @@ contains
         integer :: i
         m = m_in
         do i = 1, 2
-            m%eps_bar = eps(i)
+            m%interface%eps_bar = eps(i)
             call compare(m, diff(i), red, err)
             if (allocated(err)) return
         end do
-        write (*, '(3x,a,2es9.2,a,i0,a,i0)') what//': frictionless vs full, eps_bar 1e-6, 1e-8: '// &
+        write (*, '(3x,a,2es9.2,a,i0,a,i0)') what// &
+            ': frictionless vs full, eps_bar 1e-6, 1e-8: '// &
             'max rel. diff ', diff, ', unknowns ', red%n_reduced, ' of ', red%n_full
         call check(err, red%frictionless, what//': sigma_x not dropped')
         if (allocated(err)) return
@@ -261,7 +262,7 @@ contains
                    index(text, 'saved 60.0% of the unknowns (82 of 205 solved)') > 0, &
                    'symmetric frictionless beam: '//text)
         if (allocated(err)) return
-        m%simplify = .false.
+        m%solver%simplify = .false.
         text = simplification_text(m, discretised(m))
         call check(err, text == 'simplifications used: none (full model)', 'switched off: '//text)
     end subroutine test_report_line
@@ -278,7 +279,7 @@ contains
         real(dp) :: diff
         m = plate(0.01_dp, 0.5_dp, 200)
         full = m
-        full%simplify = .false.
+        full%solver%simplify = .false.
         call new_discretization(m, d, err)
         if (allocated(err)) return
         call solve_contact(m, d, sol_s, err)

@@ -29,18 +29,18 @@ contains
         integer, intent(in) :: kind, ne, interp
         real(dp), intent(in) :: h
         type(model_t) :: m
-        m%kind = kind
-        m%e = 1000.0_dp
-        m%nu = 0.3_dp
-        m%h = h
-        m%ne = ne
-        m%interp = interp
+        m%structure%kind = kind
+        m%structure%e = 1000.0_dp
+        m%structure%nu = 0.3_dp
+        m%structure%h = h
+        m%mesh%ne = ne
+        m%mesh%interp = interp
         if (kind == MODEL_BEAM) then
-            m%length = 2.0_dp
-            m%b = 0.5_dp
+            m%structure%length = 2.0_dp
+            m%structure%b = 0.5_dp
             m%loads = [load_t(kind=LOAD_PATCH, fz=2.0_dp, x1=-1.0_dp, x2=1.0_dp)] ! q = 1 per length
         else
-            m%length = 1.0_dp
+            m%structure%length = 1.0_dp
             m%loads = [load_t(kind=LOAD_PATCH, fz=pi, x1=0.0_dp, x2=1.0_dp)]      ! p = 1
         end if
     end function loaded_model
@@ -55,7 +55,7 @@ contains
         real(dp), allocatable :: k(:, :), q(:)
         integer :: i
         allocate (k(d%nv, d%nv), q(d%nv), v(d%nv))
-        call assemble_stiffness(section_of(m), d, k)
+        call assemble_stiffness(section_of(m%structure), d, k)
         call assemble_loads(m, d, q, err)
         if (allocated(err)) return
         do i = 1, size(fixed)
@@ -74,12 +74,12 @@ contains
         real(dp), allocatable :: k(:, :), mode(:)
         integer :: imode, j
         m = loaded_model(MODEL_BEAM, 0.3_dp, 7, INTERP_P1)
-        m%interp(FIELD_W) = INTERP_P2
-        m%interp(FIELD_PSI) = INTERP_S2
+        m%mesh%interp(FIELD_W) = INTERP_P2
+        m%mesh%interp(FIELD_PSI) = INTERP_S2
         call new_discretization(m, d, err)
         if (allocated(err)) return
         allocate (k(d%nv, d%nv), mode(d%nv))
-        call assemble_stiffness(section_of(m), d, k)
+        call assemble_stiffness(section_of(m%structure), d, k)
         ! physical law: a free beam stores no energy in u = 1, w = 1, or (w = x, psi = 1)
         do imode = 1, 3
             mode = 0.0_dp
@@ -132,7 +132,7 @@ contains
         call solve_supported(m, d, [d%offset(FIELD_U) + 1, d%offset(FIELD_W) + 1, &
                                     d%offset(FIELD_PSI)], v, err)
         if (allocated(err)) return
-        sec = section_of(m)
+        sec = section_of(m%structure)
         exact = 5.0_dp*16.0_dp/(384.0_dp*sec%bending) + 4.0_dp/(8.0_dp*sec%shear)
         w_mid = middle_value(d, v, FIELD_W)
         call check_close(err, w_mid, exact, rtol, 0.0_dp, 'simply supported beam w(0)')
@@ -189,7 +189,7 @@ contains
         m = loaded_model(MODEL_PLATE, h, ne, interp)
         call new_discretization(m, d, err)
         if (allocated(err)) return
-        sec = section_of(m)
+        sec = section_of(m%structure)
         axis = [d%offset(FIELD_U) + 1, d%offset(FIELD_PSI) + 1]   ! u_s(0) = psi(0) = 0
         if (clamped) then
             call solve_supported(m, d, [axis, d%offset(FIELD_W), d%offset(FIELD_PSI), d%nv], &
@@ -197,7 +197,7 @@ contains
             exact = 1.0_dp/(64.0_dp*sec%bending) + 1.0_dp/(4.0_dp*sec%shear)
         else
             call solve_supported(m, d, [axis, d%offset(FIELD_PSI)], v, err)
-            exact = (5.0_dp + m%nu)/((1.0_dp + m%nu)*64.0_dp*sec%bending) &
+            exact = (5.0_dp + m%structure%nu)/((1.0_dp + m%structure%nu)*64.0_dp*sec%bending) &
                     + 1.0_dp/(4.0_dp*sec%shear)
         end if
         if (allocated(err)) return

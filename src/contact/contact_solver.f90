@@ -24,7 +24,8 @@ module contact_solver
     use model, only: model_t, METHOD_TWOLOOP
     use iso_fortran_env, only: int64
     use kinds, only: dp
-    use discretization, only: discretization_t, discretise_mesh, load_positions, &
+    use applied_loads, only: load_positions
+    use discretization, only: discretization_t, discretise_mesh, &
                               locate_element
     use mesh, only: mesh_t
     use mesh_refinement, only: coarsened, pinned_nodes
@@ -95,7 +96,7 @@ contains
             return
         end if
         call use_rigid_coordinates(sys)
-        if (m%method == METHOD_TWOLOOP) then
+        if (m%solver%method == METHOD_TWOLOOP) then
             call solve_two_loop(m, d, sys, sol, err)
         else
             call solve_newton(m, d, sys, sol, err, sigma_start)
@@ -164,8 +165,8 @@ contains
         type(mesh_t) :: coarse
         logical, allocatable :: pinned_c(:)
         nest = .false.
-        if (m%method == METHOD_TWOLOOP .or. d%msh%ne <= nested_from) return
-        call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m)), coarse, pinned_c)
+        if (m%solver%method == METHOD_TWOLOOP .or. d%msh%ne <= nested_from) return
+        call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m%loads)), coarse, pinned_c)
         if (coarse%ne >= d%msh%ne) return
         call discretise_mesh(m, coarse, dc)
         nest = .true.
@@ -205,7 +206,7 @@ contains
         type(model_t), intent(in) :: m
         type(solution_t), intent(inout) :: sol
         sol%sigma = point_tractions(sol%pts, sol%z)
-        sol%tau0 = friction_threshold(m%f, sol%sigma(2, :))
+        sol%tau0 = friction_threshold(m%interface%f, sol%sigma(2, :))
         sol%state = contact_state(sol%sigma(1, :), sol%sigma(2, :), sol%tau0)
         sol%slip = is_slipping(sol%sigma(1, :), sol%tau0)
         sol%tension = in_tension(sol%sigma(2, :))

@@ -190,19 +190,19 @@ contains
         allocate (sys%q(d%nv))
         call assemble_loads(m, d, sys%q, err)
         if (allocated(err)) return
-        sys%c = friction_compliance(m)
-        sys%law = new_law(m, sys%c, m%eps_bar, m%eta_bar)
+        sys%c = friction_compliance(m%structure, m%ground)
+        sys%law = new_law(m, sys%c, m%interface%eps_bar, m%interface%eta_bar)
         sys%rigid = rigid_modes(m, d)
-        sys%kappa = (1.0_dp - m%eps_bar**2)/m%eps_bar
+        sys%kappa = (1.0_dp - m%interface%eps_bar**2)/m%interface%eps_bar
         sys%penalty = sys%law%penalty
         ! B0 = -(T + c eps S0): S0 the stick branch of the law, everywhere
         t_mat = -t_mat
         do i = 1, pts%n
-            call add_point_mass(pts, i, 1, -sys%c*m%eps_bar, t_mat, d%nv)
+            call add_point_mass(pts, i, 1, -sys%c*m%interface%eps_bar, t_mat, d%nv)
         end do
         call pack_lower(t_mat, b0)
         deallocate (t_mat)
-        call set_base_matrix(sys, d%nv, stiffness_entries(section_of(m), d), &
+        call set_base_matrix(sys, d%nv, stiffness_entries(section_of(m%structure), d), &
                              coupling_entries(m, d), b0)
         sys%row_scale = diagonal_scaling(a0_diagonal(sys))
     end subroutine build_system
@@ -237,7 +237,7 @@ contains
         type(rigid_t) :: rb
         integer :: w_range(2), u_range(2), psi_range(2)
         w_range = [d%offset(FIELD_W) + 1, d%offset(FIELD_W) + d%basis(FIELD_W)%n_dof]
-        if (m%kind /= MODEL_BEAM) then
+        if (m%structure%kind /= MODEL_BEAM) then
             rb = new_rigid(d%nv, reshape(w_range, [2, 1]), [0, 0])
             return
         end if
@@ -351,7 +351,7 @@ contains
         real(dp), intent(in) :: eps    !! eps_bar of the friction law
         real(dp), intent(in) :: eta    !! eta_bar of the penalty
         type(law_t) :: law
-        law%f = m%f
+        law%f = m%interface%f
         law%eps = eps
         law%slip = c*(1.0_dp - eps**2)/eps
         law%penalty = c/eta
@@ -399,7 +399,7 @@ contains
                 pts%xi(p) = xg(g)
                 pts%x(p) = d%msh%x(e - 1) + 0.5_dp*(xg(g) + 1.0_dp)*h
                 pts%wt(p) = 0.5_dp*wg(g)*h
-                if (m%kind /= MODEL_BEAM) pts%wt(p) = pts%wt(p)*2.0_dp*pi*pts%x(p)
+                if (m%structure%kind /= MODEL_BEAM) pts%wt(p) = pts%wt(p)*2.0_dp*pi*pts%x(p)
             end do gauss_points
         end do elements
         call tabulate_basis(d, pts)

@@ -56,11 +56,11 @@ contains
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(reduction_t) :: red
-        if (m%simplify .and. m%method == METHOD_NEWTON) then
-            red%frictionless = m%f == 0.0_dp
-            red%half = m%kind == MODEL_BEAM .and. symmetric_loads(m) &
-                       .and. symmetric_mesh(d%msh, m%length)
-            red%mean_shear = red%frictionless .and. m%kind == MODEL_BEAM .and. .not. red%half
+        if (m%solver%simplify .and. m%solver%method == METHOD_NEWTON) then
+            red%frictionless = m%interface%f == 0.0_dp
+            red%half = m%structure%kind == MODEL_BEAM .and. symmetric_loads(m) &
+                       .and. symmetric_mesh(d%msh, m%structure%length)
+            red%mean_shear = red%frictionless .and. m%structure%kind == MODEL_BEAM .and. .not. red%half
         end if
         call build_map(d, red)
     end function plan_reduction
@@ -122,7 +122,7 @@ contains
         if (.not. allocated(m%loads)) return
         if (size(m%loads) == 0) return
         if (any(m%loads%fx /= 0.0_dp) .or. any(m%loads%kind == LOAD_MOMENT)) return
-        tol = symmetry_tol*m%length
+        tol = symmetry_tol*m%structure%length
         allocate (used(size(m%loads)), source=.false.)
         loads: do i = 1, size(m%loads)
             if (used(i)) cycle loads

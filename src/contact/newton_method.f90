@@ -112,7 +112,7 @@ contains
         logical :: converged
         sol%method = 'NEWTON'
         call new_schur(d, sys, ls%sc)
-        ls%sc%decouple = m%simplify
+        ls%sc%decouple = m%solver%simplify
         if (allocated(sigma_start)) then
             call set_terms(sys, sys%law, sol%pts, sigma_start, st)
             call log_note(sol, 'start: sets of the nested coarser mesh')
@@ -127,7 +127,7 @@ contains
         call solve_for_sets(d, sys, ls, st, settled, sol, err)
         if (allocated(err)) return
         z_start = sol%z
-        call newton_stage(d, sys, ls, sys%law, 1, min(plain_limit, m%max_inner), &
+        call newton_stage(d, sys, ls, sys%law, 1, min(plain_limit, m%solver%max_inner), &
                           .false., sol, converged, err)
         if (allocated(err)) return
         if (.not. converged) then
@@ -232,7 +232,7 @@ contains
         integer :: stage, solves_before
         logical :: converged
         character(len=200) :: text
-        level = max(top_level, log10(1.0e-3_dp/m%eps_bar))
+        level = max(top_level, log10(1.0e-3_dp/m%interface%eps_bar))
         good_level = huge(1.0_dp)
         step = 1.0_dp
         z_good = sol%z
@@ -240,7 +240,7 @@ contains
         stages: do
             stage = stage + 1
             solves_before = sol%n_solves
-            call newton_stage(d, sys, ls, stage_law(m, sys, level), stage, m%max_inner, &
+            call newton_stage(d, sys, ls, stage_law(m, sys, level), stage, m%solver%max_inner, &
                               .true., sol, converged, err)
             if (allocated(err)) return
             if (converged) then
@@ -251,7 +251,7 @@ contains
                     step = min(2.0_dp*step, max_decrement)
                 level = max(level - step, 0.0_dp)
             else if (good_level == huge(1.0_dp)) then
-                if (m%eps_bar*10.0_dp**level >= 0.5_dp) exit stages
+                if (m%interface%eps_bar*10.0_dp**level >= 0.5_dp) exit stages
                 level = level + 2.0_dp
                 sol%z = z_good
             else
@@ -274,8 +274,8 @@ contains
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: level
         type(law_t) :: law
-        law = new_law(m, sys%c, min(m%eps_bar*10.0_dp**level, 0.5_dp), &
-                      m%eta_bar*10.0_dp**min(level, top_level))
+        law = new_law(m, sys%c, min(m%interface%eps_bar*10.0_dp**level, 0.5_dp), &
+                      m%interface%eta_bar*10.0_dp**min(level, top_level))
     end function stage_law
 
     !> Newton iterations for one law from sol%z; converged tells whether it stopped on a

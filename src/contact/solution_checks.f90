@@ -26,7 +26,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp) :: v, h_total, arm
         character(len=240) :: text
-        v = total_vertical_load(m)
+        v = total_vertical_load(m%loads)
         if (.not. v > 0.0_dp) then
             write (text, '(a,es12.4,a)') 'no equilibrium: the net vertical load (', v, &
                 ') is not downward and the soil takes no tension (uplift)'
@@ -34,19 +34,20 @@ contains
             return
         end if
         h_total = sum(m%loads%fx)
-        if (abs(h_total) > m%f*v) then
-            write (text, '(a,es12.4,a,es12.4,a)') 'no equilibrium: sliding - the horizontal load H =', &
-                h_total, ' exceeds the friction capacity f*V =', m%f*v, &
+        if (abs(h_total) > m%interface%f*v) then
+            write (text, &
+                '(a,es12.4,a,es12.4,a)') 'no equilibrium: sliding - the horizontal load H =', &
+                h_total, ' exceeds the friction capacity f*V =', m%interface%f*v, &
                 ' (utilisation H/(fV) > 1)'
             call new_error(err, EXIT_ANALYSIS, trim(text))
             return
         end if
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             arm = applied_moment(m)/v
-            if (abs(arm) >= 0.5_dp*m%length) then
+            if (abs(arm) >= 0.5_dp*m%structure%length) then
                 write (text, '(a,es12.4,a,es12.4,a)') 'no equilibrium: overturning - the load '// &
                     'resultant acts at x =', arm, ', outside the base (|x| < ', &
-                    0.5_dp*m%length, ')'
+                    0.5_dp*m%structure%length, ')'
                 call new_error(err, EXIT_ANALYSIS, trim(text))
             end if
         end if
@@ -64,9 +65,10 @@ contains
                 if (ld%kind == LOAD_MOMENT) then
                     applied_moment = applied_moment + ld%fz
                 else if (ld%kind == LOAD_PATCH) then
-                    applied_moment = applied_moment + ld%fz*0.5_dp*(ld%x1 + ld%x2) + m%h*ld%fx
+                    applied_moment = applied_moment + ld%fz*0.5_dp*(ld%x1 + ld%x2) &
+                        + m%structure%h*ld%fx
                 else
-                    applied_moment = applied_moment + ld%fz*ld%x1 + m%h*ld%fx
+                    applied_moment = applied_moment + ld%fz*ld%x1 + m%structure%h*ld%fx
                 end if
             end associate
         end do
@@ -100,19 +102,20 @@ contains
             sol%reaction(2) = sol%reaction(2) + sol%pts%wt(p)*sol%sigma(1, p)
             sol%reaction(3) = sol%reaction(3) + sol%pts%wt(p)*sol%sigma(2, p)*sol%pts%x(p)
         end do
-        sol%applied(1) = total_vertical_load(m)
+        sol%applied(1) = total_vertical_load(m%loads)
         sol%applied(2) = sum(m%loads%fx)
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             sol%applied(3) = applied_moment(m)
             ! reaction moment about the mid-plane: int sigma_z x - (h/2) int sigma_x
-            sol%reaction(3) = sol%reaction(3) - 0.5_dp*m%h*sol%reaction(2)
-            sol%applied(3) = sol%applied(3) - 0.5_dp*m%h*sol%applied(2)
+            sol%reaction(3) = sol%reaction(3) - 0.5_dp*m%structure%h*sol%reaction(2)
+            sol%applied(3) = sol%applied(3) - 0.5_dp*m%structure%h*sol%applied(2)
         else
             ! radial shear is self-equilibrated by symmetry: no horizontal or moment balance
             sol%reaction(2:3) = 0.0_dp
             sol%applied(2:3) = 0.0_dp
         end if
-        sol%admissibility = maxval(abs(sol%sigma(1, :)) - m%f*max(sol%sigma(2, :), 0.0_dp))
+        sol%admissibility = maxval(abs(sol%sigma(1, :)) - m%interface%f*max(sol%sigma(2, :), &
+            0.0_dp))
         sol%min_sigma_z = minval(sol%sigma(2, :))
         if (.not. all(sol%z == sol%z)) then
             call new_error(err, EXIT_ANALYSIS, 'the solution contains NaN')
@@ -153,7 +156,7 @@ contains
         real(dp), parameter :: limit = check_limit
         real(dp) :: scale(3), equilibrium
         character(len=300) :: text
-        scale = total_vertical_load(m)*[1.0_dp, 1.0_dp, m%length]
+        scale = total_vertical_load(m%loads)*[1.0_dp, 1.0_dp, m%structure%length]
         equilibrium = maxval(abs(sol%reaction - sol%applied)/scale)
         if (.not. sol%law_residual <= limit) then
             write (text, '(a,a,a,es9.2,a)') 'the ', trim(sol%method), ' solution fails the '// &

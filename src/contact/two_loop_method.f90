@@ -60,7 +60,7 @@ contains
         omega = 1.0_dp
         incr = huge(1.0_dp)
         incr_prev = huge(1.0_dp)
-        outer_loop: do outer = 1, m%max_outer
+        outer_loop: do outer = 1, m%solver%max_outer
             z_prev = sol%z
             state_prev = sol%state
             slip_prev = sol%slip
@@ -81,11 +81,11 @@ contains
             end if
             if (allocated(err)) return
             sol%n_outer = outer
-            tau_new = friction_threshold(m%f, sol%sigma(2, :))
+            tau_new = friction_threshold(m%interface%f, sol%sigma(2, :))
             if (outer > 1) then
                 incr = relative_change(d, sol%z, z_prev)
                 call log_outer(sol, outer, incr, omega)
-                if (incr <= m%tol_outer) return
+                if (incr <= m%solver%tol_outer) return
                 ! under-relax while the increments grow, relax back while they shrink fast
                 if (incr >= incr_prev) then
                     omega = max(0.0625_dp, 0.5_dp*omega)
@@ -101,7 +101,8 @@ contains
             call classify(d, sol)
         end do outer_loop
         write (text, '(a,i0,a,es10.3,a,es10.3)') 'friction (outer) loop did not converge in ', &
-            m%max_outer, ' iterations: last relative change ', incr, ' > tol ', m%tol_outer
+            m%solver%max_outer, ' iterations: last relative change ', incr, ' > tol ', &
+                m%solver%tol_outer
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine friction_loop
 
@@ -109,15 +110,15 @@ contains
     pure real(dp) function start_threshold(m) result(tau)
         type(model_t), intent(in) :: m
         real(dp) :: mean_pressure
-        if (m%kind == MODEL_BEAM) then
-            mean_pressure = total_vertical_load(m)/m%length
+        if (m%structure%kind == MODEL_BEAM) then
+            mean_pressure = total_vertical_load(m%loads)/m%structure%length
         else
-            mean_pressure = total_vertical_load(m)/(pi*m%length**2)
+            mean_pressure = total_vertical_load(m%loads)/(pi*m%structure%length**2)
         end if
-        if (m%tau0_start >= 0.0_dp) then
-            tau = m%tau0_start*mean_pressure
+        if (m%solver%tau0_start >= 0.0_dp) then
+            tau = m%solver%tau0_start*mean_pressure
         else
-            tau = m%f*mean_pressure
+            tau = m%interface%f*mean_pressure
         end if
     end function start_threshold
 
@@ -145,7 +146,7 @@ contains
 
         allocate (z_new(d%n), seen(sol%pts%n, memory))
         n_changed = 0
-        inner_loop: do inner = 1, m%max_inner
+        inner_loop: do inner = 1, m%solver%max_inner
             code = set_code(sol)
             seen(:, mod(inner - 1, memory) + 1) = code
             n_seen = min(inner, memory)
@@ -154,12 +155,13 @@ contains
             call solve_with_sets(d, sys, sol, z_new, err)
             if (allocated(err)) return
             z_base = sol%z
-            if (inner > 1 .and. relative_change(d, z_new, z_base) <= m%tol_inner) then
+            if (inner > 1 .and. relative_change(d, z_new, z_base) <= m%solver%tol_inner) then
                 ! the Newton point of the current sets is the current iterate (within tol):
                 ! any set still changing sits exactly at its threshold
                 sol%z = z_new
                 call classify(d, sol)
-                call log_inner(d, sys, sol, outer, inner, 0, relative_change(d, z_new, z_base), 1.0_dp)
+                call log_inner(d, sys, sol, outer, inner, 0, relative_change(d, z_new, z_base), &
+                    1.0_dp)
                 sol%n_inner = sol%n_inner + 1
                 return
             end if
@@ -177,10 +179,10 @@ contains
             end if
             call log_inner(d, sys, sol, outer, inner, n_changed, incr, lambda)
             sol%n_inner = sol%n_inner + 1
-            if (lambda == 1.0_dp .and. (n_changed == 0 .or. incr <= m%tol_inner)) return
+            if (lambda == 1.0_dp .and. (n_changed == 0 .or. incr <= m%solver%tol_inner)) return
         end do inner_loop
         write (text, '(a,i0,a,i0,a,i0,a)') 'contact (inner) loop did not converge in ', &
-            m%max_inner, ' iterations at outer iteration ', outer, ' (', n_changed, &
+            m%solver%max_inner, ' iterations at outer iteration ', outer, ' (', n_changed, &
             ' Gauss points still change state)'
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine penalty_loop

@@ -309,7 +309,7 @@ contains
         type(diagnostics_t), intent(inout) :: diag
         integer :: fewest, line, first, s
         fewest = fewest_elements(m)
-        if (m%ne >= fewest) return
+        if (m%mesh%ne >= fewest) return
         line = 0
         first = field_first_column(1)
         do s = 1, size(deck%sweeps)
@@ -325,7 +325,7 @@ contains
         if (line < 1) return
         call add_diagnostic(diag, line, first, first + field_width - 1, 'MESH N_e must be at '// &
             'least '//int_text(fewest)//' with LOADS grading (an element for each piece '// &
-            'between the load positions and patch edges), got '//int_text(m%ne), &
+            'between the load positions and patch edges), got '//int_text(m%mesh%ne), &
             echo_text(deck%lines(line)))
     end subroutine check_element_count
 
@@ -591,8 +591,8 @@ contains
         call take_word(st, st%cards(k), 1, 'MODEL kind', 'BEAM PLATE', .true., word, s)
         if (s == FIELD_OK) then
             st%kind_known = .true.
-            st%m%kind = MODEL_PLATE
-            if (word == 'BEAM') st%m%kind = MODEL_BEAM
+            st%m%structure%kind = MODEL_PLATE
+            if (word == 'BEAM') st%m%structure%kind = MODEL_BEAM
         end if
         call check_unused(st, st%cards(k), 1)
     end subroutine read_model_card
@@ -677,7 +677,8 @@ contains
                 call read_solver(st, st%cards(k))
             case (C_OUTPUT)
                 call take_count(st, st%cards(k), 1, 'OUTPUT stations (number of equally '// &
-                                'spaced output stations)', RULE_STATIONS, .false., st%m%stations)
+                                'spaced output stations)', RULE_STATIONS, .false., &
+                                    st%m%output%stations)
                 call check_unused(st, st%cards(k), 1)
             case (C_SWEEP)
                 call read_sweep(st, k)
@@ -695,8 +696,8 @@ contains
     subroutine read_units(st, cd)
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
-        call take_label(st, cd, 1, 'UNITS force label', st%m%force_unit)
-        call take_label(st, cd, 2, 'UNITS length label', st%m%length_unit)
+        call take_label(st, cd, 1, 'UNITS force label', st%m%units%force)
+        call take_label(st, cd, 2, 'UNITS length label', st%m%units%length)
         call check_unused(st, cd, 2)
     end subroutine read_units
 
@@ -707,17 +708,17 @@ contains
         character(len=:), allocatable :: what
         integer :: s
         what = 'GEOMETRY l or a (beam length or plate radius)'
-        if (st%kind_known .and. st%m%kind == MODEL_BEAM) what = 'GEOMETRY l (length of the beam)'
-        if (st%kind_known .and. st%m%kind == MODEL_PLATE) what = 'GEOMETRY a (radius of the plate)'
-        call take_real(st, cd, 1, what, RULE_POSITIVE, .true., st%m%length, s)
+        if (st%kind_known .and. st%m%structure%kind == MODEL_BEAM) what = 'GEOMETRY l (length of the beam)'
+        if (st%kind_known .and. st%m%structure%kind == MODEL_PLATE) what = 'GEOMETRY a (radius of the plate)'
+        call take_real(st, cd, 1, what, RULE_POSITIVE, .true., st%m%structure%length, s)
         st%length_known = s == FIELD_OK
         call take_real(st, cd, 2, 'GEOMETRY h (thickness of the structure)', RULE_POSITIVE, &
-                       .true., st%m%h)
-        if (st%kind_known .and. st%m%kind == MODEL_PLATE) then
+                       .true., st%m%structure%h)
+        if (st%kind_known .and. st%m%structure%kind == MODEL_PLATE) then
             call forbid_field(st, cd, 3, 'PLATE has no width: GEOMETRY b must be blank')
         else
             call take_real(st, cd, 3, 'GEOMETRY b (width of the beam)', RULE_POSITIVE, &
-                           st%kind_known, st%m%b)
+                           st%kind_known, st%m%structure%b)
         end if
         call check_unused(st, cd, 3)
     end subroutine read_geometry
@@ -727,11 +728,11 @@ contains
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
         call take_real(st, cd, 1, 'STRUCTURE E (Young''s modulus of the structure)', &
-                       RULE_POSITIVE, .true., st%m%e)
+                       RULE_POSITIVE, .true., st%m%structure%e)
         call take_real(st, cd, 2, 'STRUCTURE nu (Poisson''s ratio of the structure)', &
-                       RULE_NU_STRUCTURE, .true., st%m%nu)
+                       RULE_NU_STRUCTURE, .true., st%m%structure%nu)
         call take_real(st, cd, 3, 'STRUCTURE k (shear correction factor)', RULE_POSITIVE, &
-                       .false., st%m%k_shear)
+                       .false., st%m%structure%k_shear)
         call check_unused(st, cd, 3)
     end subroutine read_structure
 
@@ -740,9 +741,9 @@ contains
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
         call take_real(st, cd, 1, 'SOIL E_f (Young''s modulus of the soil)', RULE_POSITIVE, &
-                       .true., st%m%e_f)
+                       .true., st%m%ground%e_f)
         call take_real(st, cd, 2, 'SOIL nu_f (Poisson''s ratio of the soil)', RULE_NU_SOIL, &
-                       .true., st%m%nu_f)
+                       .true., st%m%ground%nu_f)
         call check_unused(st, cd, 2)
     end subroutine read_soil
 
@@ -751,20 +752,20 @@ contains
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
         call take_real(st, cd, 1, 'NONDIM rho (relative stiffness of structure and soil)', &
-                       RULE_POSITIVE, .true., st%m%rho_in)
+                       RULE_POSITIVE, .true., st%m%groups%rho)
         call take_real(st, cd, 2, 'NONDIM zeta (thickness ratio h/l or h/a)', RULE_POSITIVE, &
-                       .true., st%m%zeta_in)
-        st%m%nu = 0.3_dp
-        st%m%nu_f = 0.1_dp
+                       .true., st%m%groups%zeta)
+        st%m%structure%nu = 0.3_dp
+        st%m%ground%nu_f = 0.1_dp
         call take_real(st, cd, 3, 'NONDIM nu (Poisson''s ratio of the structure)', &
-                       RULE_NU_STRUCTURE, .false., st%m%nu)
+                       RULE_NU_STRUCTURE, .false., st%m%structure%nu)
         call take_real(st, cd, 4, 'NONDIM nu_f (Poisson''s ratio of the soil)', RULE_NU_SOIL, &
-                       .false., st%m%nu_f)
-        if (st%kind_known .and. st%m%kind == MODEL_PLATE) then
+                       .false., st%m%ground%nu_f)
+        if (st%kind_known .and. st%m%structure%kind == MODEL_PLATE) then
             call forbid_field(st, cd, 5, 'PLATE has no width: NONDIM beta must be blank')
         else
             call take_real(st, cd, 5, 'NONDIM beta (width ratio b/l of the beam)', &
-                           RULE_POSITIVE, st%kind_known, st%m%beta_in)
+                           RULE_POSITIVE, st%kind_known, st%m%groups%beta)
         end if
         call check_unused(st, cd, 5)
     end subroutine read_nondim
@@ -774,9 +775,9 @@ contains
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
         call take_real(st, cd, 1, 'FRICTION f (friction coefficient)', RULE_NONNEGATIVE, &
-                       .true., st%m%f)
+                       .true., st%m%interface%f)
         call take_real(st, cd, 2, 'FRICTION eps_bar (regularisation of the friction law)', &
-                       RULE_OPEN_UNIT, .false., st%m%eps_bar)
+                       RULE_OPEN_UNIT, .false., st%m%interface%eps_bar)
         call check_unused(st, cd, 2)
     end subroutine read_friction
 
@@ -789,14 +790,14 @@ contains
         character(len=field_width) :: word
         integer :: s, j
         call take_count(st, cd, 1, 'MESH N_e (number of elements)', RULE_ELEMENTS, .false., &
-                        st%m%ne)
+                        st%m%mesh%ne)
         ! grading words of mesh.f90 (new_mesh)
         call take_word(st, cd, 2, 'MESH grading', 'UNIFORM EDGES LOADS', .false., word, s)
-        if (s == FIELD_OK) st%m%grading = word
+        if (s == FIELD_OK) st%m%mesh%grading = word
         do j = 1, 5
             call take_word(st, cd, j + 2, 'MESH interpolation of '//trim(field_label(j)), &
                            'P1 P2 S2', .false., word, s)
-            if (s == FIELD_OK) st%m%interp(j) = interp_code(word)
+            if (s == FIELD_OK) st%m%mesh%interp(j) = interp_code(word)
         end do
     end subroutine read_mesh
 
@@ -806,11 +807,11 @@ contains
     subroutine read_adapt(st, cd)
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
-        st%m%adapt_max_ne = default_adapt_max_ne
+        st%m%mesh%adapt_max_ne = default_adapt_max_ne
         call take_real(st, cd, 1, 'ADAPT tol (relative tolerance of the estimated errors)', &
-                       RULE_OPEN_UNIT, .true., st%m%adapt_tol)
+                       RULE_OPEN_UNIT, .true., st%m%mesh%adapt_tol)
         call take_count(st, cd, 2, 'ADAPT max_elements (largest number of elements)', &
-                        RULE_ELEMENTS, .false., st%m%adapt_max_ne)
+                        RULE_ELEMENTS, .false., st%m%mesh%adapt_max_ne)
         call check_unused(st, cd, 2)
     end subroutine read_adapt
 
@@ -819,10 +820,11 @@ contains
         type(state_t), intent(inout) :: st
         integer :: k
         k = first_card(st, C_ADAPT)
-        if (k == 0 .or. st%m%adapt_tol <= 0.0_dp) return
-        if (st%m%adapt_max_ne >= st%m%ne) return
+        if (k == 0 .or. st%m%mesh%adapt_tol <= 0.0_dp) return
+        if (st%m%mesh%adapt_max_ne >= st%m%mesh%ne) return
         call field_error(st, st%cards(k), 2, 'ADAPT max_elements must be at least the MESH '// &
-            'N_e = '//int_text(st%m%ne)//' it starts from, got '//int_text(st%m%adapt_max_ne))
+            'N_e = '//int_text(st%m%mesh%ne)//' it starts from, got '// &
+                int_text(st%m%mesh%adapt_max_ne))
     end subroutine check_adapt
 
     !> SOLVER tol_outer tol_inner max_outer max_inner eta_bar tau0 method.
@@ -832,19 +834,20 @@ contains
         character(len=field_width) :: word
         integer :: s
         call take_real(st, cd, 1, 'SOLVER tol_outer (tolerance of the friction loop)', &
-                       RULE_POSITIVE, .false., st%m%tol_outer)
+                       RULE_POSITIVE, .false., st%m%solver%tol_outer)
         call take_real(st, cd, 2, 'SOLVER tol_inner (tolerance of the contact loop)', &
-                       RULE_POSITIVE, .false., st%m%tol_inner)
+                       RULE_POSITIVE, .false., st%m%solver%tol_inner)
         call take_count(st, cd, 3, 'SOLVER max_outer (iterations of the friction loop)', &
-                        RULE_COUNT, .false., st%m%max_outer)
+                        RULE_COUNT, .false., st%m%solver%max_outer)
         call take_count(st, cd, 4, 'SOLVER max_inner (iterations of the contact loop)', &
-                        RULE_COUNT, .false., st%m%max_inner)
+                        RULE_COUNT, .false., st%m%solver%max_inner)
         call take_real(st, cd, 5, 'SOLVER eta_bar (penalty of the tension zone)', &
-                       RULE_POSITIVE, .false., st%m%eta_bar)
+                       RULE_POSITIVE, .false., st%m%interface%eta_bar)
         call take_real(st, cd, 6, 'SOLVER tau0 (starting friction threshold, nondimensional)', &
-                       RULE_POSITIVE, .false., st%m%tau0_start)
+                       RULE_POSITIVE, .false., st%m%solver%tau0_start)
         call take_word(st, cd, 7, 'SOLVER method', 'NEWTON TWOLOOP', .false., word, s)
-        if (s == FIELD_OK) st%m%method = merge(METHOD_TWOLOOP, METHOD_NEWTON, word == 'TWOLOOP')
+        if (s == FIELD_OK) st%m%solver%method = merge(METHOD_TWOLOOP, METHOD_NEWTON, &
+            word == 'TWOLOOP')
         call check_unused(st, cd, 7)
     end subroutine read_solver
 
@@ -922,8 +925,8 @@ contains
             'no horizontal force: LOAD F_x must be blank or 0')
         if (word == 'RADIAL' .and. ld%fz /= 0.0_dp) call field_error(st, cd, 2, 'a RADIAL load '// &
             'is a radial top traction only: LOAD F_z must be blank or 0')
-        if (word == 'PRESSURE') call pressure_to_patch(st%m%kind, ld)
-        if (st%m%kind == MODEL_BEAM) then
+        if (word == 'PRESSURE') call pressure_to_patch(st%m%structure%kind, ld)
+        if (st%m%structure%kind == MODEL_BEAM) then
             if (word == 'RING' .or. word == 'RADIAL') call field_error(st, cd, 1, trim(word)// &
                 ' is a plate load; a beam takes POINT, PATCH or MOMENT')
             return
@@ -994,9 +997,9 @@ contains
             call field_error(st, cd, 1, 'SWEEP '//name//' needs a physical deck; this deck '// &
                              'gives NONDIM groups (sweep RHO, ZETA or BETA instead)')
         else if (st%kind_known .and. sweep_models(p) /= 0 .and. &
-                 sweep_models(p) /= st%m%kind) then
+                 sweep_models(p) /= st%m%structure%kind) then
             call field_error(st, cd, 1, 'SWEEP '//name//' does not apply to a '// &
-                             trim(merge('BEAM ', 'PLATE', st%m%kind == MODEL_BEAM))// &
+                             trim(merge('BEAM ', 'PLATE', st%m%structure%kind == MODEL_BEAM))// &
                              ' deck'//sweep_hint(name))
         end if
         do s = 1, size(st%sweeps)
@@ -1114,7 +1117,7 @@ contains
     !> Length in the units of the load positions: l or a, 1 in a NONDIM deck.
     pure real(dp) function structure_length(m)
         type(model_t), intent(in) :: m
-        structure_length = m%length
+        structure_length = m%structure%length
         if (m%nondim) structure_length = 1.0_dp
     end function structure_length
 
@@ -1127,7 +1130,7 @@ contains
         character(len=:), allocatable, intent(out) :: why
         character(len=:), allocatable :: range, where
         real(dp) :: lo, hi
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             lo = -0.5_dp*length
             hi = 0.5_dp*length
             where = 'the beam'
@@ -1139,7 +1142,7 @@ contains
             range = '[0, a] = [0, '//format_real(hi)//']'
         end if
         if (m%nondim) range = range//' (NONDIM: in units of '// &
-                              trim(merge('l', 'a', m%kind == MODEL_BEAM))//')'
+                              trim(merge('l', 'a', m%structure%kind == MODEL_BEAM))//')'
         why = ''
         field = 4
         if (.not. (ld%x1 >= lo .and. ld%x1 <= hi)) then
@@ -1183,35 +1186,35 @@ contains
         real(dp), intent(in) :: v
         select case (trim(name))
         case ('RHO')
-            m%rho_in = v
+            m%groups%rho = v
         case ('ZETA')
-            m%zeta_in = v
+            m%groups%zeta = v
         case ('BETA')
-            m%beta_in = v
+            m%groups%beta = v
         case ('NU')
-            m%nu = v
+            m%structure%nu = v
         case ('NU_F')
-            m%nu_f = v
+            m%ground%nu_f = v
         case ('F')
-            m%f = v
+            m%interface%f = v
         case ('EPS_BAR')
-            m%eps_bar = v
+            m%interface%eps_bar = v
         case ('ETA_BAR')
-            m%eta_bar = v
+            m%interface%eta_bar = v
         case ('NE')
-            if (abs(v) < real(huge(1), dp)) m%ne = nint(v)
+            if (abs(v) < real(huge(1), dp)) m%mesh%ne = nint(v)
         case ('K')
-            m%k_shear = v
+            m%structure%k_shear = v
         case ('E')
-            m%e = v
+            m%structure%e = v
         case ('E_F')
-            m%e_f = v
+            m%ground%e_f = v
         case ('H')
-            m%h = v
+            m%structure%h = v
         case ('L', 'A')
-            m%length = v
+            m%structure%length = v
         case ('B')
-            m%b = v
+            m%structure%b = v
         end select
     end subroutine apply_sweep
 

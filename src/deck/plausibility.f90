@@ -28,19 +28,21 @@ contains
         character(len=warning_length) :: text
         real(dp) :: ratio
         allocate (w(0))
-        if (m%f > f_max .and. m%f < 90.0_dp) then
-            write (text, '(a,g0.3,a,g0.3,a)') 'FRICTION f = ', m%f, ' is large: f is a '// &
-                'coefficient, tan(phi) (an angle of ', m%f, ' degrees would be f = '// &
-                trim(degrees_to_coefficient(m%f))//')'
+        if (m%interface%f > f_max .and. m%interface%f < 90.0_dp) then
+            write (text, '(a,g0.3,a,g0.3,a)') 'FRICTION f = ', m%interface%f, &
+                ' is large: f is a '// &
+                'coefficient, tan(phi) (an angle of ', m%interface%f, ' degrees would be f = '// &
+                trim(degrees_to_coefficient(m%interface%f))//')'
             w = [character(len=warning_length) :: w, text]
-        else if (m%f >= 90.0_dp) then
+        else if (m%interface%f >= 90.0_dp) then
             ! no angle is meant: such an f makes the interface bonded (stick everywhere)
-            write (text, '(a,es9.2,a)') 'FRICTION f = ', m%f, ' is large: the base is '// &
+            write (text, '(a,es9.2,a)') 'FRICTION f = ', m%interface%f, &
+                ' is large: the base is '// &
                 'practically bonded (slip only where the pressure tends to 0)'
             w = [character(len=warning_length) :: w, text]
         end if
-        if (m%nondim .or. m%e_f <= 0.0_dp) return
-        ratio = m%e/m%e_f
+        if (m%nondim .or. m%ground%e_f <= 0.0_dp) return
+        ratio = m%structure%e/m%ground%e_f
         if (ratio < modulus_ratio_range(1) .or. ratio > modulus_ratio_range(2)) then
             write (text, '(a,es9.2,a)') 'E/E_f = ', ratio, ' (STRUCTURE E over SOIL E_f) is '// &
                 'outside 2 to 1e5: check that both moduli are in the same units'
@@ -56,10 +58,12 @@ contains
         character(len=warning_length) :: text
         allocate (w(0))
         if (m%nondim) return
-        if (w_max > m%h .or. w_max > 0.1_dp*m%length) then
+        if (w_max > m%structure%h .or. w_max > 0.1_dp*m%structure%length) then
             write (text, '(a,es9.2,a,es9.2,a,es9.2,a)') 'the largest settlement ', w_max, &
-                ' '//trim(m%length_unit)//' exceeds the thickness h = ', m%h, ' or a tenth '// &
-                'of the length/radius (', 0.1_dp*m%length, '): linear elasticity does not '// &
+                ' '//trim(m%units%length)//' exceeds the thickness h = ', m%structure%h, &
+                    ' or a tenth '// &
+                'of the length/radius (', 0.1_dp*m%structure%length, &
+                    '): linear elasticity does not '// &
                 'hold there; check the units of the loads and moduli'
             w = [character(len=warning_length) :: w, text]
         end if

@@ -8,6 +8,8 @@ module discretization
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, &
                      FIELD_SZ
     use mesh_refinement, only: nearest_node
+    use foundation_structure, only: interface_ends
+    use applied_loads, only: load_positions
     implicit none
     private
 
@@ -22,7 +24,7 @@ module discretization
         integer, allocatable :: fixed(:)   !! constrained unknowns (plate: u_s(0), psi(0), sigma_x(0))
     end type discretization_t
 
-    public :: new_discretization, discretise_mesh, load_positions, locate_element, loads_on_nodes
+    public :: new_discretization, discretise_mesh, locate_element, loads_on_nodes
     public :: fewest_elements
 
 contains
@@ -35,24 +37,11 @@ contains
         type(mesh_t) :: msh
         real(dp) :: x_left, x_right
 
-        call interface_ends(m, x_left, x_right)
-        call new_mesh(msh, x_left, x_right, m%ne, m%grading, err, load_positions(m))
+        call interface_ends(m%structure, x_left, x_right)
+        call new_mesh(msh, x_left, x_right, m%mesh%ne, m%mesh%grading, err, load_positions(m%loads))
         if (allocated(err)) return
         call discretise_mesh(m, msh, d)
     end subroutine new_discretization
-
-    !> The ends of the interface: [-l/2, l/2] (beam), [0, a] (plate).
-    pure subroutine interface_ends(m, x_left, x_right)
-        type(model_t), intent(in) :: m
-        real(dp), intent(out) :: x_left, x_right
-        if (m%kind == MODEL_BEAM) then
-            x_left = -0.5_dp*m%length
-            x_right = 0.5_dp*m%length
-        else
-            x_left = 0.0_dp
-            x_right = m%length
-        end if
-    end subroutine interface_ends
 
     !> The fewest elements the model's MESH grading can make: one per piece between the load
     !! positions for LOADS, else 1 (the deck reader checks N_e against it).
@@ -60,9 +49,9 @@ contains
         type(model_t), intent(in) :: m
         real(dp) :: x_left, x_right
         n = 1
-        if (trim(m%grading) /= 'LOADS') return
-        call interface_ends(m, x_left, x_right)
-        n = loads_pieces(x_left, x_right, load_positions(m))
+        if (trim(m%mesh%grading) /= 'LOADS') return
+        call interface_ends(m%structure, x_left, x_right)
+        n = loads_pieces(x_left, x_right, load_positions(m%loads))
     end function fewest_elements
 
     !> Bases, numbering and constraints of the model's fields on a given mesh (any nodes:
@@ -75,16 +64,17 @@ contains
         d%msh = msh
         do field = FIELD_U, FIELD_SZ
             if (field <= FIELD_PSI) then
-                call new_basis(d%basis(field), d%msh, m%interp(field), concentrated_nodes(m, msh))
+                call new_basis(d%basis(field), d%msh, m%mesh%interp(field), concentrated_nodes(m, &
+                    msh))
             else
-                call new_basis(d%basis(field), d%msh, m%interp(field))
+                call new_basis(d%basis(field), d%msh, m%mesh%interp(field))
             end if
             if (field > FIELD_U) d%offset(field) = d%offset(field - 1) + d%basis(field - 1)%n_dof
         end do
         d%nv = d%offset(FIELD_SX)
         d%n = d%offset(FIELD_SZ) + d%basis(FIELD_SZ)%n_dof
         d%nr = d%n - d%nv
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             allocate (d%fixed(0))
         else
             ! axisymmetry: u_s, psi and the radial shear traction vanish on the axis
@@ -130,18 +120,6 @@ contains
             end associate
         end do
     end function loads_on_nodes
-
-    !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading).
-    pure function load_positions(m) result(x)
-        type(model_t), intent(in) :: m
-        real(dp), allocatable :: x(:)
-        integer :: i
-        allocate (x(0))
-        do i = 1, size(m%loads)
-            x = [x, m%loads(i)%x1]
-            if (m%loads(i)%kind == LOAD_PATCH) x = [x, m%loads(i)%x2]
-        end do
-    end function load_positions
 
     !> Element containing x and the local coordinate there (x clipped to the mesh).
     pure subroutine locate_element(msh, x, e, xi)

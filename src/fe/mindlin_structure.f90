@@ -19,19 +19,11 @@ module mindlin_structure
     use shape_functions, only: basis_t, eval_basis, max_local
     use discretization, only: discretization_t, locate_element
     use sparse_matrix, only: triplets_t, new_triplets, add_entry, compressed, dense_of
+    use foundation_structure, only: section_t, section_of
     use model, only: model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, &
                      LOAD_RING, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     implicit none
     private
-
-    !> Section stiffnesses of the structure.
-    type, public :: section_t
-        real(dp) :: axial = 0.0_dp     !! beam EA, plate C = Eh/(1-nu^2)
-        real(dp) :: bending = 0.0_dp   !! beam EI, plate D
-        real(dp) :: shear = 0.0_dp     !! beam k G b h, plate k G h
-        real(dp) :: nu = 0.0_dp        !! plate Poisson coupling (0 for the beam)
-        logical :: plate = .false.
-    end type section_t
 
     !> Field values at a point: value and x-derivative of u_s, w, psi.
     type, public :: field_point_t
@@ -40,30 +32,11 @@ module mindlin_structure
         real(dp) :: der(3) = 0.0_dp   !! u_s', w', psi'
     end type field_point_t
 
-    public :: section_of, assemble_stiffness, assemble_loads, assemble_coupling
+    public :: section_t, section_of, assemble_stiffness, assemble_loads, assemble_coupling
     public :: stiffness_entries, coupling_entries
     public :: displacement_at, traction_at, resultants
 
 contains
-
-    !> Section constants from the model.
-    pure function section_of(m) result(s)
-        type(model_t), intent(in) :: m
-        type(section_t) :: s
-        real(dp) :: g
-        g = m%e/(2.0_dp*(1.0_dp + m%nu))
-        if (m%kind == MODEL_BEAM) then
-            s%axial = m%e*m%b*m%h
-            s%bending = m%e*m%b*m%h**3/12.0_dp
-            s%shear = m%k_shear*g*m%b*m%h
-        else
-            s%plate = .true.
-            s%nu = m%nu
-            s%axial = m%e*m%h/(1.0_dp - m%nu**2)
-            s%bending = m%e*m%h**3/(12.0_dp*(1.0_dp - m%nu**2))
-            s%shear = m%k_shear*g*m%h
-        end if
-    end function section_of
 
     !> Structural stiffness K (nv x nv) in the numbering of d, dense (tests, benchmarks).
     pure subroutine assemble_stiffness(sec, d, k)
@@ -188,7 +161,7 @@ contains
         call gauss_legendre(n, xi, w)
         elements: do e = 1, d%msh%ne
             call add_mass_block(m, d, e, FIELD_SX, FIELD_U, 1.0_dp, xi, w, mm)
-            call add_mass_block(m, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*m%h, xi, w, mm)
+            call add_mass_block(m, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*m%structure%h, xi, w, mm)
             call add_mass_block(m, d, e, FIELD_SZ, FIELD_W, 1.0_dp, xi, w, mm)
         end do elements
     end function coupling_entries
@@ -208,7 +181,7 @@ contains
             call eval_basis(d%basis(row_field), e, xi(q), ir, vr, dr, x)
             call eval_basis(d%basis(col_field), e, xi(q), ic, vc, dr, x)
             wt = factor*w(q)*0.5_dp*(d%msh%x(e) - d%msh%x(e - 1))
-            if (m%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
+            if (m%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
             do j = 1, d%basis(col_field)%n_local
                 do i = 1, d%basis(row_field)%n_local
                     call add_entry(mm, row0 + ir(i), d%offset(col_field) + ic(j), &
@@ -232,7 +205,7 @@ contains
                 case (LOAD_POINT, LOAD_RING)
                     call add_point_force(d, FIELD_W, ld%x1, ld%fz, q)
                     call add_point_force(d, FIELD_U, ld%x1, ld%fx, q)
-                    call add_point_force(d, FIELD_PSI, ld%x1, 0.5_dp*m%h*ld%fx, q)
+                    call add_point_force(d, FIELD_PSI, ld%x1, 0.5_dp*m%structure%h*ld%fx, q)
                 case (LOAD_MOMENT)
                     call add_point_force(d, FIELD_PSI, ld%x1, ld%fz, q)
                 case (LOAD_PATCH)
@@ -270,7 +243,7 @@ contains
         real(dp) :: xg(n), wg(n), area, lo, hi, x, wt
         integer :: e, g
         call gauss_legendre(n, xg, wg)
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             area = ld%x2 - ld%x1
         else
             area = pi*(ld%x2**2 - ld%x1**2)
@@ -282,10 +255,10 @@ contains
             do g = 1, n
                 x = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
                 wt = 0.5_dp*wg(g)*(hi - lo)/area
-                if (m%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
+                if (m%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
                 call add_point_force(d, FIELD_W, x, wt*ld%fz, q)
                 call add_point_force(d, FIELD_U, x, wt*ld%fx, q)
-                call add_point_force(d, FIELD_PSI, x, wt*0.5_dp*m%h*ld%fx, q)
+                call add_point_force(d, FIELD_PSI, x, wt*0.5_dp*m%structure%h*ld%fx, q)
             end do
         end do elements
     end subroutine add_patch

@@ -100,10 +100,10 @@ contains
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(key_t) :: key
-        key%kind = m%kind
-        key%g_f = soil_shear_modulus(m)
-        key%nu_f = m%nu_f
-        if (m%kind == MODEL_BEAM) key%b = m%b
+        key%kind = m%structure%kind
+        key%g_f = soil_shear_modulus(m%ground)
+        key%nu_f = m%ground%nu_f
+        if (m%structure%kind == MODEL_BEAM) key%b = m%structure%b
         key%bx = d%basis(FIELD_SX)
         key%bz = d%basis(FIELD_SZ)
     end function key_of

@@ -19,12 +19,13 @@ contains
         type(discretization_t), intent(in) :: d
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         type(error_t), allocatable, intent(out) :: err
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             call assemble_beam_flexibility(d%basis(FIELD_SX), d%basis(FIELD_SZ), &
-                                           soil_shear_modulus(m), m%nu_f, m%b, t_mat, err)
+                                           soil_shear_modulus(m%ground), m%ground%nu_f, &
+                                               m%structure%b, t_mat, err)
         else
             call assemble_plate_flexibility(d%basis(FIELD_SX), d%basis(FIELD_SZ), &
-                                            soil_shear_modulus(m), m%nu_f, t_mat, err)
+                                            soil_shear_modulus(m%ground), m%ground%nu_f, t_mat, err)
         end if
     end subroutine assemble_flexibility
 
@@ -38,12 +39,13 @@ contains
         type(error_t), allocatable, intent(out) :: err
         integer :: nx
         nx = d%basis(FIELD_SX)%n_dof
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             call beam_surface_displacement(d%basis(FIELD_SX), d%basis(FIELD_SZ), r(1:nx), &
-                 r(nx + 1:), soil_shear_modulus(m), m%nu_f, m%b, x_eval, u_f, w_f, err)
+                 r(nx + 1:), soil_shear_modulus(m%ground), m%ground%nu_f, m%structure%b, x_eval, &
+                     u_f, w_f, err)
         else
             call plate_surface_displacement(d%basis(FIELD_SX), d%basis(FIELD_SZ), r(1:nx), &
-                 r(nx + 1:), soil_shear_modulus(m), m%nu_f, x_eval, u_f, w_f, err)
+                 r(nx + 1:), soil_shear_modulus(m%ground), m%ground%nu_f, x_eval, u_f, w_f, err)
         end if
     end subroutine surface_displacement
 end module halfspace_operator

@@ -105,7 +105,8 @@ contains
         s%w_differential = s%w_max%value - s%w_min%value
         call mean_settlement(m, tab, s)
         s%tilt = 0.0_dp
-        if (m%kind == MODEL_BEAM) s%tilt = (tab%val(Q_W, tab%n) - tab%val(Q_W, 1))/m%length
+        if (m%structure%kind == MODEL_BEAM) s%tilt = (tab%val(Q_W, tab%n) - tab%val(Q_W, &
+            1))/m%structure%length
         pairs: do i = 1, tab%n - 1
             if (tab%val(Q_X, i + 1) <= tab%val(Q_X, i)) cycle pairs
             slope = (tab%val(Q_W, i + 1) - tab%val(Q_W, i))/(tab%val(Q_X, i + 1) - tab%val(Q_X, i))
@@ -125,9 +126,10 @@ contains
         type(summary_t), intent(inout) :: s
         real(dp) :: base
         s%w_mean = tab%w_mean
-        base = merge(m%length*m%b, pi*m%length**2, m%kind == MODEL_BEAM)
+        base = merge(m%structure%length*m%structure%b, pi*m%structure%length**2, &
+            m%structure%kind == MODEL_BEAM)
         s%subgrade_modulus = 0.0_dp
-        if (s%w_mean > 0.0_dp) s%subgrade_modulus = total_vertical_load(m)/base/s%w_mean
+        if (s%w_mean > 0.0_dp) s%subgrade_modulus = total_vertical_load(m%loads)/base/s%w_mean
     end subroutine mean_settlement
 
     !> Intervals, contact length and area, mean, largest and near-edge pressures.
@@ -137,7 +139,8 @@ contains
         type(summary_t), intent(inout) :: s
         real(dp) :: width, x0, x1
         integer :: k
-        width = merge(m%b, 1.0_dp, m%kind == MODEL_BEAM)   ! line load -> pressure
+        width = merge(m%structure%b, 1.0_dp, &
+            m%structure%kind == MODEL_BEAM)   ! line load -> pressure
         s%intervals = contact_intervals(tab)
         s%slip_intervals = slip_runs(tab)
         s%contact_length = 0.0_dp
@@ -145,33 +148,34 @@ contains
         do k = 1, size(s%intervals)
             if (.not. s%intervals(k)%contact) cycle
             associate (a => s%intervals(k)%x1, b => s%intervals(k)%x2)
-                if (m%kind == MODEL_BEAM) then
+                if (m%structure%kind == MODEL_BEAM) then
                     s%contact_length = s%contact_length + (b - a)
-                    s%contact_area = s%contact_area + (b - a)*m%b
+                    s%contact_area = s%contact_area + (b - a)*m%structure%b
                 else
                     s%contact_area = s%contact_area + pi*(b**2 - a**2)
                 end if
             end associate
         end do
         s%mean_pressure = 0.0_dp
-        if (s%contact_area > 0.0_dp) s%mean_pressure = total_vertical_load(m)/s%contact_area
+        if (s%contact_area > 0.0_dp) s%mean_pressure = total_vertical_load(m%loads)/s%contact_area
         s%pressure_max = located_max(tab, tab%val(Q_SZ, :)/width)
         s%pressure_max_singular = at_singular_point(m, tab, s%pressure_max%x)
         ! (a RING of radius 0 is a POINT load)
-        s%point_on_plate = m%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT .or. &
-            (m%loads%kind == LOAD_RING .and. m%loads%x1 <= 1.0e-9_dp*m%length))
-        s%edge_distance = m%h
+        s%point_on_plate = m%structure%kind &
+            /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT .or. &
+            (m%loads%kind == LOAD_RING .and. m%loads%x1 <= 1.0e-9_dp*m%structure%length))
+        s%edge_distance = m%structure%h
         x0 = tab%val(Q_X, 1)
         x1 = tab%val(Q_X, tab%n)
         s%edge_in_contact = tab%state(tab%n) /= STATE_LIFTOFF
-        if (m%kind == MODEL_BEAM) s%edge_in_contact = s%edge_in_contact .or. &
+        if (m%structure%kind == MODEL_BEAM) s%edge_in_contact = s%edge_in_contact .or. &
                                                       tab%state(1) /= STATE_LIFTOFF
-        if (m%h < x1 - x0) then
-            s%edge_pressure(2) = interpolate(tab, tab%val(Q_SZ, :), x1 - m%h)/width
-            s%edge_point_in_contact(2) = in_contact_at(tab, x1 - m%h)
-            if (m%kind == MODEL_BEAM) then
-                s%edge_pressure(1) = interpolate(tab, tab%val(Q_SZ, :), x0 + m%h)/width
-                s%edge_point_in_contact(1) = in_contact_at(tab, x0 + m%h)
+        if (m%structure%h < x1 - x0) then
+            s%edge_pressure(2) = interpolate(tab, tab%val(Q_SZ, :), x1 - m%structure%h)/width
+            s%edge_point_in_contact(2) = in_contact_at(tab, x1 - m%structure%h)
+            if (m%structure%kind == MODEL_BEAM) then
+                s%edge_pressure(1) = interpolate(tab, tab%val(Q_SZ, :), x0 + m%structure%h)/width
+                s%edge_point_in_contact(1) = in_contact_at(tab, x0 + m%structure%h)
             end if
         end if
         call centre_value(m, tab, width, s)
@@ -246,7 +250,8 @@ contains
         type(summary_t), intent(inout) :: s
         integer :: i
         call moment_extremes(tab, tab%val(Q_M, :), s%m_sag, s%m_hog)
-        if (m%kind /= MODEL_BEAM) call moment_extremes(tab, tab%val(Q_MT, :), s%mt_sag, s%mt_hog)
+        if (m%structure%kind /= MODEL_BEAM) call moment_extremes(tab, tab%val(Q_MT, :), s%mt_sag, &
+            s%mt_hog)
         i = maxloc(abs(tab%val(Q_Q, :)), dim=1)
         s%q_abs_max = located_t(tab%val(Q_Q, i), tab%val(Q_X, i))
     end subroutine resultant_values
@@ -273,27 +278,29 @@ contains
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(inout) :: s
         real(dp) :: v, scale(3), sigma_scale
-        v = total_vertical_load(m)
+        v = total_vertical_load(m%loads)
         s%utilisation = -1.0_dp
-        if (m%f > 0.0_dp) s%utilisation = abs(sum(m%loads%fx))/(m%f*v)
+        if (m%interface%f > 0.0_dp) s%utilisation = abs(sum(m%loads%fx))/(m%interface%f*v)
         s%linear_solves = sol%n_solves
         s%n_tension_flags = count(iand(tab%flag, FLAG_TENSION) /= 0)
         s%n_overlap_flags = count(iand(tab%flag, FLAG_OVERLAP) /= 0)
-        scale = v*[1.0_dp, 1.0_dp, m%length]
+        scale = v*[1.0_dp, 1.0_dp, m%structure%length]
         s%equilibrium = maxval(abs(sol%reaction - sol%applied)/scale)
-        if (m%kind == MODEL_BEAM) then
-            sigma_scale = m%length/v
+        if (m%structure%kind == MODEL_BEAM) then
+            sigma_scale = m%structure%length/v
         else
-            sigma_scale = pi*m%length**2/v
+            sigma_scale = pi*m%structure%length**2/v
         end if
         s%admissibility = sol%admissibility*sigma_scale
         ! the excess the regularised law allows at the largest slip (interface_law), doubled for
         ! the slip read at stations rather than at the Gauss points, plus the precision of the
         ! tractions: 1e-8 of the largest pressure (the precision the solver holds the law to;
         ! with eps_bar = 1e-12 the law's own allowance lies below it)
-        s%admissibility_tol = 2.0_dp*admissible_excess(m%eps_bar, maxval(abs(tab%val(Q_SLIP, :))), &
-                                                       friction_compliance(m))*sigma_scale + &
-                              max(10.0_dp*m%eps_bar, 1.0e-8_dp)* &
+        s%admissibility_tol = 2.0_dp*admissible_excess(m%interface%eps_bar, &
+            maxval(abs(tab%val(Q_SLIP, :))), &
+                                                       friction_compliance(m%structure, &
+                                                           m%ground))*sigma_scale + &
+                              max(10.0_dp*m%interface%eps_bar, 1.0e-8_dp)* &
                               max(1.0_dp, maxval(tab%val(Q_SZ, :))*sigma_scale)
     end subroutine check_values
 
@@ -319,7 +326,7 @@ contains
         tol = 1.0e-9_dp*(tab%val(Q_X, tab%n) - tab%val(Q_X, 1))
         at_singular_point = abs(x - tab%val(Q_X, tab%n)) <= tol .and. &
                             tab%state(tab%n) /= STATE_LIFTOFF
-        if (m%kind == MODEL_BEAM) at_singular_point = at_singular_point .or. &
+        if (m%structure%kind == MODEL_BEAM) at_singular_point = at_singular_point .or. &
             (abs(x - tab%val(Q_X, 1)) <= tol .and. tab%state(1) /= STATE_LIFTOFF)
         do k = 1, size(m%loads)
             if (m%loads(k)%kind /= LOAD_POINT .and. m%loads(k)%kind /= LOAD_RING) cycle

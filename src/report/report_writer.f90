@@ -66,7 +66,8 @@ contains
             write (u, '(a)') '# all columns nondimensional (doc/SPEC.md section 6); a station at a concentrated '// &
                 'load appears twice (left and right limit)'
             do c = 1, size(cols)
-                write (u, '(a,i0,a)') '# ', c, ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
+                write (u, '(a,i0,a)') '# ', c, &
+                    ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
             end do
             write (u, '(a)', advance='no') '#'
             do c = 1, size(cols)
@@ -147,14 +148,15 @@ contains
             write (u, '(a)') '  "deck_file": '//json_string(canonical_path(deck_path))//','
         end if
         write (u, '(a)') '  "title": '//json_string(trim(m%title))//','
-        write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', m%kind == MODEL_BEAM)))//','
+        write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', &
+            m%structure%kind == MODEL_BEAM)))//','
         write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
         write (u, '(a,i0,a)') '  "status": ', status, ','
         write (u, '(a)') '  "message": '//json_string(message)//','
         if (adapted) then
             write (u, '(a,i0,a)') '  "elements": ', adaptation%ne, ','
         else
-            write (u, '(a,i0,a)') '  "elements": ', m%ne, ','
+            write (u, '(a,i0,a)') '  "elements": ', m%mesh%ne, ','
         end if
         write (u, '(a)', advance='no') '  "warnings": ['
         if (present(warnings)) then
@@ -172,14 +174,17 @@ contains
         end if
         write (u, '(a)') '  "units": {'
         do i = 1, size(e)
-            write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '//json_string(trim(e(i)%unit))//','
+            write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '// &
+                json_string(trim(e(i)%unit))//','
         end do
-        write (u, '(a)') '    "intervals": '//json_string(trim(merge('t               ', un%length, m%nondim)))
+        write (u, '(a)') '    "intervals": '//json_string(trim(merge('t               ', &
+            un%length, m%nondim)))
         write (u, '(a)') '  },'
         write (u, '(a)') '  "results": {'
         do i = 1, size(e)
             if (e(i)%integer_valued) then
-                write (u, '(a,i0,a)') '    '//json_string(trim(e(i)%key))//': ', nint(e(i)%value), ','
+                write (u, '(a,i0,a)') '    '//json_string(trim(e(i)%key))//': ', &
+                    nint(e(i)%value), ','
             else
                 write (u, '(a)') '    '//json_string(trim(e(i)%key))//': '// &
                     json_number(e(i)%value, e(i)%defined)//','
@@ -281,7 +286,7 @@ contains
         character(len=*), parameter :: kinds(3) = [character(len=17) :: 'contact_intervals', &
                                                    'liftoff_intervals', 'slip_intervals']
         integer :: j
-        scale = merge(1.0_dp/m%length, 1.0_dp, m%nondim)
+        scale = merge(1.0_dp/m%structure%length, 1.0_dp, m%nondim)
         do j = 1, 3
             write (u, '(a)', advance='no') '    "'//trim(kinds(j))//'": ['
             first = .true.
@@ -486,9 +491,10 @@ contains
         if (m%nondim) then
             key = 'Sigma_z'
         else
-            key = merge('p_z    ', 'sigma_z', m%kind == MODEL_BEAM)
+            key = merge('p_z    ', 'sigma_z', m%structure%kind == MODEL_BEAM)
         end if
-        f = cols(column_index(cols, trim(key)))%scale*merge(m%b, 1.0_dp, m%kind == MODEL_BEAM)
+        f = cols(column_index(cols, trim(key)))%scale*merge(m%structure%b, 1.0_dp, &
+            m%structure%kind == MODEL_BEAM)
     end function pressure_scale
 
     !> The settings a panel or sweep template reads: model, data format, column numbers
@@ -503,7 +509,7 @@ contains
         logical :: beam, phys
         integer :: ix
         real(dp) :: p_mean, xs
-        beam = m%kind == MODEL_BEAM
+        beam = m%structure%kind == MODEL_BEAM
         phys = .not. m%nondim
         un = case_units(m)
         if (phys) then
@@ -516,7 +522,8 @@ contains
         if (mean_pressure > 0.0_dp) then
             p_mean = mean_pressure*pressure_scale(m, cols)
         else      ! no contact area known: the load over the base
-            p_mean = total_vertical_load(m)/merge(m%length*m%b, pi*m%length**2, beam)* &
+            p_mean = total_vertical_load(m%loads)/merge(m%structure%length*m%structure%b, &
+                pi*m%structure%length**2, beam)* &
                      pressure_scale(m, cols)
         end if
         write (u, '(a)') "model = '"//trim(merge('BEAM ', 'PLATE', beam))//"'"
@@ -586,7 +593,7 @@ contains
                       trim(cols(column_index(cols, pick('p_z', 'sigma_z', 'Sigma_z')))%unit))
         if (beam .and. phys) then
             write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
-            call put_num('line_width', m%b)
+            call put_num('line_width', m%structure%b)
             call put_text('lab_line', 'line load b p_z ['//trim(un%line_load)//']')
         else
             call put_num('line_width', 0.0_dp)
@@ -597,8 +604,8 @@ contains
         call put_num('p_mean', p_mean)
         call put_num('clip_factor', 1.5_dp)
         call put_num('clip_inner', 1.25_dp)
-        call put_num('edge_d', m%h*xs)
-        call put_num('friction', m%f)
+        call put_num('edge_d', m%structure%h*xs)
+        call put_num('friction', m%interface%f)
         call write_figure_loads(u, m, xs)
 
     contains
@@ -758,7 +765,8 @@ contains
         call write_conventions(u, m)
         call write_log(u, sol)
         if (len_trim(failure) == 0) then
-            call write_table(u, ' 5. STATIONS (nondimensional, doc/SPEC.md section 6)', nondim_columns(m), &
+            call write_table(u, ' 5. STATIONS (nondimensional, doc/SPEC.md section 6)', &
+                nondim_columns(m), &
                              tab, .true.)
             if (.not. m%nondim) call write_table(u, ' 6. STATIONS (physical units)', &
                                                  physical_columns(m), tab, .false.)
@@ -778,7 +786,8 @@ contains
         character(len=*), intent(in) :: lines(:)
         integer :: i
         write (u, '(/,a)') ' 1. INPUT ECHO'
-        write (u, '(a)') '  line |'//'....+....1....+....2....+....3....+....4....+....5....+....6'// &
+        write (u, '(a)') '  line |'// &
+            '....+....1....+....2....+....3....+....4....+....5....+....6'// &
             '....+....7....+....8'
         do i = 1, size(lines)
             write (u, '(i6,a,a)') i, ' |', trim(lines(i))
@@ -793,54 +802,63 @@ contains
         character(len=*), parameter :: fmt = '(3x,a,t46,es14.6,2x,a)'
         integer :: field
         write (u, '(/,a)') ' 2. MODEL, NONDIMENSIONAL GROUPS AND PHYSICAL DATA'
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             write (u, '(3x,a)') 'model: BEAM (Timoshenko) on a 3-D elastic half-space, '// &
                 'tractions uniform across the width, compatibility on the centre line'
-            write (u, fmt) 'rho = 32 EI (1-nu_f^2)/(pi E_f l^4)', relative_stiffness(m)
-            write (u, fmt) 'beta = b/l', m%b/m%length
+            write (u, fmt) 'rho = 32 EI (1-nu_f^2)/(pi E_f l^4)', relative_stiffness(m%structure, &
+                m%ground)
+            write (u, fmt) 'beta = b/l', m%structure%b/m%structure%length
         else
             write (u, '(3x,a)') 'model: PLATE (axisymmetric Mindlin) on a 3-D elastic half-space'
-            write (u, fmt) 'rho = 2 D (1-nu_f^2)/(E_f a^3)', relative_stiffness(m)
+            write (u, fmt) 'rho = 2 D (1-nu_f^2)/(E_f a^3)', relative_stiffness(m%structure, &
+                m%ground)
         end if
-        write (u, fmt) 'zeta = h/l (beam) or h/a (plate)', m%h/m%length
-        write (u, fmt) 'nu (structure)', m%nu
-        write (u, fmt) 'nu_f (soil)', m%nu_f
-        write (u, fmt) 'f (friction coefficient)', m%f
-        write (u, fmt) 'eps_bar (friction regularisation)', m%eps_bar
-        write (u, fmt) 'eta_bar (penalty of the tension zone)', m%eta_bar
+        write (u, fmt) 'zeta = h/l (beam) or h/a (plate)', m%structure%h/m%structure%length
+        write (u, fmt) 'nu (structure)', m%structure%nu
+        write (u, fmt) 'nu_f (soil)', m%ground%nu_f
+        write (u, fmt) 'f (friction coefficient)', m%interface%f
+        write (u, fmt) 'eps_bar (friction regularisation)', m%interface%eps_bar
+        write (u, fmt) 'eta_bar (penalty of the tension zone)', m%interface%eta_bar
         if (m%nondim) then
             write (u, '(3x,a)') 'physical set chosen to reproduce the groups: l (a) = 1, E = 1, F = 1'
         end if
-        write (u, fmt) 'l (beam length) or a (plate radius)', m%length, trim(m%length_unit)
-        write (u, fmt) 'h (thickness)', m%h, trim(m%length_unit)
-        if (m%kind == MODEL_BEAM) write (u, fmt) 'b (width)', m%b, trim(m%length_unit)
-        write (u, fmt) 'E (structure)', m%e, trim(m%force_unit)//'/'//trim(m%length_unit)//'^2'
-        write (u, fmt) 'k (shear correction)', m%k_shear
-        write (u, fmt) 'E_f (soil)', m%e_f, trim(m%force_unit)//'/'//trim(m%length_unit)//'^2'
-        write (u, fmt) 'G_f (soil)', soil_shear_modulus(m), &
-            trim(m%force_unit)//'/'//trim(m%length_unit)//'^2'
-        if (m%kind == MODEL_BEAM) then
-            write (u, fmt) 'EI (bending stiffness)', flexural_rigidity(m), &
-                trim(m%force_unit)//' '//trim(m%length_unit)//'^2'
-            write (u, fmt) 'c = 1/(4 pi G_f) (friction compliance)', friction_compliance(m), &
-                trim(m%length_unit)//'^2/'//trim(m%force_unit)
+        write (u, fmt) 'l (beam length) or a (plate radius)', m%structure%length, &
+            trim(m%units%length)
+        write (u, fmt) 'h (thickness)', m%structure%h, trim(m%units%length)
+        if (m%structure%kind == MODEL_BEAM) write (u, fmt) 'b (width)', m%structure%b, &
+            trim(m%units%length)
+        write (u, fmt) 'E (structure)', m%structure%e, &
+            trim(m%units%force)//'/'//trim(m%units%length)//'^2'
+        write (u, fmt) 'k (shear correction)', m%structure%k_shear
+        write (u, fmt) 'E_f (soil)', m%ground%e_f, &
+            trim(m%units%force)//'/'//trim(m%units%length)//'^2'
+        write (u, fmt) 'G_f (soil)', soil_shear_modulus(m%ground), &
+            trim(m%units%force)//'/'//trim(m%units%length)//'^2'
+        if (m%structure%kind == MODEL_BEAM) then
+            write (u, fmt) 'EI (bending stiffness)', flexural_rigidity(m%structure), &
+                trim(m%units%force)//' '//trim(m%units%length)//'^2'
+            write (u, fmt) 'c = 1/(4 pi G_f) (friction compliance)', &
+                friction_compliance(m%structure, m%ground), &
+                trim(m%units%length)//'^2/'//trim(m%units%force)
         else
-            write (u, fmt) 'D (bending stiffness per unit width)', flexural_rigidity(m), &
-                trim(m%force_unit)//' '//trim(m%length_unit)
-            write (u, fmt) 'c = a/(4 pi G_f) (friction compliance)', friction_compliance(m), &
-                trim(m%length_unit)//'^3/'//trim(m%force_unit)
+            write (u, fmt) 'D (bending stiffness per unit width)', flexural_rigidity(m%structure), &
+                trim(m%units%force)//' '//trim(m%units%length)
+            write (u, fmt) 'c = a/(4 pi G_f) (friction compliance)', &
+                friction_compliance(m%structure, m%ground), &
+                trim(m%units%length)//'^3/'//trim(m%units%force)
         end if
-        write (u, fmt) 'F (total vertical load)', total_vertical_load(m), trim(m%force_unit)
-        write (u, fmt) 'H (total horizontal load)', sum(m%loads%fx), trim(m%force_unit)
+        write (u, fmt) 'F (total vertical load)', total_vertical_load(m%loads), trim(m%units%force)
+        write (u, fmt) 'H (total horizontal load)', sum(m%loads%fx), trim(m%units%force)
         write (u, '(3x,a,i0,a,a,a)', advance='no') 'mesh: N_e = ', d%msh%ne, ', ', &
-            trim(m%grading), ', interpolation u w psi sigma_x sigma_z:'
+            trim(m%mesh%grading), ', interpolation u w psi sigma_x sigma_z:'
         do field = FIELD_U, FIELD_SZ
-            write (u, '(1x,a)', advance='no') interp_name(m%interp(field))
+            write (u, '(1x,a)', advance='no') interp_name(m%mesh%interp(field))
         end do
         write (u, '(a,i0,a,i0)') ', unknowns: displacements ', d%nv, ', tractions ', d%nr
         write (u, '(3x,a)') simplification_text(m, d, sol%decoupled)
-        write (u, '(3x,a,es9.2,a,es9.2,a,i0,a,i0)') 'solver: tol outer ', m%tol_outer, &
-            ', tol inner ', m%tol_inner, ', max outer ', m%max_outer, ', max inner ', m%max_inner
+        write (u, '(3x,a,es9.2,a,es9.2,a,i0,a,i0)') 'solver: tol outer ', m%solver%tol_outer, &
+            ', tol inner ', m%solver%tol_inner, ', max outer ', m%solver%max_outer, &
+                ', max inner ', m%solver%max_inner
     end subroutine write_groups
 
     subroutine write_conventions(u, m)
@@ -855,7 +873,7 @@ contains
             'traction ON THE SOIL, +x (plate: outward);'
         write (u, '(a)') '   the structure receives -sigma. gap = w_f - w_b >= 0; slip = u_b - u_f, '// &
             'u_b = u_s - (h/2) psi.'
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             write (u, '(a)') '   BEAM: sigma are line loads (force/length) over the width b; '// &
                 'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh (w''-psi).'
             write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F l^2), '// &
@@ -867,8 +885,9 @@ contains
             write (u, '(a)') '   Nondimensional: t = r/a, U,W = D u/(F a^2), Psi = D psi/(F a), '// &
                 'Sigma = pi a^2 sigma/F, N a/F, M/F, Q a/F.'
         end if
-        write (u, '(a)') '   Physical units: force '//trim(m%force_unit)//', length '// &
-            trim(m%length_unit)//(merge(' (labels of the NONDIM set)', '                           ', &
+        write (u, '(a)') '   Physical units: force '//trim(m%units%force)//', length '// &
+            trim(m%units%length)//(merge(' (labels of the NONDIM set)', &
+                '                           ', &
                                         m%nondim))
     end subroutine write_conventions
 
@@ -951,7 +970,7 @@ contains
         write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the section; '// &
             'a station at a concentrated load'
         write (u, '(a)') '   appears twice (left and right limit).'
-        if (m%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) write (u, '(a)') &
+        if (m%structure%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) write (u, '(a)') &
             '   A POINT load on the axis makes Q_r unbounded there (Q_r = -P/(2 pi r)); the r = 0 '// &
             'station shows the symmetry value 0, and max |Q_r| depends on the mesh.'
         if (any(tab%flag /= 0)) write (u, '(a)') '   FLAGGED rows: !T tension beyond the '// &
@@ -999,7 +1018,7 @@ contains
             write (u, '(3x,a)') 'use the mean pressure and the pressure at d from the edge '// &
                 'for design.'
         end if
-        if (has_concentrated_load(m)) write (u, '(3x,a)') &
+        if (has_concentrated_load(m%loads)) write (u, '(3x,a)') &
             'Under a POINT or RING load the pressure is singular too (logarithmic): its '// &
             'station maximum depends on the mesh.'
         if (s%point_on_plate) then
@@ -1031,17 +1050,19 @@ contains
         real(dp) :: scale
         integer :: k
         un = case_units(m)
-        scale = merge(1.0_dp/m%length, 1.0_dp, m%nondim)
+        scale = merge(1.0_dp/m%structure%length, 1.0_dp, m%nondim)
         write (u, '(3x,a)') 'intervals ('//trim(merge('t               ', un%length, m%nondim))// &
             '; boundaries midway between stations of different state):'
         do k = 1, size(iv)
-            write (u, '(6x,a,f12.5,a,f12.5)') merge('contact  from', 'lift-off from', iv(k)%contact), &
+            write (u, '(6x,a,f12.5,a,f12.5)') merge('contact  from', 'lift-off from', &
+                iv(k)%contact), &
                 iv(k)%x1*scale, ' to', iv(k)%x2*scale
         end do
         do k = 1, size(slip)
             write (u, '(6x,a,f12.5,a,f12.5,a)') 'slip     from', slip(k)%x1*scale, ' to', &
                 slip(k)%x2*scale, trim(merge(' (f = 0: all contact slips)', &
-                                              '                           ', m%f == 0.0_dp))
+                                              '                           ', &
+                                                  m%interface%f == 0.0_dp))
         end do
         if (size(slip) == 0 .and. any(iv%contact)) write (u, '(6x,a)') &
             'no slip: the base sticks wherever it is in contact'
@@ -1054,7 +1075,7 @@ contains
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(in) :: s
         real(dp) :: v
-        v = total_vertical_load(m)
+        v = total_vertical_load(m%loads)
         write (u, '(/,a)') ' 8. CHECKS'
         write (u, '(3x,a,es10.2,a,es8.1,a)') 'residual of 4.2a (equilibrium of the structure) ', &
             sol%residual(1), '  (limit ', check_limit, ')'
@@ -1066,9 +1087,9 @@ contains
             sol%applied(1), '  rel.diff ', rel_diff(sol%reaction(1), sol%applied(1), v)
         write (u, '(3x,a,2es16.8,a,es9.2)') 'horizontal: reaction, load ', sol%reaction(2), &
             sol%applied(2), '  rel.diff ', rel_diff(sol%reaction(2), sol%applied(2), v)
-        if (m%kind == MODEL_BEAM) write (u, '(3x,a,2es16.8,a,es9.2)') &
+        if (m%structure%kind == MODEL_BEAM) write (u, '(3x,a,2es16.8,a,es9.2)') &
             'moment:     reaction, load ', sol%reaction(3), sol%applied(3), '  rel.diff ', &
-            rel_diff(sol%reaction(3), sol%applied(3), v*m%length)
+            rel_diff(sol%reaction(3), sol%applied(3), v*m%structure%length)
         write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z gap|/max W at lift-off '// &
             'stations ', tab%complementarity, '  (penalty: O(eta_bar))'
         write (u, '(3x,a,es10.2,a)') 'compatibility max |pointwise gap|/max w at contact '// &
@@ -1082,7 +1103,8 @@ contains
         write (u, '(3x,a,es10.2,a,es9.2,a)') 'friction admissibility max(|Sigma_x| - f Sigma_z) ', &
             s%admissibility, '  (tolerance ', s%admissibility_tol, &
             merge(': ok)      ', ': EXCEEDED)', s%admissibility <= s%admissibility_tol)
-        write (u, '(3x,a,i0,a)') 'state counts at the stations: ', count(tab%state == STATE_STICK), &
+        write (u, '(3x,a,i0,a)') 'state counts at the stations: ', &
+            count(tab%state == STATE_STICK), &
             ' stick, '//int_text(count(tab%state == STATE_SLIP))//' slip, '// &
             int_text(count(tab%state == STATE_LIFTOFF))//' lift-off'
     end subroutine write_checks
@@ -1091,10 +1113,10 @@ contains
     pure real(dp) function nondim_sigma(m, sigma)
         type(model_t), intent(in) :: m
         real(dp), intent(in) :: sigma
-        if (m%kind == MODEL_BEAM) then
-            nondim_sigma = sigma*m%length/total_vertical_load(m)
+        if (m%structure%kind == MODEL_BEAM) then
+            nondim_sigma = sigma*m%structure%length/total_vertical_load(m%loads)
         else
-            nondim_sigma = sigma*pi*m%length**2/total_vertical_load(m)
+            nondim_sigma = sigma*pi*m%structure%length**2/total_vertical_load(m%loads)
         end if
     end function nondim_sigma
 

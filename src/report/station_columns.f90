@@ -52,17 +52,17 @@ contains
     pure function case_units(m) result(un)
         type(model_t), intent(in) :: m
         type(units_t) :: un
-        un%length = m%length_unit
-        un%force = m%force_unit
-        un%disp = m%length_unit
+        un%length = m%units%length
+        un%force = m%units%force
+        un%disp = m%units%length
         un%disp_factor = 1.0_dp
-        if (trim(m%length_unit) == 'm' .and. .not. m%nondim) then
+        if (trim(m%units%length) == 'm' .and. .not. m%nondim) then
             un%disp = 'mm'
             un%disp_factor = 1.0e3_dp
         end if
-        un%pressure = pressure_unit(m%force_unit, m%length_unit)
-        un%line_load = trim(m%force_unit)//'/'//trim(m%length_unit)
-        un%moment = trim(m%force_unit)//'.'//trim(m%length_unit)
+        un%pressure = pressure_unit(m%units%force, m%units%length)
+        un%line_load = trim(m%units%force)//'/'//trim(m%units%length)
+        un%moment = trim(m%units%force)//'.'//trim(m%units%length)
     end function case_units
 
     !> The SI name of force/length^2 where there is one (kN/m^2 = kPa), else 'F/L^2'.
@@ -88,10 +88,10 @@ contains
         type(model_t), intent(in) :: m
         type(column_t), allocatable :: cols(:)
         real(dp) :: f, l, rig, s_disp, s_psi, s_sig
-        f = total_vertical_load(m)
-        l = m%length
-        rig = flexural_rigidity(m)
-        if (m%kind == MODEL_BEAM) then
+        f = total_vertical_load(m%loads)
+        l = m%structure%length
+        rig = flexural_rigidity(m%structure)
+        if (m%structure%kind == MODEL_BEAM) then
             s_disp = rig/(f*l**3)
             s_psi = rig/(f*l**2)
             s_sig = l/f
@@ -110,9 +110,10 @@ contains
                 col('slip', 'slip', '', 'slip u_b - u_f', Q_SLIP, s_disp), &
                 col('state', 'state', '', '0 lift-off, 1 stick, 2 slip', Q_STATE, 1.0_dp)]
         cols(size(cols))%integer_valued = .true.
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             cols = [cols, col('N/F', 'N/F', '', 'axial force', Q_N, 1.0_dp/f), &
-                    col('M/(Fl)', 'M/(Fl)', '', 'bending moment (> 0 hogging)', Q_M, 1.0_dp/(f*l)), &
+                    col('M/(Fl)', 'M/(Fl)', '', 'bending moment (> 0 hogging)', Q_M, &
+                        1.0_dp/(f*l)), &
                     col('Q/F', 'Q/F', '', 'shear force', Q_Q, 1.0_dp/f)]
         else
             cols = [cols, col('N_r*a/F', 'N_r*a/F', '', 'radial membrane force', Q_N, l/f), &
@@ -136,26 +137,29 @@ contains
         type(units_t) :: un
         character(len=16) :: traction
         un = case_units(m)
-        traction = merge(un%line_load, un%pressure, m%kind == MODEL_BEAM)
-        cols = [col(merge('x', 'r', m%kind == MODEL_BEAM), merge('x', 'r', m%kind == MODEL_BEAM), &
+        traction = merge(un%line_load, un%pressure, m%structure%kind == MODEL_BEAM)
+        cols = [col(merge('x', 'r', m%structure%kind == MODEL_BEAM), merge('x', 'r', &
+            m%structure%kind == MODEL_BEAM), &
                     un%length, 'position', Q_X, 1.0_dp), &
-                col('u_s', 'u_s', un%disp, 'mid-plane horizontal displacement', Q_U, un%disp_factor), &
+                col('u_s', 'u_s', un%disp, 'mid-plane horizontal displacement', Q_U, &
+                    un%disp_factor), &
                 col('w', 'w', un%disp, 'settlement', Q_W, un%disp_factor), &
                 col('psi', 'psi', 'rad', 'section rotation', Q_PSI, 1.0_dp), &
                 col('sigma_x', 'sigma_x', traction, 'shear traction on the soil', Q_SX, 1.0_dp), &
                 col('sigma_z', 'sigma_z', traction, 'contact pressure (compression > 0)', &
                     Q_SZ, 1.0_dp)]
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             cols = [cols, col('p_x', 'p_x', un%pressure, 'shear stress sigma_x/b', Q_SX, &
-                              1.0_dp/m%b), &
-                    col('p_z', 'p_z', un%pressure, 'contact pressure sigma_z/b', Q_SZ, 1.0_dp/m%b)]
+                              1.0_dp/m%structure%b), &
+                    col('p_z', 'p_z', un%pressure, 'contact pressure sigma_z/b', Q_SZ, &
+                        1.0_dp/m%structure%b)]
         end if
         cols = [cols, col('gap', 'gap', un%disp, 'gap w_f - w_b (0 where in contact)', Q_GAP, &
                           un%disp_factor), &
                 col('slip', 'slip', un%disp, 'slip u_b - u_f', Q_SLIP, un%disp_factor), &
                 col('state', 'state', '', '0 lift-off, 1 stick, 2 slip', Q_STATE, 1.0_dp)]
         cols(size(cols))%integer_valued = .true.
-        if (m%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM) then
             cols = [cols, col('N', 'N', un%force, 'axial force', Q_N, 1.0_dp), &
                     col('M', 'M', un%moment, 'bending moment (> 0 hogging)', Q_M, 1.0_dp), &
                     col('Q', 'Q', un%force, 'shear force', Q_Q, 1.0_dp)]

@@ -95,14 +95,15 @@ contains
         end if
         allocate (rec(2, 0:d%msh%ne))
         rec(:, :) = nodal_traction_means(d, sol%z(d%nv + 1:))
-        if (m%kind /= MODEL_BEAM) rec(1, 0) = 0.0_dp   ! radial shear vanishes on the axis
+        if (m%structure%kind /= MODEL_BEAM) rec(1, 0) = 0.0_dp   ! radial shear vanishes on the axis
         stations: do i = 1, tab%n
-            call fields_at(section_of(m), d, sol, rec, tab%val(Q_X, i), tab%side(i), tab%val(:, i))
+            call fields_at(section_of(m%structure), d, sol, rec, tab%val(Q_X, i), tab%side(i), &
+                tab%val(:, i))
             tab%state(i) = contact_state(tab%val(Q_SX, i), tab%val(Q_SZ, i), &
-                                         friction_threshold(m%f, tab%val(Q_SZ, i)))
+                                         friction_threshold(m%interface%f, tab%val(Q_SZ, i)))
             gap_pw(i) = w_f(i) - tab%val(Q_W, i)
             call gap_and_slip(m, tab%state(i), gap_pw(i), &
-                              tab%val(Q_U, i) - 0.5_dp*m%h*tab%val(Q_PSI, i) - u_f(i), &
+                              tab%val(Q_U, i) - 0.5_dp*m%structure%h*tab%val(Q_PSI, i) - u_f(i), &
                               tab%val(Q_SX, i), tab%val(Q_GAP, i), tab%val(Q_SLIP, i))
             tab%val(Q_STATE, i) = real(tab%state(i), dp)
         end do stations
@@ -128,7 +129,7 @@ contains
             do g = 1, 4
                 p = displacement_at(d, sol%z(1:d%nv), e, xg(g))
                 wt = 0.5_dp*h*wg(g)
-                if (m%kind /= MODEL_BEAM) wt = wt*p%x
+                if (m%structure%kind /= MODEL_BEAM) wt = wt*p%x
                 w_sum = w_sum + wt*p%val(2)
                 wt_sum = wt_sum + wt
             end do
@@ -149,7 +150,7 @@ contains
         type(station_table_t), intent(in) :: tab       !! the printed table (tabulate)
         type(station_table_t), intent(out) :: design
         type(error_t), allocatable, intent(out) :: err
-        if (m%stations < 2) then
+        if (m%output%stations < 2) then
             design = tab
             return
         end if
@@ -173,8 +174,9 @@ contains
         x0 = d%msh%x(0)
         x1 = d%msh%x(d%msh%ne)
         tol = position_tolerance(d)
-        if (m%stations >= 2) then
-            x = [(x0 + (x1 - x0)*real(i - 1, dp)/real(m%stations - 1, dp), i=1, m%stations)]
+        if (m%output%stations >= 2) then
+            x = [(x0 + (x1 - x0)*real(i - 1, dp)/real(m%output%stations - 1, dp), i=1, &
+                m%output%stations)]
             if (nodes_too) x = merged(x, d%msh%x, tol)
         else
             x = [d%msh%x]      ! (re-based to 1:n; the mesh is x(0:ne))
@@ -209,7 +211,7 @@ contains
         allocate (x(0))
         do i = 1, size(m%loads)
             if (m%loads(i)%kind == LOAD_PATCH) cycle
-            if (m%kind /= MODEL_BEAM .and. m%loads(i)%x1 <= x_min) cycle
+            if (m%structure%kind /= MODEL_BEAM .and. m%loads(i)%x1 <= x_min) cycle
             x = [x, m%loads(i)%x1]
         end do
     end function concentrated_positions
@@ -345,7 +347,7 @@ contains
         case (STATE_LIFTOFF)
             gap = gap_pointwise
         case (STATE_STICK)
-            slip = friction_compliance(m)*m%eps_bar*sigma_x
+            slip = friction_compliance(m%structure, m%ground)*m%interface%eps_bar*sigma_x
         end select
     end subroutine gap_and_slip
 
@@ -373,16 +375,16 @@ contains
             x = tab%val(Q_X, i)
             call traction_integrals(m, d, sol, cum, xg, wg, x, t0, t1, hoop)
             ld = load_integrals(m, x, tab%side(i), position_tolerance(d))
-            if (m%kind == MODEL_BEAM) then
+            if (m%structure%kind == MODEL_BEAM) then
                 tab%val(Q_Q, i) = t0(2) - ld(1)
                 tab%val(Q_N, i) = t0(1) - ld(3)
-                tab%val(Q_M, i) = -(t1(2) - ld(2)) - 0.5_dp*m%h*(t0(1) + ld(3)) - ld(4)
+                tab%val(Q_M, i) = -(t1(2) - ld(2)) - 0.5_dp*m%structure%h*(t0(1) + ld(3)) - ld(4)
             else if (x > position_tolerance(d)) then
                 two_pi_r = 2.0_dp*pi*x
                 tab%val(Q_Q, i) = (t0(2) - ld(1))/two_pi_r
                 tab%val(Q_N, i) = (hoop(1) - (ld(3) - t0(1))/(2.0_dp*pi))/x
                 tab%val(Q_M, i) = (hoop(2) - (t1(2) - ld(2))/(2.0_dp*pi) &
-                                   - 0.5_dp*m%h*(t0(1) + ld(3))/(2.0_dp*pi))/x
+                                   - 0.5_dp*m%structure%h*(t0(1) + ld(3))/(2.0_dp*pi))/x
             else
                 ! the axis: Q_r = 0 by symmetry, N_r = N_t and M_r = M_t (isotropic centre)
                 tab%val(Q_Q, i) = 0.0_dp
@@ -444,13 +446,13 @@ contains
         integer :: g
         part = 0.0_dp
         if (hi <= lo) return
-        sec = section_of(m)
+        sec = section_of(m%structure)
         do g = 1, 4
             s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
             wt = 0.5_dp*wg(g)*(hi - lo)
             xi = 2.0_dp*(s - d%msh%x(e - 1))/(d%msh%x(e) - d%msh%x(e - 1)) - 1.0_dp
             sig = traction_at(d, sol%z(d%nv + 1:), e, xi)
-            if (m%kind /= MODEL_BEAM) then
+            if (m%structure%kind /= MODEL_BEAM) then
                 res = resultants(sec, displacement_at(d, sol%z(1:d%nv), e, xi))
                 part(5:6) = part(5:6) + wt*res([2, 4])
                 wt = wt*2.0_dp*pi*s
@@ -476,7 +478,8 @@ contains
                     lo = l%x1
                     hi = min(x, l%x2)
                     if (hi <= lo) cycle loads
-                    call patch_fractions(m%kind == MODEL_BEAM, l%x1, l%x2, lo, hi, x, a0, a1)
+                    call patch_fractions(m%structure%kind == MODEL_BEAM, l%x1, l%x2, lo, hi, x, &
+                        a0, a1)
                     ld(1:3) = ld(1:3) + [l%fz*a0, l%fz*a1, l%fx*a0]
                 else if (l%x1 < x - tol .or. (abs(l%x1 - x) <= tol .and. side > 0)) then
                     if (l%kind == LOAD_MOMENT) then
@@ -513,13 +516,13 @@ contains
         real(dp) :: w_scale, mean_pressure, sigma_scale
         logical :: lifted(tab%n)
         w_scale = max(maxval(abs(tab%val(Q_W, :))), tiny(1.0_dp))
-        if (m%kind == MODEL_BEAM) then
-            mean_pressure = total_vertical_load(m)/m%length
+        if (m%structure%kind == MODEL_BEAM) then
+            mean_pressure = total_vertical_load(m%loads)/m%structure%length
         else
-            mean_pressure = total_vertical_load(m)/(pi*m%length**2)
+            mean_pressure = total_vertical_load(m%loads)/(pi*m%structure%length**2)
         end if
         ! the penalty leaves sigma_z ~ -eta_bar (nondimensional) where lifted off
-        tab%tension_tol = max(1.0e3_dp*m%eta_bar, 1.0e-12_dp)*mean_pressure
+        tab%tension_tol = max(1.0e3_dp*m%interface%eta_bar, 1.0e-12_dp)*mean_pressure
         lifted = tab%state == STATE_LIFTOFF
         tab%flag = 0
         where (tab%val(Q_SZ, :) < -tab%tension_tol) tab%flag = tab%flag + FLAG_TENSION

@@ -50,7 +50,7 @@ contains
         type(entry_t), allocatable :: e(:)
         type(scales_t) :: k
         logical :: beam
-        beam = m%kind == MODEL_BEAM
+        beam = m%structure%kind == MODEL_BEAM
         k = print_scales(m)
         e = [ent('settlement_max', 'max settlement', k%u_disp, s%w_max%value*k%disp), &
              ent('settlement_max_x', '  at', k%u_length, s%w_max%x*k%length), &
@@ -78,9 +78,11 @@ contains
              ent('edge_distance', 'distance d from the edge (= h)', k%u_length, &
                  s%edge_distance*k%length)]
         if (beam) e = [e, ent('pressure_near_left_end', 'pressure at d from the left end', &
-                              k%u_pressure, s%edge_pressure(1)*k%pressure, s%edge_point_in_contact(1))]
+                              k%u_pressure, s%edge_pressure(1)*k%pressure, &
+                                  s%edge_point_in_contact(1))]
         e = [e, ent(choose(beam, 'pressure_near_right_end', 'pressure_near_rim'), &
-                    choose(beam, 'pressure at d from the right end', 'pressure at d from the rim'), &
+                    choose(beam, 'pressure at d from the right end', &
+                        'pressure at d from the rim'), &
                     k%u_pressure, s%edge_pressure(2)*k%pressure, &
                     s%edge_point_in_contact(2))]
         e = [e, ent('pressure_centre', choose(beam, 'pressure at the centre x = 0', &
@@ -133,14 +135,14 @@ contains
         type(scales_t), intent(in) :: k
         type(entry_t), allocatable :: e(:)
         character(len=4) :: sym
-        sym = merge('M   ', 'M_r ', m%kind == MODEL_BEAM)
+        sym = merge('M   ', 'M_r ', m%structure%kind == MODEL_BEAM)
         e = [ent('moment_sagging', 'max sagging '//trim(sym)//' (bottom in tension)', k%u_moment, &
                  s%m_sag%value*k%moment, s%m_sag%defined), &
              ent('moment_sagging_x', '  at', k%u_length, s%m_sag%x*k%length, s%m_sag%defined), &
              ent('moment_hogging', 'max hogging '//trim(sym)//' (top in tension)', k%u_moment, &
                  s%m_hog%value*k%moment, s%m_hog%defined), &
              ent('moment_hogging_x', '  at', k%u_length, s%m_hog%x*k%length, s%m_hog%defined)]
-        if (m%kind == MODEL_BEAM) return
+        if (m%structure%kind == MODEL_BEAM) return
         e = [e, ent('hoop_moment_sagging', 'max sagging M_theta', k%u_moment, &
                     s%mt_sag%value*k%moment, s%mt_sag%defined), &
              ent('hoop_moment_sagging_x', '  at', k%u_length, s%mt_sag%x*k%length, &
@@ -165,13 +167,13 @@ contains
         k%u_rotation = ''
         k%u_subgrade = ''
         if (m%nondim) then
-            f = total_vertical_load(m)
-            l = m%length
-            rig = flexural_rigidity(m)
+            f = total_vertical_load(m%loads)
+            l = m%structure%length
+            rig = flexural_rigidity(m%structure)
             k%length = 1.0_dp/l
-            if (m%kind == MODEL_BEAM) then
+            if (m%structure%kind == MODEL_BEAM) then
                 k%disp = rig/(f*l**3)
-                k%pressure = l*m%b/f       ! Sigma = l sigma / F, sigma = b p
+                k%pressure = l*m%structure%b/f       ! Sigma = l sigma / F, sigma = b p
                 k%moment = 1.0_dp/(f*l)
                 k%shear = 1.0_dp/f
             else
@@ -192,7 +194,7 @@ contains
         k%u_shear = un%force
         k%u_rotation = 'rad'
         k%u_subgrade = trim(un%force)//'/'//trim(un%length)//'^3'
-        if (m%kind /= MODEL_BEAM) then
+        if (m%structure%kind /= MODEL_BEAM) then
             k%u_moment = trim(un%moment)//'/'//trim(un%length)
             k%u_shear = un%line_load
         end if

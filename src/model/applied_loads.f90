@@ -1,0 +1,54 @@
+!> The loads on the structure's top face (LOAD cards), in the deck's units: forces F,
+!! lengths L, moments F L. Vertical forces are positive downward, horizontal ones along +x.
+module applied_loads
+    use kinds, only: dp
+    implicit none
+    private
+
+    integer, parameter, public :: LOAD_POINT = 1, LOAD_PATCH = 2, LOAD_MOMENT = 3, LOAD_RING = 4
+
+    !> One LOAD card.
+    type, public :: load_t
+        integer :: kind = LOAD_POINT   !! LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING
+        real(dp) :: fz = 0.0_dp        !! vertical force, downward positive (moment for MOMENT)
+        real(dp) :: fx = 0.0_dp        !! horizontal force, +x (beam only), on the top face
+        real(dp) :: x1 = 0.0_dp        !! position, or start of a patch [L]
+        real(dp) :: x2 = 0.0_dp        !! end of a patch [L]
+        integer :: line = 0            !! deck line of the card (for messages)
+    end type load_t
+
+    public :: total_vertical_load, has_concentrated_load, load_positions
+
+contains
+
+    !> A POINT or RING load acts: the contact pressure is singular under it (log), so its
+    !! largest station value depends on the mesh.
+    pure logical function has_concentrated_load(loads)
+        type(load_t), intent(in) :: loads(:)   !! the LOAD cards
+        has_concentrated_load = any(loads%kind == LOAD_POINT .or. loads%kind == LOAD_RING)
+    end function has_concentrated_load
+
+    !> Sum of the vertical forces of all loads (moments excluded) [F].
+    pure real(dp) function total_vertical_load(loads)
+        type(load_t), intent(in) :: loads(:)   !! the LOAD cards
+        integer :: i
+        total_vertical_load = 0.0_dp
+        do i = 1, size(loads)
+            if (loads(i)%kind /= LOAD_MOMENT) total_vertical_load = total_vertical_load &
+                                                                    + loads(i)%fz
+        end do
+    end function total_vertical_load
+
+    !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading)
+    !! [L], in card order.
+    pure function load_positions(loads) result(x)
+        type(load_t), intent(in) :: loads(:)   !! the LOAD cards
+        real(dp), allocatable :: x(:)
+        integer :: i
+        allocate (x(0))
+        do i = 1, size(loads)
+            x = [x, loads(i)%x1]
+            if (loads(i)%kind == LOAD_PATCH) x = [x, loads(i)%x2]
+        end do
+    end function load_positions
+end module applied_loads
