@@ -1,6 +1,6 @@
 !> bench_tabulation: processor time of the station tabulation (station_results::tabulate, whose
 !! cost is the half-space surface displacement at every station) and of the whole case
-!! (analysis_driver::solve_case: solve, tabulation, summary, error estimate, files; no figure)
+!! (analysis_driver::run_case: solve, tabulation, summary, error estimate, files; no figure)
 !! for the plate and beam decks at several N_e; and the station displacements themselves, written
 !! to files so that two builds (before and after a change) can be compared. Not a test: it
 !! measures.
@@ -24,7 +24,7 @@ program bench_tabulation
     use halfspace_operator, only: surface_displacement
     use station_results, only: station_table_t, tabulate
     use station_columns, only: Q_X
-    use analysis_driver, only: case_result_t, solve_case
+    use analysis_driver, only: case_result_t, run_case
     implicit none
 
     character(len=*), parameter :: decks(2) = [character(len=24) :: 'input/plate_nondim.dat', &
@@ -125,9 +125,9 @@ contains
         do rep = 1, reps_case
             mc = m
             t0 = now()
-            call solve_case(deck, mc, label, dir//'/tmp', 'case', .false., .true., -1, res)
+            call run_case(deck, mc, label, dir//'/tmp', 'case', .false., .true., -1, res)
             t_case = min(t_case, now() - t0)
-            if (res%status /= 0) error stop 'bench_tabulation: solve_case failed'
+            if (res%status /= 0) error stop 'bench_tabulation: run_case failed'
         end do
         write (u, '("| ",a," | ",i0," | ",i0," | ",f0.3," | ",i0," | ",f0.2," | ",i0," |")') &
             trim(stems(k)), ne, tab%n, 1.0e3_dp*t_tab, reps_tab, 1.0e3_dp*t_case, reps_case

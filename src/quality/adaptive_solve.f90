@@ -38,11 +38,12 @@ module adaptive_solve
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
-    use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
+    use station_results, only: station_table_t
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
-    use design_summary, only: summary_t, summarise
-    use summary_table, only: entry_t, summary_entries
-    use error_estimate, only: case_entries, attach_estimates, is_estimated
+    use design_summary, only: summary_t
+    use summary_table, only: entry_t
+    use solved_case, only: case_t, finish_case
+    use error_estimate, only: coarse_case, attach_estimates, is_estimated
     implicit none
     private
 
@@ -238,17 +239,16 @@ contains
         type(assessment_t), intent(inout) :: a
         type(station_table_t), intent(inout) :: prev_nodes
         type(assessment_t), intent(in), optional :: prev   !! (not a itself)
-        type(station_table_t) :: tab, tab_nodes, tab2
-        type(summary_t) :: s
+        type(case_t) :: c
+        type(station_table_t) :: tab2
         type(entry_t), allocatable :: e2(:), e4(:)
         type(error_t), allocatable :: err
         logical :: ok
         ! the indicators compare values at the nodes, as the design values are read there
-        call tabulate(m, d, sol, tab, err)
-        if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, tab_nodes, err)
+        call finish_case(m, d, sol, c, err)
         if (allocated(err)) error stop 'adaptive_solve: a solved case could not be tabulated'
-        s = summarise(m, sol, tab_nodes)
-        a%e = summary_entries(m, s, contact_extent(tab_nodes, m%structure%length))
+        associate (s => c%summary, tab_nodes => c%design)
+        a%e = c%entries
         call locate_boundaries(sol, a%boundary, a%liftoff)
         if (allocated(a%eta)) deallocate (a%eta)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere
@@ -267,6 +267,7 @@ contains
         a%targets = target_positions(m, d, s, a)
         a%rough = feature_elements(m, d, tab_nodes, a%boundary)
         prev_nodes = tab_nodes
+        end associate
     end subroutine assess
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
@@ -280,7 +281,7 @@ contains
         logical, intent(out) :: ok
         type(mesh_t) :: c2, c4
         type(discretization_t) :: d2, d4
-        type(station_table_t) :: tab4, tab_unused
+        type(case_t) :: c2_case, c4_case
         logical, allocatable :: p2(:), p4(:)
         real(dp) :: ratio, floor
         ok = .false.
@@ -289,9 +290,12 @@ contains
         if (c4%ne < min_coarse .or. c2%ne >= d%msh%ne .or. c4%ne >= c2%ne) return
         call discretise_mesh(m, c2, d2)
         call discretise_mesh(m, c4, d4)
-        call case_entries(m, d2, e2, tab_unused, ok, tab2)
-        if (ok) call case_entries(m, d4, e4, tab4, ok)
+        call coarse_case(m, d2, c2_case, ok)
+        if (ok) call coarse_case(m, d4, c4_case, ok)
         if (.not. ok) return
+        e2 = c2_case%entries
+        e4 = c4_case%entries
+        tab2 = c2_case%design
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
         floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
         call attach_estimates(m, a%e, e2, e4, ratio, floor, loads_on_nodes(m, d%msh) .and. &

@@ -18,9 +18,8 @@ module error_estimate
     use shape_functions, only: INTERP_P1
     use discretization, only: discretization_t, new_discretization, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
-    use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
-    use design_summary, only: summary_t, summarise
-    use summary_table, only: entry_t, summary_entries
+    use summary_table, only: entry_t
+    use solved_case, only: case_t, solve_on, finish_case
     implicit none
     private
 
@@ -31,7 +30,7 @@ module error_estimate
         'pressure_centre', 'shear_force_max']
     integer, parameter :: min_coarse_elements = 4
 
-    public :: estimate_errors, error_method_text, case_entries, attach_estimates, is_estimated, &
+    public :: estimate_errors, error_method_text, coarse_case, attach_estimates, is_estimated, &
               formal_order
 
 contains
@@ -165,7 +164,7 @@ contains
         logical, intent(out) :: on_nodes    !! every concentrated load on a node of this mesh
         type(model_t) :: mc
         type(discretization_t) :: d
-        type(station_table_t) :: tab
+        type(case_t) :: c
         type(error_t), allocatable :: err
         integer :: k
         mc = m
@@ -177,11 +176,13 @@ contains
         on_nodes = loads_on_nodes(m, d%msh)
         do k = 1, size(known)
             if (same_nodes(known(k)%x, d%msh%x)) then
-                call case_entries(mc, d, e, tab, ok, known=known(k))
+                call coarse_case(mc, d, c, ok, known(k))
+                if (ok) e = c%entries
                 return
             end if
         end do
-        call case_entries(mc, d, e, tab, ok)
+        call coarse_case(mc, d, c, ok)
+        if (ok) e = c%entries
     end subroutine coarse_entries
 
     !> Whether two meshes have the same nodes (to 1e-12 of the length).
@@ -191,38 +192,28 @@ contains
         if (same_nodes) same_nodes = all(abs(x1 - x2) <= 1.0e-12_dp*(x2(size(x2)) - x2(1)))
     end function same_nodes
 
-    !> The key results of the case solved on the discretisation d, and its station table
-    !! (and, if asked, the table at the nodes); ok false when the solve fails.
-    subroutine case_entries(m, d, e, tab, ok, node_tab, known)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(entry_t), allocatable, intent(out) :: e(:)
-        type(station_table_t), intent(out) :: tab
-        logical, intent(out) :: ok
-        type(station_table_t), intent(out), optional :: node_tab
+    !> The case solved on the discretisation d, or finished from a known solution on d; ok
+    !! false when the solve fails.
+    subroutine coarse_case(m, d, c, ok, known)
+        type(model_t), intent(in) :: m                 !! the model
+        type(discretization_t), intent(in) :: d        !! a coarser mesh of it
+        type(case_t), intent(out) :: c                 !! the case on d
+        logical, intent(out) :: ok                     !! solved and tabulated
         type(coarse_solution_t), intent(in), optional :: known   !! the solution on d
         type(solution_t) :: sol
-        type(summary_t) :: s
         type(error_t), allocatable :: err
-        type(station_table_t) :: design
-        ok = .false.
         if (present(known)) then
             sol%z = known%z
             sol%admissibility = known%admissibility
             sol%reaction = known%reaction
             sol%applied = known%applied
             sol%n_solves = known%n_solves
+            call finish_case(m, d, sol, c, err)
         else
-            call solve_contact(m, d, sol, err)
+            call solve_on(m, d, c, err)
         end if
-        if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
-        if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, design, err)
-        if (allocated(err)) return
-        s = summarise(m, sol, design)
-        e = summary_entries(m, s, contact_extent(design, m%structure%length))
-        if (present(node_tab)) node_tab = design
-        ok = .true.
-    end subroutine case_entries
+        ok = .not. allocated(err)
+    end subroutine coarse_case
 
     !> GCI estimate of the error of q1 from q1, q2, q4 (fine, medium, coarse; refinement
     !! ratio r between them); order: the observed p, or -1 when p = 1 was assumed.

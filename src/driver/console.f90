@@ -1,0 +1,103 @@
+!> What a run says on the terminal: one line per case with its key results (or its error)
+!! and warnings, and the progress of a long run.
+module console
+    use iso_fortran_env, only: int64
+    use kinds, only: dp
+    use errors, only: EXIT_OK
+    use summary_table, only: entry_t
+    use case_files, only: case_result_t
+    implicit none
+    private
+
+    public :: report_case, report_progress, seconds
+
+contains
+
+    !> The console line (or error) and the warnings of one case; status: the worst so far.
+    subroutine report_case(log_unit, err_unit, deck_path, out_dir, r, status)
+        integer, intent(in) :: log_unit, err_unit
+        character(len=*), intent(in) :: deck_path, out_dir
+        type(case_result_t), intent(in) :: r
+        integer, intent(inout) :: status
+        integer :: k
+        if (r%status == EXIT_OK) then
+            write (log_unit, '(a)') r%name//': solved  '//console_summary(r%entries)// &
+                '  -> '//out_dir//'/'//r%name//'.txt'
+        else
+            write (err_unit, '(a)') 'ERROR: '//r%name//' ('//deck_path//'): '//r%message
+        end if
+        if (len(r%message) > 0 .and. r%status == EXIT_OK) &
+            write (err_unit, '(a)') 'WARNING: '//r%name//': '//r%message
+        do k = 1, size(r%warnings)
+            write (err_unit, '(a)') 'WARNING: '//r%name//' ('//deck_path//'): '//trim(r%warnings(k))
+        end do
+        status = max(status, r%status)
+    end subroutine report_case
+
+    !> Standard-error progress: cases done of n, the elapsed time and an estimate of the time
+    !! left (the mean time per case so far).
+    subroutine report_progress(unit, done, n, name, clock_start)
+        integer, intent(in) :: unit, done, n
+        character(len=*), intent(in) :: name
+        integer(int64), intent(in) :: clock_start
+        integer(int64) :: now, rate
+        real(dp) :: elapsed
+        character(len=80) :: eta
+        call system_clock(now, rate)
+        elapsed = real(now - clock_start, dp)/real(rate, dp)
+        eta = ''
+        if (done < n) eta = ', about '//seconds(elapsed/real(done, dp)*real(n - done, dp))//' left'
+        write (unit, '(a,i0,a,i0,a)') 'fricon: ', done, ' of ', n, ' done ('//name//'), '// &
+            seconds(elapsed)//' elapsed'//trim(eta)
+        flush (unit)
+    end subroutine report_progress
+
+    pure function seconds(t) result(text)
+        real(dp), intent(in) :: t
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write (buf, '(f12.1)') t
+        text = trim(adjustl(buf))//' s'
+    end function seconds
+
+    !> The console line: key results with their units.
+    pure function console_summary(e) result(text)
+        type(entry_t), intent(in) :: e(:)
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: keys(4) = [character(len=24) :: 'settlement_max', &
+                                                   'differential_settlement', 'pressure_mean', &
+                                                   'contact_extent_t']
+        character(len=*), parameter :: names(4) = [character(len=12) :: 'w_max', 'w_diff', &
+                                                    'p_mean', 'extent t']
+        character(len=24) :: buf
+        integer :: i, k
+        text = ''
+        do k = 1, size(keys)
+            do i = 1, size(e)
+                if (trim(e(i)%key) /= trim(keys(k))) cycle
+                buf = four_digits(e(i)%value)
+                text = text//trim(names(k))//' = '//trim(adjustl(buf))
+                if (len_trim(e(i)%unit) > 0) text = text//' '//trim(e(i)%unit)
+                if (k < size(keys)) text = text//',  '
+            end do
+        end do
+    end function console_summary
+
+    !> x with four significant digits: fixed notation from 1e-3 to 1e5, else E notation.
+    pure function four_digits(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=24) :: text
+        integer :: decimals
+        if (x == 0.0_dp) then
+            text = '0'
+        else if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e5_dp) then
+            decimals = max(0, 3 - floor(log10(abs(x))))
+            write (text, '(f0.'//achar(iachar('0') + min(decimals, 9))//')') x
+            if (text(1:1) == '.') text = '0'//text
+            if (text(1:2) == '-.') text = '-0'//text(2:)
+        else
+            write (text, '(es10.3)') x
+            text = adjustl(text)
+        end if
+    end function four_digits
+end module console

@@ -1,0 +1,116 @@
+!> The layer above the case pipeline that goes back to the solver: one case brought to the
+!! quality its deck asks for, by one of two policies, then its error estimated.
+!!
+!!  * ADAPT card: adaptive refinement to a tolerance (adaptive_solve); the estimates are
+!!    those of the final cycle.
+!!  * otherwise the MESH card's mesh, refined by doubling while friction is not resolved
+!!    pointwise (admissible_refinement); then the estimate from the same case on N_e/2 and
+!!    N_e/4 elements (error_estimate), unless estimates are switched off.
+!!
+!! Every refined or coarsened solve is a new case of the one pipeline (solved_case); the
+!! deck's model is never changed.
+module case_quality
+    use kinds, only: dp
+    use errors, only: error_t
+    use model, only: model_t
+    use discretization, only: discretization_t, new_discretization, loads_on_nodes
+    use contact_solver, only: solution_t
+    use solved_case, only: case_t, solve_case, finish_case
+    use plausibility, only: warning_length, settlement_warnings
+    use error_estimate, only: estimate_errors
+    use adaptive_solve, only: adaptation_t, solve_adaptive
+    use admissible_refinement, only: refine_until_admissible, require_admissible
+    implicit none
+    private
+
+    public :: solve_to_quality
+
+contains
+
+    !> Solve m to the quality its deck asks for (module header). On failure c holds what
+    !! there is of the failed case (its discretisation, the solver's history) for the report.
+    subroutine solve_to_quality(m, estimates, progress_unit, c, adaptation, warnings, err)
+        type(model_t), intent(in) :: m                  !! the deck's model
+        logical, intent(in) :: estimates                !! estimate errors (two coarse solves)
+        integer, intent(in) :: progress_unit            !! >= 0: each Newton step there
+        type(case_t), intent(out) :: c                  !! the case solved
+        type(adaptation_t), intent(out) :: adaptation   !! what ADAPT did (adapted false else)
+        character(len=warning_length), allocatable, intent(out) :: warnings(:)  !! on results
+        type(error_t), allocatable, intent(out) :: err  !! no result (status in err%code)
+        allocate (warnings(0))
+        if (m%mesh%adapt_tol > 0.0_dp) then
+            call adapt(m, c, adaptation, err)
+        else
+            call solve_case(m, c, err, progress_unit)
+            if (.not. allocated(err)) call refine_until_admissible(c, progress_unit, &
+                                                                   warnings, err)
+        end if
+        if (.not. allocated(err)) call require_admissible(c%summary, err)
+        if (allocated(err)) return
+        warnings = [character(len=warning_length) :: warnings, &
+                    settlement_warnings(c%model, c%summary%w_max%value)]
+        if (adaptation%adapted) then
+            call take_adapted_estimates(adaptation, c, warnings)
+            return
+        end if
+        if (.not. loads_on_nodes(m, c%d%msh)) &
+            warnings = [character(len=warning_length) :: warnings, &
+                        'a POINT, RING or MOMENT load lies between two nodes of '// &
+                        'the mesh: results near it converge at first order only '// &
+                        '(so do their error estimates); MESH grading LOADS puts '// &
+                        'a node at every load']
+        if (estimates) call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
+                                            c%summary%edge_in_contact)
+    end subroutine solve_to_quality
+
+    !> The ADAPT policy: adaptive refinement from the MESH card's mesh, then the case's
+    !! results on the final mesh.
+    subroutine adapt(m, c, adaptation, err)
+        type(model_t), intent(in) :: m                  !! the deck's model
+        type(case_t), intent(out) :: c                  !! the case on the adapted mesh
+        type(adaptation_t), intent(out) :: adaptation   !! the cycles
+        type(error_t), allocatable, intent(out) :: err  !! the first mesh failed
+        type(discretization_t) :: d
+        type(solution_t) :: sol
+        call new_discretization(m, d, err)
+        if (.not. allocated(err)) call solve_adaptive(m, d, sol, adaptation, err)
+        if (allocated(err)) then
+            c%model = m
+            c%d = d
+            c%sol = sol
+            allocate (c%entries(0))
+            return
+        end if
+        call finish_case(m, d, sol, c, err)
+    end subroutine adapt
+
+    !> The estimates of the adaptation's final cycle (the same mesh and solution as the
+    !! entries) and, when the tolerance was not reached, a warning that says so.
+    subroutine take_adapted_estimates(a, c, warnings)
+        type(adaptation_t), intent(in) :: a             !! what ADAPT did
+        type(case_t), intent(inout) :: c                !! its entries get the estimates
+        character(len=warning_length), allocatable, intent(inout) :: warnings(:)  !! appended
+        character(len=warning_length) :: text
+        integer :: i, k
+        do i = 1, size(c%entries)
+            do k = 1, size(a%entries)
+                if (a%entries(k)%key /= c%entries(i)%key) cycle
+                c%entries(i)%has_error = a%entries(k)%has_error
+                c%entries(i)%error = a%entries(k)%error
+                c%entries(i)%order = a%entries(k)%order
+            end do
+        end do
+        if (a%reached) return
+        ! the reason (a failed refined solve quotes its message) goes in the report's
+        ! adaptation lines; the warning stays within one warning line
+        if (a%estimate >= 0.0_dp) then
+            write (text, '(a,es9.2,a,es9.2,a,i0,a)') 'ADAPT tolerance ', a%tol, &
+                ' not reached: largest estimated relative error ', a%estimate, &
+                ' ('//a%worst//') at N_e = ', a%ne, '; see the report, section 2'
+        else
+            write (text, '(a,es9.2,a,i0,a)') 'ADAPT tolerance ', a%tol, &
+                ' not reached: no error estimate at N_e = ', a%ne, '; see the report, section 2'
+        end if
+        warnings = [character(len=warning_length) :: warnings, text]
+    end subroutine take_adapted_estimates
+end module case_quality
