@@ -17,7 +17,8 @@ program bench_simplifications
     use contact_system, only: system_t, build_system, contact_points_t
     use station_results, only: station_table_t, tabulate
     use station_columns, only: Q_X, Q_W, Q_PSI, Q_SZ, Q_STATE, Q_Q, Q_M
-    use model_reduction, only: reduction_t, plan_reduction, simplification_text
+    use model_reduction, only: reduction_t, plan_reduction
+    use method_notes, only: simplification_text
     implicit none
     integer, allocatable :: ne_list(:)
     integer :: i

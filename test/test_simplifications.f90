@@ -19,7 +19,8 @@ module test_simplifications
     use contact_solver, only: solution_t, solve_contact
     use station_results, only: station_table_t, tabulate
     use station_columns, only: Q_X, Q_W, Q_PSI, Q_SZ, Q_STATE, Q_Q, Q_M
-    use model_reduction, only: reduction_t, plan_reduction, simplification_text
+    use model_reduction, only: reduction_t, plan_reduction
+    use method_notes, only: simplification_text
     use shape_functions, only: INTERP_P2, INTERP_S2
     implicit none
     private

@@ -46,7 +46,7 @@ module model_reduction
         real(dp), allocatable :: s(:)       !! its sign
     end type reduction_t
 
-    public :: plan_reduction, is_active, simplification_text
+    public :: plan_reduction, is_active
     public :: reduced_discretization, reduced_system, reduced_points, expand
 
 contains
@@ -70,47 +70,6 @@ contains
         type(reduction_t), intent(in) :: red
         is_active = red%frictionless .or. red%half
     end function is_active
-
-    !> 'simplifications used: ..., saved N% of the unknowns' (or 'none'), and the settled
-    !! lift-off tractions decoupled in the Newton factorisations (schur_solver), when the
-    !! solution's decoupled (N, of M kept unknowns) says so.
-    pure function simplification_text(m, d, decoupled) result(text)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        integer, intent(in), optional :: decoupled(2)   !! solution_t%decoupled
-        character(len=:), allocatable :: text
-        type(reduction_t) :: red
-        character(len=120) :: saved
-        red = plan_reduction(m, d)
-        text = 'simplifications used: '
-        saved = ''
-        if (present(decoupled)) then
-            if (decoupled(1) > 0) write (saved, '(a,i0,a,i0,a)') &
-                'settled lift-off tractions decoupled in the factorisation (', decoupled(1), &
-                ' of ', decoupled(2), ' kept unknowns)'
-        end if
-        if (.not. is_active(red)) then
-            if (len_trim(saved) > 0) then
-                text = text//trim(saved)//', the answer that of the full model'
-            else
-                text = text//'none (full model)'
-            end if
-            return
-        end if
-        if (len_trim(saved) > 0) text = text//trim(saved)//', '
-        saved = ''
-
-        if (red%frictionless .and. red%mean_shear) then
-            text = text//'sigma_x reduced to its mean, 0 (f = 0, frictionless), '
-        else if (red%frictionless) then
-            text = text//'no sigma_x unknowns (f = 0, frictionless), '
-        end if
-        if (red%half) text = text//'half beam (symmetric geometry and vertical loads), '
-        write (saved, '(a,f0.1,a,i0,a,i0,a)') 'saved ', &
-            100.0_dp*real(red%n_full - red%n_reduced, dp)/real(red%n_full, dp), &
-            '% of the unknowns (', red%n_reduced, ' of ', red%n_full, ' solved)'
-        text = text//trim(saved)
-    end function simplification_text
 
     !> Every load vertical and mirrored by another of the same kind and force (or itself).
     pure logical function symmetric_loads(m)

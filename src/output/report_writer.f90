@@ -19,9 +19,8 @@ module report_writer
     use design_summary, only: summary_t, interval_t
     use figure_templates, only: panel_template, sweep_template
     use summary_table, only: entry_t
-    use error_estimate, only: error_method_text
-    use model_reduction, only: simplification_text
-    use adaptive_solve, only: adaptation_t, adaptation_lines
+    use adaptive_solve, only: adaptation_t
+    use method_notes, only: simplification_text, error_method_text, adaptation_lines
     implicit none
     private
 

@@ -90,7 +90,7 @@ module adaptive_solve
     !! cycle, so that the mesh grows geometrically and the cycles stay few
     real(dp), parameter :: min_fraction = 0.4_dp
 
-    public :: solve_adaptive, relative_errors, adaptation_lines
+    public :: solve_adaptive, relative_errors
 
 contains
 
@@ -625,38 +625,4 @@ contains
         end do
     end function kth_largest
 
-    !> The report's lines on the adaptation.
-    pure function adaptation_lines(info) result(lines)
-        type(adaptation_t), intent(in) :: info
-        character(len=400), allocatable :: lines(:)
-        character(len=400) :: buf
-        integer :: k
-        allocate (lines(0))
-        if (.not. info%adapted) return
-        write (buf, '(a,es9.2,a,i0,a,i0,a,i0)') 'mesh adapted (ADAPT tol ', info%tol, &
-            ', max_elements ', info%max_ne, '): ', info%cycles, ' cycles, final N_e = ', info%ne
-        lines = [character(len=400) :: lines, buf]
-        if (info%estimate >= 0.0_dp) then
-            write (buf, '(a,es9.2,a)') 'largest estimated relative error ', info%estimate, &
-                ' ('//info%worst//')'
-        else
-            buf = 'no error estimate on the final mesh (a coarsened mesh could not be solved)'
-        end if
-        lines = [character(len=400) :: lines, buf]
-        if (info%reached) then
-            lines = [character(len=400) :: lines, 'tolerance reached']
-        else
-            lines = [character(len=400) :: lines, 'TOLERANCE NOT REACHED: '//info%note]
-        end if
-        do k = 1, size(info%history_ne)
-            if (info%history_estimate(k) >= 0.0_dp) then
-                write (buf, '(a,i3,a,i6,a,es9.2)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
-                    ', estimate ', info%history_estimate(k)
-            else
-                write (buf, '(a,i3,a,i6,a)') 'cycle ', k, ': N_e = ', info%history_ne(k), &
-                    ', not estimated (indicators from the previous cycle)'
-            end if
-            lines = [character(len=400) :: lines, buf]
-        end do
-    end function adaptation_lines
 end module adaptive_solve

@@ -30,7 +30,7 @@ module error_estimate
         'pressure_centre', 'shear_force_max']
     integer, parameter :: min_coarse_elements = 4
 
-    public :: estimate_errors, error_method_text, coarse_case, attach_estimates, is_estimated, &
+    public :: estimate_errors, coarse_case, attach_estimates, is_estimated, &
               formal_order
 
 contains
@@ -237,28 +237,4 @@ contains
         error = 1.25_dp*abs(d12)/(r**p - 1.0_dp)
     end subroutine richardson
 
-    !> One line for reports: how the estimate was obtained (adapted: on an adapted mesh).
-    pure function error_method_text(adapted) result(text)
-        logical, intent(in), optional :: adapted
-        character(len=:), allocatable :: text
-        if (present(adapted)) then
-            if (adapted) then
-                text = 'estimated error: the adapted mesh (N_e elements) coarsened twice by '// &
-                    'removing every other node, keeping the ends, the load positions and the '// &
-                    'snapped contact and slip boundaries (N2, N4 elements, r = N_e/N2); E = '// &
-                    '1.25 |Q(N2) - Q(N_e)| / (r^p - 1) with the observed order p, or (p*) '// &
-                    '3 max(|Q(N2) - Q(N_e)|, |Q(N4) - Q(N2)|/r)/(r - 1) where convergence is '// &
-                    'not yet regular; contact extent at least the distance of its node from '// &
-                    'the located boundary'
-                return
-            end if
-        end if
-        text = 'estimated error: the case re-solved on N_e/2 and N_e/4 elements (same grading '// &
-               'and interpolation); E = 1.25 |Q(N_e/2) - Q(N_e)| / (2^p - 1) with the observed '// &
-               'order p (at most the formal order: 1 on a uniform mesh with an edge in '// &
-               'contact), or (p*) 3 max(|Q(N_e/2) - Q(N_e)|, |Q(N_e/4) - Q(N_e/2)|/2) where '// &
-               'convergence is not yet regular; contact extent at least half an edge element. '// &
-               'An indication, not a bound (doc/OUTPUT.md): to trust a value, solve again on '// &
-               'twice the elements'
-    end function error_method_text
 end module error_estimate
