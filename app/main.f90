@@ -6,7 +6,7 @@ program fricon
     use iso_fortran_env, only: error_unit, output_unit
     use iso_c_binding, only: c_int
     use errors, only: error_t, EXIT_OK
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use command_line, only: command_t, read_command_line, usage_lines, version
     use deck_runs, only: run_decks
     use output_paths, only: stderr_is_terminal
@@ -36,7 +36,7 @@ program fricon
         call finish(EXIT_OK)
     end if
     cmd%options%progress = cmd%progress_forced .or. (.not. cmd%quiet .and. stderr_is_terminal())
-    call gsl_start()
+    call start_program()
     call run_decks(cmd%decks, trim(cmd%out_dir), cmd%options, status)
     call finish(status)
 

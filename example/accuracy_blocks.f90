@@ -9,7 +9,7 @@ program accuracy_blocks
     use iso_fortran_env, only: int64, output_unit
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use mesh, only: mesh_t, new_mesh
     use shape_functions, only: basis_t, new_basis, INTERP_P1, INTERP_P2, INTERP_S2, interp_name
     use halfspace_plate, only: assemble_plate_flexibility
@@ -21,7 +21,7 @@ program accuracy_blocks
     logical :: blocks_only
     character(len=32) :: arg
 
-    call gsl_start()
+    call start_program()
     max_ne = 1000
     if (command_argument_count() >= 1) then
         call get_command_argument(1, arg)

@@ -13,7 +13,7 @@ program accuracy_far_rules
     use iso_fortran_env, only: int64, output_unit
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use mesh, only: mesh_t, new_mesh
     use shape_functions, only: basis_t, new_basis, INTERP_P1, INTERP_P2, INTERP_S2, interp_name
     use halfspace_plate, only: assemble_plate_flexibility
@@ -32,7 +32,7 @@ program accuracy_far_rules
     real(dp) :: trial_digits
     character(len=32) :: arg
 
-    call gsl_start()
+    call start_program()
     max_ne = 1000
     ref_max_ne = 80
     trial_digits = -1.0_dp

@@ -10,7 +10,7 @@ program bench_assembly
     !$ use omp_lib, only: omp_get_max_threads
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use mesh, only: mesh_t, new_mesh
     use shape_functions, only: basis_t, new_basis, INTERP_P1, INTERP_P2, INTERP_S2, interp_name
     use halfspace_plate, only: assemble_plate_flexibility
@@ -27,7 +27,7 @@ program bench_assembly
     integer :: i, max_ne, ref_max_ne, threads
     character(len=32) :: arg
 
-    call gsl_start()
+    call start_program()
     max_ne = 1000
     ref_max_ne = 1000
     if (command_argument_count() >= 1) then

@@ -14,7 +14,7 @@
 program bench_linalg
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use model, only: model_t
     use discretization, only: discretization_t, new_discretization
     use deck_reader, only: deck_t, read_deck, case_model
@@ -35,7 +35,7 @@ program bench_linalg
     character(len=32) :: arg
     integer :: i, ne
 
-    call gsl_start()
+    call start_program()
     call get_command_argument(1, path)
     call read_deck(trim(path), deck, err)
     if (allocated(err)) error stop 'cannot read the deck'

@@ -21,7 +21,7 @@ program bench_phases
     use iso_fortran_env, only: output_unit, compiler_version, compiler_options
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use model, only: model_t, METHOD_NEWTON
     use deck_reader, only: deck_t, read_deck, case_model
     use discretization, only: discretization_t, new_discretization
@@ -80,7 +80,7 @@ program bench_phases
     character(len=64) :: load_start, load_end, start_time
     integer :: k, u
 
-    call gsl_start()
+    call start_program()
     call read_arguments(out_dir, ne_list)
     call execute_command_line('mkdir -p '//trim(out_dir)//'/phases_tmp')
     start_time = time_stamp()

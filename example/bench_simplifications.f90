@@ -10,7 +10,7 @@ program bench_simplifications
     use iso_fortran_env, only: output_unit
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, complete_model
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact, contact_points
@@ -23,7 +23,7 @@ program bench_simplifications
     integer, allocatable :: ne_list(:)
     integer :: i
     character(len=16) :: arg
-    call gsl_start()
+    call start_program()
     ne_list = [40, 160]
     if (command_argument_count() > 0) then
         deallocate (ne_list)

@@ -16,7 +16,7 @@ program bench_tabulation
     use iso_fortran_env, only: output_unit, compiler_version
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use model, only: model_t
     use deck_reader, only: deck_t, read_deck, case_model
     use discretization, only: discretization_t, new_discretization
@@ -34,7 +34,7 @@ program bench_tabulation
     integer, allocatable :: ne_list(:)
     integer :: k, i, u
 
-    call gsl_start()
+    call start_program()
     call read_arguments(out_dir, ne_list)
     call execute_command_line('mkdir -p '//trim(out_dir)//'/tmp')
     open (newunit=u, file=trim(out_dir)//'/times.md', status='replace', action='write')

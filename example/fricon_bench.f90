@@ -11,7 +11,7 @@ program fricon_bench
     use, intrinsic :: iso_fortran_env, only: int64, compiler_version, compiler_options
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, complete_model, &
                      METHOD_NEWTON, METHOD_TWOLOOP
     use discretization, only: discretization_t, new_discretization
@@ -44,7 +44,7 @@ program fricon_bench
     character(len=512) :: path
     integer :: i
 
-    call gsl_start()
+    call start_program()
     call execute_command_line('mkdir -p '//out_dir)
     allocate (runs(0))
     do i = 1, command_argument_count()

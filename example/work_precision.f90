@@ -17,7 +17,7 @@ program work_precision
     use iso_fortran_env, only: int64, output_unit
     use kinds, only: dp
     use errors, only: error_t
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
                      complete_model
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
@@ -57,7 +57,7 @@ program work_precision
 
     out_dir = 'output/bench'
     if (command_argument_count() >= 1) call get_command_argument(1, out_dir)
-    call gsl_start()
+    call start_program()
     call execute_command_line('mkdir -p '//trim(out_dir))
     do k = 1, 2
         call study(k == 1, trim(out_dir))

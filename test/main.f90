@@ -1,7 +1,7 @@
 !> Single test driver: `fpm test [-- suite [test]]`. Ends with `N passed, N failed`;
 !! exits 1 if anything failed.
 program tester
-    use gsl_wrappers, only: gsl_start
+    use start_up, only: start_program
     use harness, only: unittest_t, run_suite
     use test_shape_functions, only: collect_shape_functions
     use test_gsl_wrappers, only: collect_gsl_wrappers
@@ -39,7 +39,7 @@ program tester
         write (*, '(a)') '0 passed, 1 failed'
         stop 1
     end if
-    call gsl_start()
+    call start_program()
     n_pass = 0
     n_fail = 0
 

@@ -23,7 +23,8 @@ module test_halfspace_plate
     use model, only: model_t, FIELD_SZ
     use discretization, only: discretization_t, new_discretization
     use halfspace_operator, only: assemble_flexibility
-    use flexibility_cache, only: flexibility_of, enable_flexibility_cache, flexibility_cache_hits
+    use flexibility_cache, only: flexibility_cache_t, flexibility_of, new_flexibility_cache, &
+                                 flexibility_cache_hits
     use contact_test_support, only: nondim_plate, nondim_beam
     implicit none
     private
@@ -657,36 +658,31 @@ contains
         if (allocated(err)) return
     end subroutine test_agm
 
-    !> The sweep's cache of T (flexibility_cache): off (the default; a single case) it keeps
-    !! nothing; on, a second look-up with the same mesh, bases and soil is answered from the
-    !! cache with T bit for bit as assemble_flexibility gives it afresh, and a case that
-    !! differs in nu_f, the mesh grading, the sigma_z interpolation, the beam width or the
-    !! structure is assembled (the hit count does not move).
+    !> A run's cache of T (flexibility_cache): off (a single case) it keeps nothing; on, a
+    !! second look-up with the same mesh, bases and soil is answered from the cache with T
+    !! bit for bit as assemble_flexibility gives it afresh, and a case that differs in nu_f,
+    !! the mesh grading, the sigma_z interpolation, the beam width or the structure is
+    !! assembled (the hit count does not move).
     subroutine test_flexibility_cache(err)
         type(error_t), allocatable, intent(out) :: err
-        call cache_checks(err)
-        call enable_flexibility_cache(.false.)    ! also after a failed check: the cache is global
-    end subroutine test_flexibility_cache
-
-    subroutine cache_checks(err)
-        type(error_t), allocatable, intent(out) :: err
+        type(flexibility_cache_t) :: cache
         type(model_t) :: m, variant
         real(dp), allocatable :: t_ref(:, :), t_1(:, :)
         integer :: k
         m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 24)
         call assembled(m, t_ref, err)
         if (allocated(err)) return
-        call enable_flexibility_cache(.false.)
-        call cached(m, t_1, err)
-        if (.not. allocated(err)) call cached(m, t_1, err)
+        cache = new_flexibility_cache(.false.)
+        call cached(m, cache, t_1, err)
+        if (.not. allocated(err)) call cached(m, cache, t_1, err)
         if (allocated(err)) return
-        call check(err, flexibility_cache_hits() == 0, 'cache off: a look-up was answered')
+        call check(err, flexibility_cache_hits(cache) == 0, 'cache off: a look-up was answered')
         if (allocated(err)) return
-        call enable_flexibility_cache(.true.)
-        call cached(m, t_1, err)
-        if (.not. allocated(err)) call cached(m, t_1, err)
+        cache = new_flexibility_cache(.true.)
+        call cached(m, cache, t_1, err)
+        if (.not. allocated(err)) call cached(m, cache, t_1, err)
         if (allocated(err)) return
-        call check(err, flexibility_cache_hits() == 1 .and. all(t_1 == t_ref), &
+        call check(err, flexibility_cache_hits(cache) == 1 .and. all(t_1 == t_ref), &
                    'cache on: the second look-up is not the assembled T')
         if (allocated(err)) return
         do k = 1, 5
@@ -704,13 +700,13 @@ contains
             case (5)
                 variant = nondim_beam(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 0.0_dp, 24)  ! width
             end select
-            call cached(variant, t_1, err)
+            call cached(variant, cache, t_1, err)
             if (allocated(err)) exit
-            call check(err, flexibility_cache_hits() == 1, 'a different case answered from '// &
+            call check(err, flexibility_cache_hits(cache) == 1, 'a different case answered from '// &
                        'the cache (variant '//char(ichar('0') + k)//')')
             if (allocated(err)) exit
         end do
-    end subroutine cache_checks
+    end subroutine test_flexibility_cache
 
     subroutine assembled(m, t_mat, err)
         type(model_t), intent(in) :: m
@@ -721,12 +717,13 @@ contains
         if (.not. allocated(err)) call assemble_flexibility(m, d, t_mat, err)
     end subroutine assembled
 
-    subroutine cached(m, t_mat, err)
+    subroutine cached(m, cache, t_mat, err)
         type(model_t), intent(in) :: m
+        type(flexibility_cache_t), intent(inout) :: cache
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         type(error_t), allocatable, intent(out) :: err
         type(discretization_t) :: d
         call new_discretization(m, d, err)
-        if (.not. allocated(err)) call flexibility_of(m, d, t_mat, err)
+        if (.not. allocated(err)) call flexibility_of(m, d, t_mat, err, cache)
     end subroutine cached
 end module test_halfspace_plate

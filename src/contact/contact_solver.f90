@@ -21,6 +21,7 @@
 !! rho 1e-6, disk load: solved at N_e = 20, status 2 at N_e = 200 to 2000 before).
 module contact_solver
     use errors, only: error_t
+    use flexibility_cache, only: flexibility_cache_t
     use model, only: model_t, METHOD_TWOLOOP
     use iso_fortran_env, only: int64
     use kinds, only: dp
@@ -56,7 +57,7 @@ module contact_solver
 contains
 
     !> Solve one case. Fails with EXIT_ANALYSIS when there is no equilibrium or no convergence.
-    recursive subroutine solve_contact(m, d, sol, err, progress_unit, t_given)
+    recursive subroutine solve_contact(m, d, sol, err, progress_unit, t_given, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(out) :: sol
@@ -64,6 +65,7 @@ contains
         integer, intent(in), optional :: progress_unit   !! a unit for one line per Newton step
         !> T of d when it is known (the restriction of a finer mesh's): moved in
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(system_t) :: sys
         type(discretization_t) :: dc
         real(dp), allocatable :: sigma_start(:, :), t_c(:, :)
@@ -78,9 +80,9 @@ contains
         nest = nested_discretisation(m, d, dc)
         t0 = wall_seconds()
         if (nest) then
-            call build_system(m, d, sol%pts, sys, err, t_given, dc, t_c)
+            call build_system(m, d, sol%pts, sys, err, t_given, dc, t_c, cache=cache)
         else
-            call build_system(m, d, sol%pts, sys, err, t_given)
+            call build_system(m, d, sol%pts, sys, err, t_given, cache=cache)
         end if
         sol%seconds(1) = sys%t_seconds
         sol%seconds(2) = wall_seconds() - t0 - sys%t_seconds

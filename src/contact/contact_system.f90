@@ -21,7 +21,7 @@ module contact_system
     use discretization, only: discretization_t
     use mindlin_structure, only: section_of, stiffness_entries, assemble_loads, &
                                  coupling_entries
-    use flexibility_cache, only: flexibility_of
+    use flexibility_cache, only: flexibility_cache_t, flexibility_of
     use nested_spaces, only: restricted_tractions
     use interface_law, only: friction_threshold, slip_excess, tensile_part, threshold_slope, &
                              is_slipping, in_tension
@@ -157,7 +157,7 @@ module contact_system
 contains
 
     !> K, M, T, S0 and q assembled once per case into the base matrix.
-    subroutine build_system(m, d, pts, sys, err, t_given, nested, t_nested)
+    subroutine build_system(m, d, pts, sys, err, t_given, nested, t_nested, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(contact_points_t), intent(in) :: pts
@@ -170,6 +170,7 @@ contains
         !! crashed in build_system whenever it was absent (plate_nondim.dat); a clean rebuild
         !! by review did not reproduce it; inout is legal either way
         real(dp), allocatable, intent(inout), optional :: t_nested(:, :)
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         real(dp), allocatable :: t_mat(:, :), b0(:)
         integer :: i
         integer(int64) :: t0, t1, rate
@@ -177,7 +178,7 @@ contains
         if (present(t_given)) then
             call move_alloc(t_given, t_mat)
         else
-            call flexibility_of(m, d, t_mat, err)    ! assembled, or a sweep's cached copy
+            call flexibility_of(m, d, t_mat, err, cache)    ! assembled, or a cached copy
         end if
         if (.not. allocated(err) .and. present(nested) .and. present(t_nested)) &
             call restricted_tractions(t_mat, d, nested, t_nested, err)

@@ -15,7 +15,7 @@ module analysis_driver
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
                             case_number, remove_stale_outputs
     use blas_threads, only: set_blas_threads, blas_thread_count
-    use flexibility_cache, only: enable_flexibility_cache
+    use flexibility_cache, only: flexibility_cache_t, new_flexibility_cache
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
                                case_unknowns
     implicit none
@@ -57,6 +57,7 @@ contains
         type(case_result_t), allocatable :: results(:)
         logical, allocatable :: selected(:)
         type(error_t), allocatable :: err
+        type(flexibility_cache_t) :: cache
         integer :: i, n, done, threads, blas_before, big_case_unit
         character(len=:), allocatable :: label
 
@@ -112,14 +113,14 @@ contains
         blas_before = blas_thread_count()
         call set_blas_threads(1)
         ! a sweep's cases on one mesh share T (flexibility_cache); one case holds no extra copy
-        call enable_flexibility_cache(count(selected) > 1)
+        cache = new_flexibility_cache(count(selected) > 1)
         call system_clock(clock_start)
         done = 0
         !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) private(i)
         cases_loop: do i = 1, n
             if (.not. selected(i)) cycle cases_loop
             call run_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
-                            opt%figures, opt%estimates, big_case_unit, results(i))
+                            opt%figures, opt%estimates, big_case_unit, results(i), cache)
             !$omp critical (fricon_progress)
             done = done + 1
             if (opt%progress) call report_progress(err_unit, done, count(selected), &
@@ -127,7 +128,6 @@ contains
             !$omp end critical (fricon_progress)
         end do cases_loop
         !$omp end parallel do
-        call enable_flexibility_cache(.false.)
         call set_blas_threads(blas_before)
         do i = 1, n
             if (selected(i)) call report_case(log_unit, err_unit, deck%path, out_dir, results(i), &
@@ -198,7 +198,7 @@ contains
     !! (case_files). The writing runs one case at a time (a critical section): it is cheap,
     !! and it keeps the library's formatted-output and character temporaries out of any race.
     subroutine run_case(deck, m, label, out_dir, name, figures, estimates, progress_unit, &
-                        result)
+                        result, cache)
         type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
         type(model_t), intent(in) :: m               !! the case's model
         character(len=*), intent(in) :: label        !! 'case i of n: swept values'
@@ -208,6 +208,7 @@ contains
         logical, intent(in) :: estimates             !! estimate the error (two coarser solves)
         integer, intent(in) :: progress_unit         !! >= 0: report each Newton step there
         type(case_result_t), intent(out) :: result   !! status, key results, warnings
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(case_t) :: c
         character(len=warning_length), allocatable :: warnings(:)
         type(error_t), allocatable :: err
@@ -215,7 +216,8 @@ contains
         result%label = label
         result%message = ''
         result%rho = relative_stiffness(m%structure, m%ground)
-        call solve_to_quality(m, estimates, progress_unit, c, result%adaptation, warnings, err)
+        call solve_to_quality(m, estimates, progress_unit, c, result%adaptation, warnings, err, &
+                              cache)
         result%warnings = [character(len=warning_length) :: input_warnings(m), warnings]
         result%n_outer = c%sol%n_outer
         result%n_inner = c%sol%n_inner

@@ -6,11 +6,13 @@
 !! assembly is deterministic (the same T on any number of threads, bit for bit), so a case
 !! gets the same T, and the same answer, with or without the cache.
 !!
-!! The cache is off unless the driver enables it (a deck with more than one case): a single
-!! case would only hold one more copy of T. It keeps at most max_entries matrices of at most
-!! max_unknowns tractions each (2.9 MB apiece): above that T is a small part of a case (under
-!! 6 % from N_e = 500 on, output/bench/phases.md) and the copy would weigh on the memory
-!! target. Cases of a sweep run in parallel threads: every look-up and store is one critical
+!! The cache is an object owned by the run (analysis_driver: one per deck, enabled when the
+!! deck has more than one case: a single case would only hold one more copy of T) and passed
+!! down to where T is built (contact_system::build_system); a solve without a cache assembles
+!! T. It keeps at most max_entries matrices of at most max_unknowns tractions each (2.9 MB
+!! apiece): above that T is a small part of a case (under 6 % from N_e = 500 on,
+!! output/bench/phases.md) and the copy would weigh on the memory target. Cases of a sweep
+!! run in parallel threads sharing the run's cache: every look-up and store is one critical
 !! section, and a look-up copies the matrix out inside it.
 module flexibility_cache
     use kinds, only: dp
@@ -21,7 +23,7 @@ module flexibility_cache
     use halfspace_operator, only: assemble_flexibility
     implicit none
     private
-    public :: flexibility_of, enable_flexibility_cache, flexibility_cache_hits
+    public :: flexibility_of, new_flexibility_cache, flexibility_cache_hits
 
     integer, parameter :: max_entries = 4      !! a mesh and its estimate's N_e/2 and N_e/4
     integer, parameter :: max_unknowns = 600   !! tractions (nr); T of nr^2 numbers
@@ -39,60 +41,59 @@ module flexibility_cache
         integer :: last_use = 0
     end type entry_t
 
-    ! the cache's state: one per process, shared by the threads of a sweep (critical sections)
-    logical, save :: enabled = .false.
-    type(entry_t), save :: entries(max_entries)
-    integer, save :: n_entries = 0, clock = 0, hits = 0
+    !> A run's cache of T: shared by the threads of a sweep (critical sections).
+    type, public :: flexibility_cache_t
+        private
+        logical :: enabled = .false.
+        type(entry_t) :: entries(max_entries)
+        integer :: n_entries = 0, clock = 0, hits = 0
+    end type flexibility_cache_t
 
 contains
 
-    !> Switch the cache on (a deck with several cases) or off; off empties it.
-    subroutine enable_flexibility_cache(on)
-        logical, intent(in) :: on
-        integer :: k
-        !$omp critical (flexibility_cache)
-        enabled = on
-        if (.not. on) then
-            do k = 1, n_entries
-                if (allocated(entries(k)%t)) deallocate (entries(k)%t)
-            end do
-            n_entries = 0
-        end if
-        hits = 0
-        !$omp end critical (flexibility_cache)
-    end subroutine enable_flexibility_cache
+    !> An empty cache, on (a deck with several cases) or off (it then stores nothing).
+    pure function new_flexibility_cache(on) result(cache)
+        logical, intent(in) :: on                  !! keep matrices for later cases
+        type(flexibility_cache_t) :: cache
+        cache%enabled = on
+    end function new_flexibility_cache
 
-    !> Look-ups answered from the cache since it was enabled.
-    integer function flexibility_cache_hits() result(n)
+    !> Look-ups answered from the cache since it was made.
+    integer function flexibility_cache_hits(cache) result(n)
+        type(flexibility_cache_t), intent(in) :: cache   !! the run's cache
         !$omp critical (flexibility_cache)
-        n = hits
+        n = cache%hits
         !$omp end critical (flexibility_cache)
     end function flexibility_cache_hits
 
     !> T of the case (m, d): a copy of a cached one with the same key, else assembled (and
-    !! cached when the cache is on and T is small enough).
-    subroutine flexibility_of(m, d, t_mat, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        real(dp), allocatable, intent(out) :: t_mat(:, :)
-        type(error_t), allocatable, intent(out) :: err
+    !! cached when the cache is on and T is small enough); without a cache, assembled.
+    subroutine flexibility_of(m, d, t_mat, err, cache)
+        type(model_t), intent(in) :: m                   !! structure kind, width and ground
+        type(discretization_t), intent(in) :: d          !! the traction bases
+        real(dp), allocatable, intent(out) :: t_mat(:, :)  !! T (nr x nr)
+        type(error_t), allocatable, intent(out) :: err   !! the assembly failed
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache
         type(key_t) :: key
         logical :: use_cache, found
-        !$omp critical (flexibility_cache)
-        use_cache = enabled .and. d%nr <= max_unknowns
-        !$omp end critical (flexibility_cache)
+        use_cache = .false.
+        if (present(cache)) then
+            !$omp critical (flexibility_cache)
+            use_cache = cache%enabled .and. d%nr <= max_unknowns
+            !$omp end critical (flexibility_cache)
+        end if
         found = .false.
         if (use_cache) then
             key = key_of(m, d)
             !$omp critical (flexibility_cache)
-            call look_up(key, t_mat, found)
+            call look_up(cache, key, t_mat, found)
             !$omp end critical (flexibility_cache)
         end if
         if (found) return
         call assemble_flexibility(m, d, t_mat, err)
         if (allocated(err) .or. .not. use_cache) return
         !$omp critical (flexibility_cache)
-        call store(key, t_mat)
+        call store(cache, key, t_mat)
         !$omp end critical (flexibility_cache)
     end subroutine flexibility_of
 
@@ -109,39 +110,41 @@ contains
     end function key_of
 
     !> Inside the critical section: t_mat from the entry with this key, if any.
-    subroutine look_up(key, t_mat, found)
+    subroutine look_up(cache, key, t_mat, found)
+        type(flexibility_cache_t), intent(inout) :: cache
         type(key_t), intent(in) :: key
         real(dp), allocatable, intent(out) :: t_mat(:, :)
         logical, intent(out) :: found
         integer :: k
         found = .false.
-        do k = 1, n_entries
-            if (.not. same_key(entries(k)%key, key)) cycle
-            t_mat = entries(k)%t
-            clock = clock + 1
-            entries(k)%last_use = clock
-            hits = hits + 1
+        do k = 1, cache%n_entries
+            if (.not. same_key(cache%entries(k)%key, key)) cycle
+            t_mat = cache%entries(k)%t
+            cache%clock = cache%clock + 1
+            cache%entries(k)%last_use = cache%clock
+            cache%hits = cache%hits + 1
             found = .true.
             return
         end do
     end subroutine look_up
 
     !> Inside the critical section: a new entry, in place of the least recently used when full.
-    subroutine store(key, t_mat)
+    subroutine store(cache, key, t_mat)
+        type(flexibility_cache_t), intent(inout) :: cache
         type(key_t), intent(in) :: key
         real(dp), intent(in) :: t_mat(:, :)
         integer :: k
-        do k = 1, n_entries
-            if (same_key(entries(k)%key, key)) return      ! another thread was first
+        do k = 1, cache%n_entries
+            if (same_key(cache%entries(k)%key, key)) return      ! another thread was first
         end do
-        if (n_entries < max_entries) then
-            n_entries = n_entries + 1
-            k = n_entries
+        if (cache%n_entries < max_entries) then
+            cache%n_entries = cache%n_entries + 1
+            k = cache%n_entries
         else
-            k = minloc(entries(1:n_entries)%last_use, dim=1)
+            k = minloc(cache%entries(1:cache%n_entries)%last_use, dim=1)
         end if
-        clock = clock + 1
-        entries(k) = entry_t(key=key, t=t_mat, last_use=clock)
+        cache%clock = cache%clock + 1
+        cache%entries(k) = entry_t(key=key, t=t_mat, last_use=cache%clock)
     end subroutine store
 
     pure logical function same_key(a, b)

@@ -43,7 +43,7 @@ module singular_quadrature
     private
 
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
-    public :: shared_gauss_tables, build_pair_rule, build_line_rule
+    public :: shared_gauss_tables, start_gauss_tables, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
     public :: check_bases, near_ratio, n_max, points_for_ratio
@@ -143,6 +143,10 @@ module singular_quadrature
         end subroutine displacement_split_kernel
     end interface
 
+    !> The process's GL tables, written once by start_gauss_tables (start-up), then only read.
+    type(gauss_tables_t), protected, save :: process_tables
+    logical, protected, save :: tables_ready = .false.
+
 contains
 
     !> Tabulate GL rules on [0, 1] and the product-log weights (see module header); the
@@ -155,21 +159,25 @@ contains
         end do rules
     end subroutine new_gauss_tables
 
-    !> A copy of all GL rules and product-log weights, tabulated once per process (the same
-    !! numbers at every assembly and tabulation; computing the rules took 2 % of an assembly
-    !! at N_e = 50 and, rule by rule on demand, 2 % of a 1000-case sweep's stations). Callers
-    !! may run inside a parallel sweep: the first one fills the tables in a critical section.
+    !> Tabulate the process's copy of the GL rules and product-log weights, once, at start-up
+    !! (start_up, before any thread): afterwards the tables are only read.
+    subroutine start_gauss_tables()
+        if (tables_ready) return
+        call new_gauss_tables(process_tables)
+        tables_ready = .true.
+    end subroutine start_gauss_tables
+
+    !> A copy of all GL rules and product-log weights: the process's, tabulated once at
+    !! start-up (the same numbers at every assembly and tabulation; computing the rules took
+    !! 2 % of an assembly at N_e = 50 and, rule by rule on demand, 2 % of a 1000-case sweep's
+    !! stations), or tabulated here for a caller that did not start up.
     subroutine shared_gauss_tables(tab)
-        type(gauss_tables_t), intent(out) :: tab
-        type(gauss_tables_t), save :: rules
-        logical, save :: ready = .false.
-        !$omp critical (shared_gauss_rules)
-        if (.not. ready) then
-            call new_gauss_tables(rules)
-            ready = .true.
+        type(gauss_tables_t), intent(out) :: tab   !! the rules
+        if (tables_ready) then
+            tab = process_tables
+        else
+            call new_gauss_tables(tab)
         end if
-        tab = rules
-        !$omp end critical (shared_gauss_rules)
     end subroutine shared_gauss_tables
 
     !> Tabulate the n-point rule (and, for n <= n_log, its product-log weights).

@@ -43,6 +43,7 @@ module adaptive_solve
     use design_summary, only: summary_t
     use summary_table, only: entry_t
     use solved_case, only: case_t, finish_case
+    use flexibility_cache, only: flexibility_cache_t
     use error_estimate, only: coarse_case, attach_estimates, is_estimated
     implicit none
     private
@@ -96,12 +97,13 @@ contains
 
     !> Solve the case by adaptive refinement of d (in: the MESH card's discretisation; out:
     !! the final one) and give its solution. err only if the first mesh cannot be solved.
-    subroutine solve_adaptive(m, d, sol, info, err)
+    subroutine solve_adaptive(m, d, sol, info, err, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(inout) :: d
         type(solution_t), intent(out) :: sol
         type(adaptation_t), intent(out) :: info
         type(error_t), allocatable, intent(out) :: err
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(discretization_t) :: d_try
         type(solution_t) :: sol_try
         type(error_t), allocatable :: err_try
@@ -117,7 +119,7 @@ contains
         ne_estimated = 0
         last_estimate = huge(1.0_dp)
         cycles: do k = 1, max_cycles
-            call solve_contact(m, d_try, sol_try, err_try)
+            call solve_contact(m, d_try, sol_try, err_try, cache=cache)
             if (allocated(err_try) .and. k == 1) then
                 call move_alloc(err_try, err)
                 return
@@ -131,12 +133,12 @@ contains
             d = d_try
             sol = sol_try
             if (estimate_due(m, d%msh%ne, ne_estimated, last_estimate)) then
-                call assess(m, d, sol, a, prev_nodes)
+                call assess(m, d, sol, a, prev_nodes, cache=cache)
                 ne_estimated = d%msh%ne
                 last_estimate = a%estimate
             else
                 a_prev = a
-                call assess(m, d, sol, a, prev_nodes, a_prev)
+                call assess(m, d, sol, a, prev_nodes, a_prev, cache)
             end if
             call record_cycle(info, d%msh%ne, a)
             if (info%reached) exit cycles
@@ -154,7 +156,7 @@ contains
         if (k > max_cycles) info%note = 'the largest number of cycles was reached'
         ! the result's mesh must carry an estimate: the last cycle may have skipped it
         if (ne_estimated /= d%msh%ne) then
-            call assess(m, d, sol, a, prev_nodes)
+            call assess(m, d, sol, a, prev_nodes, cache=cache)
             call record_final(info, a)
         end if
     end subroutine solve_adaptive
@@ -232,13 +234,14 @@ contains
     !! element indicators of one solution; without the coarse solves when prev is given
     !! (the indicators then compare with prev_nodes, the previous cycle's solution, and the
     !! keys above tol are prev's). prev_nodes: out, this solution at its nodes.
-    subroutine assess(m, d, sol, a, prev_nodes, prev)
+    subroutine assess(m, d, sol, a, prev_nodes, prev, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         type(assessment_t), intent(inout) :: a
         type(station_table_t), intent(inout) :: prev_nodes
         type(assessment_t), intent(in), optional :: prev   !! (not a itself)
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(case_t) :: c
         type(station_table_t) :: tab2
         type(entry_t), allocatable :: e2(:), e4(:)
@@ -257,7 +260,7 @@ contains
             a%rel = prev%rel                        ! the same keys, in the same order
             a%estimate = huge(1.0_dp)
         else
-            call coarse_estimates(m, d, a, e2, e4, tab2, ok)
+            call coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
             if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
             a%rel = relative_errors(a%e)
             a%estimate = huge(1.0_dp)
@@ -272,13 +275,14 @@ contains
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
     !! made or solved); tab2: the first coarse solution at its nodes.
-    subroutine coarse_estimates(m, d, a, e2, e4, tab2, ok)
+    subroutine coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(assessment_t), intent(inout) :: a
         type(entry_t), allocatable, intent(out) :: e2(:), e4(:)
         type(station_table_t), intent(out) :: tab2
         logical, intent(out) :: ok
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(mesh_t) :: c2, c4
         type(discretization_t) :: d2, d4
         type(case_t) :: c2_case, c4_case
@@ -290,8 +294,8 @@ contains
         if (c4%ne < min_coarse .or. c2%ne >= d%msh%ne .or. c4%ne >= c2%ne) return
         call discretise_mesh(m, c2, d2)
         call discretise_mesh(m, c4, d4)
-        call coarse_case(m, d2, c2_case, ok)
-        if (ok) call coarse_case(m, d4, c4_case, ok)
+        call coarse_case(m, d2, c2_case, ok, cache=cache)
+        if (ok) call coarse_case(m, d4, c4_case, ok, cache=cache)
         if (.not. ok) return
         e2 = c2_case%entries
         e4 = c4_case%entries

@@ -9,6 +9,7 @@ module admissible_refinement
     use errors, only: error_t, new_error, add_context, EXIT_ANALYSIS
     use model, only: model_t
     use solved_case, only: case_t, solve_case
+    use flexibility_cache, only: flexibility_cache_t
     use design_summary, only: summary_t
     use plausibility, only: warning_length
     use resource_limits, only: check_memory, memory_available
@@ -24,12 +25,13 @@ contains
 
     !> c (in: solved on the deck's mesh; out: on the mesh that resolves the friction, or the
     !! failed finer case); a warning says so when the mesh was refined.
-    subroutine refine_until_admissible(c, progress_unit, warnings, err)
+    subroutine refine_until_admissible(c, progress_unit, warnings, err, cache)
         type(case_t), intent(inout) :: c                  !! the case, solved
         integer, intent(in) :: progress_unit              !! >= 0: each Newton step there
         character(len=warning_length), allocatable, intent(inout) :: warnings(:)  !! appended
         type(error_t), allocatable, intent(out) :: err    !! a finer solve failed, or no mesh
                                                           !! resolved the friction
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(model_t) :: finer
         type(case_t) :: next
         character(len=warning_length) :: text
@@ -45,7 +47,7 @@ contains
             finer = c%model
             finer%mesh%ne = 2*c%model%mesh%ne
             if (.not. fits(finer)) exit doublings
-            call solve_case(finer, next, err, progress_unit)
+            call solve_case(finer, next, err, progress_unit, cache)
             c = next
             if (allocated(err)) exit doublings
         end do doublings

@@ -16,6 +16,7 @@ module case_quality
     use discretization, only: discretization_t, new_discretization, loads_on_nodes
     use contact_solver, only: solution_t
     use solved_case, only: case_t, solve_case, finish_case
+    use flexibility_cache, only: flexibility_cache_t
     use plausibility, only: warning_length, settlement_warnings
     use error_estimate, only: estimate_errors
     use adaptive_solve, only: adaptation_t, solve_adaptive
@@ -29,7 +30,8 @@ contains
 
     !> Solve m to the quality its deck asks for (module header). On failure c holds what
     !! there is of the failed case (its discretisation, the solver's history) for the report.
-    subroutine solve_to_quality(m, estimates, progress_unit, c, adaptation, warnings, err)
+    subroutine solve_to_quality(m, estimates, progress_unit, c, adaptation, warnings, err, &
+                                cache)
         type(model_t), intent(in) :: m                  !! the deck's model
         logical, intent(in) :: estimates                !! estimate errors (two coarse solves)
         integer, intent(in) :: progress_unit            !! >= 0: each Newton step there
@@ -37,13 +39,14 @@ contains
         type(adaptation_t), intent(out) :: adaptation   !! what ADAPT did (adapted false else)
         character(len=warning_length), allocatable, intent(out) :: warnings(:)  !! on results
         type(error_t), allocatable, intent(out) :: err  !! no result (status in err%code)
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         allocate (warnings(0))
         if (m%mesh%adapt_tol > 0.0_dp) then
-            call adapt(m, c, adaptation, err)
+            call adapt(m, c, adaptation, err, cache)
         else
-            call solve_case(m, c, err, progress_unit)
+            call solve_case(m, c, err, progress_unit, cache)
             if (.not. allocated(err)) call refine_until_admissible(c, progress_unit, &
-                                                                   warnings, err)
+                                                                   warnings, err, cache)
         end if
         if (.not. allocated(err)) call require_admissible(c%summary, err)
         if (allocated(err)) return
@@ -60,20 +63,21 @@ contains
                         '(so do their error estimates); MESH grading LOADS puts '// &
                         'a node at every load']
         if (estimates) call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
-                                            c%summary%edge_in_contact)
+                                            c%summary%edge_in_contact, cache)
     end subroutine solve_to_quality
 
     !> The ADAPT policy: adaptive refinement from the MESH card's mesh, then the case's
     !! results on the final mesh.
-    subroutine adapt(m, c, adaptation, err)
+    subroutine adapt(m, c, adaptation, err, cache)
         type(model_t), intent(in) :: m                  !! the deck's model
         type(case_t), intent(out) :: c                  !! the case on the adapted mesh
         type(adaptation_t), intent(out) :: adaptation   !! the cycles
         type(error_t), allocatable, intent(out) :: err  !! the first mesh failed
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(discretization_t) :: d
         type(solution_t) :: sol
         call new_discretization(m, d, err)
-        if (.not. allocated(err)) call solve_adaptive(m, d, sol, adaptation, err)
+        if (.not. allocated(err)) call solve_adaptive(m, d, sol, adaptation, err, cache)
         if (allocated(err)) then
             c%model = m
             c%d = d

@@ -20,6 +20,7 @@ module error_estimate
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use summary_table, only: entry_t
     use solved_case, only: case_t, solve_on, finish_case
+    use flexibility_cache, only: flexibility_cache_t
     implicit none
     private
 
@@ -40,12 +41,13 @@ contains
     !! (solution_t%coarse); one whose mesh is that of N_e/2 or N_e/4 elements is not solved
     !! again. edge_in_contact: an end of the base is in contact (summary_t), which limits a
     !! uniform mesh to first order (formal_order).
-    subroutine estimate_errors(m, d, e, known, edge_in_contact)
+    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         type(entry_t), intent(inout) :: e(:)
         type(coarse_solution_t), intent(in), optional :: known(:)
         logical, intent(in), optional :: edge_in_contact
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(coarse_solution_t), allocatable :: reuse(:)
         type(entry_t), allocatable :: e2(:), e4(:)
         real(dp) :: h_edge
@@ -53,9 +55,9 @@ contains
         if (m%mesh%ne/4 < min_coarse_elements) return
         allocate (reuse(0))
         if (present(known)) reuse = known
-        call coarse_entries(m, m%mesh%ne/2, reuse, e2, ok2, nodes2)
+        call coarse_entries(m, m%mesh%ne/2, reuse, e2, ok2, nodes2, cache)
         if (.not. ok2) return
-        call coarse_entries(m, m%mesh%ne/4, reuse, e4, ok4, nodes4)
+        call coarse_entries(m, m%mesh%ne/4, reuse, e4, ok4, nodes4, cache)
         if (.not. ok4) return
         ! the contact extent moves by whole stations: at least half the largest element (as t)
         h_edge = maxval(d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%structure%length
@@ -155,13 +157,14 @@ contains
 
     !> The key results of the case on ne elements (ok false when the solve fails), from a
     !! known solution on that mesh if there is one.
-    subroutine coarse_entries(m, ne, known, e, ok, on_nodes)
+    subroutine coarse_entries(m, ne, known, e, ok, on_nodes, cache)
         type(model_t), intent(in) :: m
         integer, intent(in) :: ne
         type(coarse_solution_t), intent(in) :: known(:)
         type(entry_t), allocatable, intent(out) :: e(:)
         logical, intent(out) :: ok
         logical, intent(out) :: on_nodes    !! every concentrated load on a node of this mesh
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(model_t) :: mc
         type(discretization_t) :: d
         type(case_t) :: c
@@ -181,7 +184,7 @@ contains
                 return
             end if
         end do
-        call coarse_case(mc, d, c, ok)
+        call coarse_case(mc, d, c, ok, cache=cache)
         if (ok) e = c%entries
     end subroutine coarse_entries
 
@@ -194,12 +197,13 @@ contains
 
     !> The case solved on the discretisation d, or finished from a known solution on d; ok
     !! false when the solve fails.
-    subroutine coarse_case(m, d, c, ok, known)
+    subroutine coarse_case(m, d, c, ok, known, cache)
         type(model_t), intent(in) :: m                 !! the model
         type(discretization_t), intent(in) :: d        !! a coarser mesh of it
         type(case_t), intent(out) :: c                 !! the case on d
         logical, intent(out) :: ok                     !! solved and tabulated
         type(coarse_solution_t), intent(in), optional :: known   !! the solution on d
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(solution_t) :: sol
         type(error_t), allocatable :: err
         if (present(known)) then
@@ -210,7 +214,7 @@ contains
             sol%n_solves = known%n_solves
             call finish_case(m, d, sol, c, err)
         else
-            call solve_on(m, d, c, err)
+            call solve_on(m, d, c, err, cache=cache)
         end if
         ok = .not. allocated(err)
     end subroutine coarse_case

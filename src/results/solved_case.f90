@@ -12,6 +12,7 @@ module solved_case
     use model, only: model_t
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
+    use flexibility_cache, only: flexibility_cache_t
     use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries
@@ -35,33 +36,35 @@ module solved_case
 contains
 
     !> Discretise m by its MESH card and solve it (solve_on).
-    subroutine solve_case(m, c, err, progress_unit)
+    subroutine solve_case(m, c, err, progress_unit, cache)
         type(model_t), intent(in) :: m                  !! the model
         type(case_t), intent(out) :: c                  !! the finished case
         type(error_t), allocatable, intent(out) :: err  !! solve or tabulation failed
         integer, intent(in), optional :: progress_unit  !! a unit for one line per Newton step
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(discretization_t) :: d
         call new_discretization(m, d, err)
         if (allocated(err)) return
-        call solve_on(m, d, c, err, progress_unit)
+        call solve_on(m, d, c, err, progress_unit, cache)
     end subroutine solve_case
 
     !> Solve m on the discretisation d and finish the case (finish_case).
-    subroutine solve_on(m, d, c, err, progress_unit)
+    subroutine solve_on(m, d, c, err, progress_unit, cache)
         type(model_t), intent(in) :: m                  !! the model
         type(discretization_t), intent(in) :: d         !! any mesh of m (MESH card, adapted)
         type(case_t), intent(out) :: c                  !! the finished case
         type(error_t), allocatable, intent(out) :: err  !! solve or tabulation failed
         integer, intent(in), optional :: progress_unit  !! a unit for one line per Newton step
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(solution_t) :: sol
         if (present(progress_unit)) then
             if (progress_unit >= 0) then
-                call solve_contact(m, d, sol, err, progress_unit)
+                call solve_contact(m, d, sol, err, progress_unit, cache=cache)
             else
-                call solve_contact(m, d, sol, err)
+                call solve_contact(m, d, sol, err, cache=cache)
             end if
         else
-            call solve_contact(m, d, sol, err)
+            call solve_contact(m, d, sol, err, cache=cache)
         end if
         if (allocated(err)) then
             ! the failed solve's counts and history stay for the report

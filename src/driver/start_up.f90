@@ -1,0 +1,19 @@
+!> What every program of the project does once before any work, while it runs one thread:
+!! GSL's error handler off (its default aborts the process; every GSL status is checked
+!! instead) and the process's quadrature tables written (afterwards only read).
+module start_up
+    use gsl_wrappers, only: gsl_start
+    use singular_quadrature, only: start_gauss_tables
+    implicit none
+    private
+
+    public :: start_program
+
+contains
+
+    !> Once, first thing in a program.
+    subroutine start_program()
+        call gsl_start()
+        call start_gauss_tables()
+    end subroutine start_program
+end module start_up
