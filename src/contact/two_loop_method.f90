@@ -10,7 +10,7 @@
 module two_loop_method
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_ANALYSIS
-    use model, only: model_t, MODEL_BEAM, total_vertical_load
+    use model, only: model_t, MODEL_BEAM, total_vertical_load, traction_measure
     use discretization, only: discretization_t
     use mindlin_structure, only: traction_at
     use linear_solve, only: solve_symmetric
@@ -110,11 +110,7 @@ contains
     pure real(dp) function start_threshold(m) result(tau)
         type(model_t), intent(in) :: m
         real(dp) :: mean_pressure
-        if (m%structure%kind == MODEL_BEAM) then
-            mean_pressure = total_vertical_load(m%loads)/m%structure%length
-        else
-            mean_pressure = total_vertical_load(m%loads)/(pi*m%structure%length**2)
-        end if
+        mean_pressure = total_vertical_load(m%loads)/traction_measure(m%structure)
         if (m%solver%tau0_start >= 0.0_dp) then
             tau = m%solver%tau0_start*mean_pressure
         else

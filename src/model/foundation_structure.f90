@@ -6,7 +6,7 @@
 !!   plate  C = E h/(1 - nu^2),    D = E h^3/(12 (1 - nu^2)),   kGh = k G h
 !! with G = E/(2 (1 + nu)). Units: the deck's force F and length L (E in F/L^2).
 module foundation_structure
-    use kinds, only: dp
+    use kinds, only: dp, pi
     implicit none
     private
 
@@ -32,7 +32,7 @@ module foundation_structure
         logical :: plate = .false.
     end type section_t
 
-    public :: section_of, flexural_rigidity, interface_ends
+    public :: section_of, flexural_rigidity, interface_ends, base_area, traction_measure
 
 contains
 
@@ -76,4 +76,26 @@ contains
             x_right = s%length
         end if
     end subroutine interface_ends
+
+    !> The area of the base [L^2]: l b (beam), pi a^2 (plate).
+    pure real(dp) function base_area(s)
+        type(structure_t), intent(in) :: s   !! the structure
+        if (s%kind == MODEL_BEAM) then
+            base_area = s%length*s%b
+        else
+            base_area = pi*s%length**2
+        end if
+    end function base_area
+
+    !> What a traction of the model integrates over to a force: l [L] for the beam (its
+    !! tractions are line loads, force per length), pi a^2 [L^2] for the plate; the mean
+    !! traction of a total load V is V / traction_measure.
+    pure real(dp) function traction_measure(s)
+        type(structure_t), intent(in) :: s   !! the structure
+        if (s%kind == MODEL_BEAM) then
+            traction_measure = s%length
+        else
+            traction_measure = pi*s%length**2
+        end if
+    end function traction_measure
 end module foundation_structure

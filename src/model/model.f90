@@ -8,7 +8,8 @@
 module model
     use kinds, only: dp, pi
     use foundation_structure, only: structure_t, section_t, MODEL_BEAM, MODEL_PLATE, &
-                                    flexural_rigidity, section_of, interface_ends
+                                    flexural_rigidity, section_of, interface_ends, &
+                                    base_area, traction_measure
     use ground_model, only: ground_t, soil_shear_modulus
     use interface_properties, only: interface_t
     use applied_loads, only: load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, &
@@ -20,7 +21,7 @@ module model
 
     ! the parts and their constants, for callers that hold the whole model
     public :: structure_t, section_t, MODEL_BEAM, MODEL_PLATE, flexural_rigidity, section_of
-    public :: interface_ends
+    public :: interface_ends, base_area, traction_measure
     public :: ground_t, soil_shear_modulus
     public :: interface_t
     public :: load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, total_vertical_load

@@ -7,14 +7,18 @@ module report_writer
     use output_paths, only: canonical_path
     use model, only: model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, flexural_rigidity, &
                      relative_stiffness, soil_shear_modulus, friction_compliance, &
-                     total_vertical_load, has_concentrated_load
+                     total_vertical_load, has_concentrated_load, base_area, traction_measure
     use shape_functions, only: interp_name
     use discretization, only: discretization_t
     use contact_solver, only: solution_t
     use solution_checks, only: check_limit
     use interface_law, only: STATE_LIFTOFF, STATE_STICK, STATE_SLIP
-    use station_columns, only: column_t, nondim_columns, physical_columns, case_units, &
-                               column_index, units_t, Q_STATE
+    use station_columns, only: column_t, nondim_columns, physical_columns, column_index, &
+                               role_column, Q_STATE, ROLE_POSITION, ROLE_SETTLEMENT, ROLE_GAP, &
+                               ROLE_PRESSURE, ROLE_SHEAR_TRACTION, ROLE_STATE, ROLE_SLIP, &
+                               ROLE_MOMENT, ROLE_HOOP_MOMENT, ROLE_SHEAR_FORCE, &
+                               ROLE_AXIAL_FORCE, ROLE_HOOP_FORCE
+    use case_scales, only: units_t, case_units
     use station_results, only: station_table_t, contact_extent, FLAG_TENSION, FLAG_OVERLAP
     use design_summary, only: summary_t, interval_t
     use figure_templates, only: panel_template, sweep_template
@@ -496,174 +500,163 @@ contains
             m%structure%kind == MODEL_BEAM)
     end function pressure_scale
 
-    !> The settings a panel or sweep template reads: model, data format, column numbers
-    !! (from the station column table), axis labels and legend names with units, the clip
-    !! rule, the friction coefficient and the load positions.
+    !> The settings a panel or sweep template reads: model, data format, column numbers,
+    !! axis labels and legend names with units (all from the station column table, by the
+    !! columns' roles), the clip rule, the friction coefficient and the load positions.
     subroutine write_figure_settings(u, m, mean_pressure)
-        integer, intent(in) :: u
-        type(model_t), intent(in) :: m
+        integer, intent(in) :: u                   !! the open .gp file
+        type(model_t), intent(in) :: m             !! the case
         real(dp), intent(in) :: mean_pressure      !! V / contact area [F/L^2]; 0: V / base
         type(column_t), allocatable :: cols(:)
-        type(units_t) :: un
         logical :: beam, phys
-        integer :: ix
         real(dp) :: p_mean, xs
         beam = m%structure%kind == MODEL_BEAM
         phys = .not. m%nondim
-        un = case_units(m)
         if (phys) then
             cols = physical_columns(m)
         else
             cols = nondim_columns(m)
         end if
-        ix = column_index(cols, pick('x', 'r', 't'))
-        xs = cols(ix)%scale
+        xs = cols(role_column(cols, ROLE_POSITION))%scale
         if (mean_pressure > 0.0_dp) then
             p_mean = mean_pressure*pressure_scale(m, cols)
         else      ! no contact area known: the load over the base
-            p_mean = total_vertical_load(m%loads)/merge(m%structure%length*m%structure%b, &
-                pi*m%structure%length**2, beam)* &
-                     pressure_scale(m, cols)
+            p_mean = total_vertical_load(m%loads)/base_area(m%structure)*pressure_scale(m, cols)
         end if
         write (u, '(a)') "model = '"//trim(merge('BEAM ', 'PLATE', beam))//"'"
         write (u, '(a)') 'csv = '//int_text(merge(1, 0, phys))
-        write (u, '(a)') '# columns of the data file (station column table)'
-        call put_col('c_x', pick('x', 'r', 't'))
-        call put_col('c_w', pick('w', 'w', 'W'))
-        call put_col('c_gap', 'gap')
-        call put_col('c_p', pick('p_z', 'sigma_z', 'Sigma_z'))
-        call put_col('c_s', pick('p_x', 'sigma_x', 'Sigma_x'))
-        call put_col('c_state', 'state')
-        call put_col('c_slip', 'slip')
-        if (beam) then
-            call put_col('c_m', pick('M', '', 'M/(Fl)'))
-            call put_col('c_mt', '')
-            call put_col('c_q', pick('Q', '', 'Q/F'))
-            call put_col('c_n', pick('N', '', 'N/F'))
-            call put_col('c_nt', '')
-        else
-            call put_col('c_m', pick('', 'M_r', 'M_r/F'))
-            call put_col('c_mt', pick('', 'M_t', 'M_t/F'))
-            call put_col('c_q', pick('', 'Q_r', 'Q_r*a/F'))
-            call put_col('c_n', pick('', 'N_r', 'N_r*a/F'))
-            call put_col('c_nt', pick('', 'N_t', 'N_t*a/F'))
-        end if
-        write (u, '(a)') '# axis labels and legend names'
-        call put_text('lab_x', heading(pick('x', 'r', 't'), '', &
-                                       pick('x', 'r', trim(merge('t = x/l', 't = r/a', beam)))))
-        call put_text('lab_w', heading(pick('w', 'w', 'W'), 'settlement'))
-        call put_text('lab_p', heading(pick('p_z', 'sigma_z', 'Sigma_z'), 'contact pressure'))
-        call put_text('lab_s', heading(pick('p_x', 'sigma_x', 'Sigma_x'), 'shear traction'))
-        call put_text('lab_slip', heading('slip', 'slip u_b - u_f', ''))
-        if (beam) then
-            call put_text('lab_m', heading(pick('M', '', 'M/(Fl)'), 'bending moment'))
-            call put_text('lab_q', heading(pick('Q', '', 'Q/F'), 'shear force'))
-            call put_text('lab_n', heading(pick('N', '', 'N/F'), 'axial force'))
-            call put_text('lab_mr', heading(pick('M', '', 'M/(Fl)'), 'bending moment'))
-            call put_text('lab_mt', '')
-        else
-            call put_text('lab_m', heading(pick('', 'M_r', 'M_r/F'), 'moments', &
-                                           pick('', 'M_r, M_theta', 'M_r/F, M_theta/F')))
-            call put_text('lab_q', heading(pick('', 'Q_r', 'Q_r*a/F'), 'radial shear force'))
-            call put_text('lab_n', heading(pick('', 'N_r', 'N_r*a/F'), 'membrane forces', &
-                                           pick('', 'N_r, N_theta', 'N_r*a/F, N_theta*a/F')))
-            call put_text('lab_mr', heading(pick('', 'M_r', 'M_r/F'), 'radial moment'))
-            call put_text('lab_mt', heading(pick('', 'M_t', 'M_t/F'), 'hoop moment', &
-                                            pick('', 'M_theta', 'M_theta/F')))
-        end if
-        call put_text('key_w', symbol_of(pick('w', 'w', 'W')))
-        call put_text('key_p', symbol_of(pick('p_z', 'sigma_z', 'Sigma_z')))
-        call put_text('key_s', symbol_of(pick('p_x', 'sigma_x', 'Sigma_x')))
-        call put_text('key_slip', 'slip')
-        if (beam) then
-            call put_text('key_m', symbol_of(pick('M', '', 'M/(Fl)')))
-            call put_text('key_mt', '')
-            call put_text('key_q', symbol_of(pick('Q', '', 'Q/F')))
-            call put_text('key_n', symbol_of(pick('N', '', 'N/F')))
-            call put_text('key_nt', '')
-        else
-            call put_text('key_m', symbol_of(pick('', 'M_r', 'M_r/F')))
-            call put_text('key_mt', pick('', 'M_theta', 'M_theta/F'))
-            call put_text('key_q', symbol_of(pick('', 'Q_r', 'Q_r*a/F')))
-            call put_text('key_n', symbol_of(pick('', 'N_r', 'N_r*a/F')))
-            call put_text('key_nt', pick('', 'N_theta', 'N_theta*a/F'))
-        end if
-        call put_text('p_unit', &
-                      trim(cols(column_index(cols, pick('p_z', 'sigma_z', 'Sigma_z')))%unit))
+        call write_figure_columns(u, cols)
+        call write_figure_labels(u, cols, m%nondim, beam)
         if (beam .and. phys) then
             write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
-            call put_num('line_width', m%structure%b)
-            call put_text('lab_line', 'line load b p_z ['//trim(un%line_load)//']')
+            call put_num(u, 'line_width', m%structure%b)
+            call put_text(u, 'lab_line', 'line load b p_z ['//trim(case_line_load(m))//']')
         else
-            call put_num('line_width', 0.0_dp)
-            call put_text('lab_line', '')
+            call put_num(u, 'line_width', 0.0_dp)
+            call put_text(u, 'lab_line', '')
         end if
         write (u, '(a)') '# clip rule: p_clip = max(clip_factor p_mean, clip_inner x the largest pressure'
         write (u, '(a)') '# at least edge_d from a free edge); p_mean = V / contact area, edge_d = h'
-        call put_num('p_mean', p_mean)
-        call put_num('clip_factor', 1.5_dp)
-        call put_num('clip_inner', 1.25_dp)
-        call put_num('edge_d', m%structure%h*xs)
-        call put_num('friction', m%interface%f)
+        call put_num(u, 'p_mean', p_mean)
+        call put_num(u, 'clip_factor', 1.5_dp)
+        call put_num(u, 'clip_inner', 1.25_dp)
+        call put_num(u, 'edge_d', m%structure%h*xs)
+        call put_num(u, 'friction', m%interface%f)
         call write_figure_loads(u, m, xs)
+    end subroutine write_figure_settings
+
+    !> The line-load unit of a physical deck (force/length).
+    function case_line_load(m) result(unit)
+        type(model_t), intent(in) :: m    !! the case
+        character(len=:), allocatable :: unit
+        type(units_t) :: un
+        un = case_units(m)
+        unit = trim(un%line_load)
+    end function case_line_load
+
+    !> The data file's column number of each plotted quantity (0: the model has none).
+    subroutine write_figure_columns(u, cols)
+        integer, intent(in) :: u                   !! the open .gp file
+        type(column_t), intent(in) :: cols(:)      !! the case's station columns
+        character(len=8), parameter :: names(12) = [character(len=8) :: 'c_x', 'c_w', &
+            'c_gap', 'c_p', 'c_s', 'c_state', 'c_slip', 'c_m', 'c_mt', 'c_q', 'c_n', 'c_nt']
+        integer, parameter :: roles(12) = [ROLE_POSITION, ROLE_SETTLEMENT, ROLE_GAP, &
+            ROLE_PRESSURE, ROLE_SHEAR_TRACTION, ROLE_STATE, ROLE_SLIP, ROLE_MOMENT, &
+            ROLE_HOOP_MOMENT, ROLE_SHEAR_FORCE, ROLE_AXIAL_FORCE, ROLE_HOOP_FORCE]
+        integer :: k
+        write (u, '(a)') '# columns of the data file (station column table)'
+        do k = 1, size(names)
+            write (u, '(a)') trim(names(k))//' = '//int_text(role_column(cols, roles(k)))
+        end do
+    end subroutine write_figure_columns
+
+    !> Axis labels ('settlement w [mm]': words, symbol, unit) and legend names; a plate's
+    !! moment and membrane panels show the radial and hoop quantities together.
+    subroutine write_figure_labels(u, cols, nondim, beam)
+        integer, intent(in) :: u                   !! the open .gp file
+        type(column_t), intent(in) :: cols(:)      !! the case's station columns
+        logical, intent(in) :: nondim              !! t = x/l or r/a on the x axis
+        logical, intent(in) :: beam                !! a beam (else a plate)
+        write (u, '(a)') '# axis labels and legend names'
+        if (nondim) then
+            call put_text(u, 'lab_x', heading(ROLE_POSITION, '', &
+                                              trim(merge('t = x/l', 't = r/a', beam))))
+        else
+            call put_text(u, 'lab_x', heading(ROLE_POSITION, ''))
+        end if
+        call put_text(u, 'lab_w', heading(ROLE_SETTLEMENT))
+        call put_text(u, 'lab_p', heading(ROLE_PRESSURE))
+        call put_text(u, 'lab_s', heading(ROLE_SHEAR_TRACTION))
+        call put_text(u, 'lab_slip', heading(ROLE_SLIP, symbols=''))
+        if (beam) then
+            call put_text(u, 'lab_m', heading(ROLE_MOMENT))
+            call put_text(u, 'lab_q', heading(ROLE_SHEAR_FORCE))
+            call put_text(u, 'lab_n', heading(ROLE_AXIAL_FORCE))
+            call put_text(u, 'lab_mr', heading(ROLE_MOMENT))
+            call put_text(u, 'lab_mt', '')
+        else
+            call put_text(u, 'lab_m', heading(ROLE_MOMENT, 'moments', &
+                                              legend(ROLE_MOMENT)//', '//legend(ROLE_HOOP_MOMENT)))
+            call put_text(u, 'lab_q', heading(ROLE_SHEAR_FORCE))
+            call put_text(u, 'lab_n', heading(ROLE_AXIAL_FORCE, 'membrane forces', &
+                                              legend(ROLE_AXIAL_FORCE)//', '// &
+                                              legend(ROLE_HOOP_FORCE)))
+            call put_text(u, 'lab_mr', heading(ROLE_MOMENT))
+            call put_text(u, 'lab_mt', heading(ROLE_HOOP_MOMENT, symbols=legend(ROLE_HOOP_MOMENT)))
+        end if
+        call put_text(u, 'key_w', legend(ROLE_SETTLEMENT))
+        call put_text(u, 'key_p', legend(ROLE_PRESSURE))
+        call put_text(u, 'key_s', legend(ROLE_SHEAR_TRACTION))
+        call put_text(u, 'key_slip', 'slip')
+        call put_text(u, 'key_m', legend(ROLE_MOMENT))
+        call put_text(u, 'key_mt', legend(ROLE_HOOP_MOMENT))
+        call put_text(u, 'key_q', legend(ROLE_SHEAR_FORCE))
+        call put_text(u, 'key_n', legend(ROLE_AXIAL_FORCE))
+        call put_text(u, 'key_nt', legend(ROLE_HOOP_FORCE))
+        call put_text(u, 'p_unit', trim(cols(role_column(cols, ROLE_PRESSURE))%unit))
 
     contains
 
-        !> The key of a column: beam (physical), plate (physical), or NONDIM deck.
-        function pick(beam_key, plate_key, nondim_key) result(key)
-            character(len=*), intent(in) :: beam_key, plate_key, nondim_key
-            character(len=:), allocatable :: key
-            if (.not. phys) then
-                key = nondim_key
-            else if (beam) then
-                key = beam_key
-            else
-                key = plate_key
-            end if
-        end function pick
-
-        !> 'settlement w [mm]': words, the column's symbol (or `symbols`) and its unit (none
-        !! for a pure number).
-        function heading(key, words, symbols) result(text)
-            character(len=*), intent(in) :: key, words
-            character(len=*), intent(in), optional :: symbols
+        !> 'settlement w [mm]': the column's words (or `words`), its symbol (or `symbols`) and
+        !! its unit (none for a pure number).
+        function heading(role, words, symbols) result(text)
+            integer, intent(in) :: role
+            character(len=*), intent(in), optional :: words, symbols
             character(len=:), allocatable :: text, sym
             integer :: i
-            i = column_index(cols, key)
+            i = role_column(cols, role)
             sym = trim(cols(i)%symbol)
             if (present(symbols)) sym = trim(symbols)
-            text = trim(words)
+            text = trim(cols(i)%words)
+            if (present(words)) text = trim(words)
             if (len(sym) > 0 .and. len(text) > 0) text = text//' '
             text = text//sym
             if (len_trim(cols(i)%unit) > 0) text = text//' ['//trim(cols(i)%unit)//']'
         end function heading
 
-        function symbol_of(key) result(text)
-            character(len=*), intent(in) :: key
+        !> The legend symbol of the column with this role ('' if none).
+        function legend(role) result(text)
+            integer, intent(in) :: role
             character(len=:), allocatable :: text
-            text = trim(cols(column_index(cols, key))%symbol)
-        end function symbol_of
+            text = ''
+            if (role_column(cols, role) > 0) text = trim(cols(role_column(cols, role))%legend)
+        end function legend
+    end subroutine write_figure_labels
 
-        subroutine put_col(name, key)
-            character(len=*), intent(in) :: name, key
-            integer :: i
-            i = 0
-            if (len(key) > 0) i = column_index(cols, key)
-            write (u, '(a)') name//' = '//int_text(i)
-        end subroutine put_col
+    !> name = 'text' (quoted, shell-safe) in a gnuplot settings block.
+    subroutine put_text(u, name, text)
+        integer, intent(in) :: u                   !! the open .gp file
+        character(len=*), intent(in) :: name, text !! variable and its value
+        write (u, '(a)') name//" = '"//trim(shell_safe(text))//"'"
+    end subroutine put_text
 
-        subroutine put_text(name, text)
-            character(len=*), intent(in) :: name, text
-            write (u, '(a)') name//" = '"//trim(shell_safe(text))//"'"
-        end subroutine put_text
-
-        subroutine put_num(name, x)
-            character(len=*), intent(in) :: name
-            real(dp), intent(in) :: x
-            write (u, '(a)') name//' = '//num(x)
-        end subroutine put_num
-
-    end subroutine write_figure_settings
+    !> name = x in a gnuplot settings block.
+    subroutine put_num(u, name, x)
+        integer, intent(in) :: u                   !! the open .gp file
+        character(len=*), intent(in) :: name       !! variable
+        real(dp), intent(in) :: x                  !! its value
+        write (u, '(a)') name//' = '//num(x)
+    end subroutine put_num
 
     !> The loads of the figure settings as gnuplot arrays: kind letter (P point, M moment,
     !! R ring, D patch) and the interval [x1, x2] (a point for all but the patch), in the
@@ -1112,11 +1105,7 @@ contains
     pure real(dp) function nondim_sigma(m, sigma)
         type(model_t), intent(in) :: m
         real(dp), intent(in) :: sigma
-        if (m%structure%kind == MODEL_BEAM) then
-            nondim_sigma = sigma*m%structure%length/total_vertical_load(m%loads)
-        else
-            nondim_sigma = sigma*pi*m%structure%length**2/total_vertical_load(m%loads)
-        end if
+        nondim_sigma = sigma*traction_measure(m%structure)/total_vertical_load(m%loads)
     end function nondim_sigma
 
     pure real(dp) function rel_diff(a, b, scale)

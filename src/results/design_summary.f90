@@ -18,7 +18,7 @@
 module design_summary
     use kinds, only: dp, pi
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, LOAD_RING, &
-                     total_vertical_load, friction_compliance
+                     total_vertical_load, friction_compliance, base_area, traction_measure
     use contact_solver, only: solution_t
     use interface_law, only: STATE_LIFTOFF, STATE_SLIP, admissible_excess
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q, Q_SLIP
@@ -124,12 +124,10 @@ contains
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(inout) :: s
-        real(dp) :: base
         s%w_mean = tab%w_mean
-        base = merge(m%structure%length*m%structure%b, pi*m%structure%length**2, &
-            m%structure%kind == MODEL_BEAM)
         s%subgrade_modulus = 0.0_dp
-        if (s%w_mean > 0.0_dp) s%subgrade_modulus = total_vertical_load(m%loads)/base/s%w_mean
+        if (s%w_mean > 0.0_dp) s%subgrade_modulus = total_vertical_load(m%loads)/ &
+                                                    base_area(m%structure)/s%w_mean
     end subroutine mean_settlement
 
     !> Intervals, contact length and area, mean, largest and near-edge pressures.
@@ -286,11 +284,7 @@ contains
         s%n_overlap_flags = count(iand(tab%flag, FLAG_OVERLAP) /= 0)
         scale = v*[1.0_dp, 1.0_dp, m%structure%length]
         s%equilibrium = maxval(abs(sol%reaction - sol%applied)/scale)
-        if (m%structure%kind == MODEL_BEAM) then
-            sigma_scale = m%structure%length/v
-        else
-            sigma_scale = pi*m%structure%length**2/v
-        end if
+        sigma_scale = traction_measure(m%structure)/v
         s%admissibility = sol%admissibility*sigma_scale
         ! the excess the regularised law allows at the largest slip (interface_law), doubled for
         ! the slip read at stations rather than at the Gauss points, plus the precision of the

@@ -4,13 +4,11 @@
 !! file (.dat), the physical CSV, the figures and the tests all take their columns from here,
 !! so no module reads a station column by its number.
 !!
-!! Display units for physical decks: settlements in mm when the deck's length unit is `m`
-!! (else in the deck's length unit); pressures as force/length^2 with the usual SI name (kPa
-!! for kN and m); beam tractions both as line loads (force/length, the unknowns of the model)
-!! and as pressures over the width b; plate resultants per unit length.
+!! Units and factors come from the case's one table of scales (case_scales).
 module station_columns
-    use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, flexural_rigidity, total_vertical_load
+    use kinds, only: dp
+    use model, only: model_t, MODEL_BEAM
+    use case_scales, only: units_t, scales_t, case_units, nondim_scale_factors
     implicit none
     private
 
@@ -20,16 +18,16 @@ module station_columns
                                   Q_M = 12, Q_MT = 13, Q_Q = 14, Q_SX_FE = 15, Q_SZ_FE = 16
     integer, parameter, public :: n_quantities = 16
 
-    !> Display units of a case, with the factor from the deck's units to each.
-    type, public :: units_t
-        character(len=16) :: length = 'm'       !! coordinates x, r, h
-        character(len=16) :: disp = 'mm'        !! settlement, gap, slip
-        real(dp) :: disp_factor = 1.0e3_dp      !! deck length -> disp unit
-        character(len=16) :: force = 'kN'
-        character(len=16) :: pressure = 'kPa'   !! force/length^2
-        character(len=16) :: line_load = 'kN/m' !! force/length
-        character(len=16) :: moment = 'kN.m'    !! force*length
-    end type units_t
+    !> What a column means to a figure (its role): the panels ask the table for the column
+    !! with a role, never for a name. ROLE_PRESSURE and ROLE_SHEAR_TRACTION are the plotted
+    !! tractions (a beam's p_z, p_x per area; a plate's sigma_z, sigma_x; Sigma_z, Sigma_x);
+    !! ROLE_MOMENT, ROLE_SHEAR_FORCE, ROLE_AXIAL_FORCE the beam's M, Q, N or the plate's
+    !! radial M_r, Q_r, N_r; the plate's hoop M_theta, N_theta have roles of their own.
+    integer, parameter, public :: ROLE_NONE = 0, ROLE_POSITION = 1, ROLE_SETTLEMENT = 2, &
+                                  ROLE_GAP = 3, ROLE_PRESSURE = 4, ROLE_SHEAR_TRACTION = 5, &
+                                  ROLE_STATE = 6, ROLE_SLIP = 7, ROLE_MOMENT = 8, &
+                                  ROLE_HOOP_MOMENT = 9, ROLE_SHEAR_FORCE = 10, &
+                                  ROLE_AXIAL_FORCE = 11, ROLE_HOOP_FORCE = 12
 
     !> One column of a station table.
     type, public :: column_t
@@ -42,65 +40,28 @@ module station_columns
                                             !! for nondim_columns, display units for physical)
         logical :: integer_valued = .false. !! the state code
         logical :: in_report = .true.       !! also a column of the report's table
+        integer :: role = ROLE_NONE         !! what it means to a figure (ROLE_*)
+        character(len=24) :: words = ''     !! the quantity in words, for axis labels
+        character(len=12) :: legend = ''    !! its symbol in a legend (M_theta for M_t)
     end type column_t
 
-    public :: case_units, nondim_columns, physical_columns, column_index, pressure_unit
+    public :: nondim_columns, physical_columns, column_index, role_column
 
 contains
-
-    !> Display units from the deck's UNITS labels (NONDIM decks: F and l or a, unscaled).
-    pure function case_units(m) result(un)
-        type(model_t), intent(in) :: m
-        type(units_t) :: un
-        un%length = m%units%length
-        un%force = m%units%force
-        un%disp = m%units%length
-        un%disp_factor = 1.0_dp
-        if (trim(m%units%length) == 'm' .and. .not. m%nondim) then
-            un%disp = 'mm'
-            un%disp_factor = 1.0e3_dp
-        end if
-        un%pressure = pressure_unit(m%units%force, m%units%length)
-        un%line_load = trim(m%units%force)//'/'//trim(m%units%length)
-        un%moment = trim(m%units%force)//'.'//trim(m%units%length)
-    end function case_units
-
-    !> The SI name of force/length^2 where there is one (kN/m^2 = kPa), else 'F/L^2'.
-    pure function pressure_unit(force, length) result(unit)
-        character(len=*), intent(in) :: force, length
-        character(len=16) :: unit
-        select case (trim(force)//' '//trim(length))
-        case ('N m')
-            unit = 'Pa'
-        case ('kN m', 'N mm')
-            unit = merge('kPa', 'MPa', trim(force) == 'kN')
-        case ('MN m')
-            unit = 'MPa'
-        case ('kN mm')
-            unit = 'GPa'
-        case default
-            unit = trim(force)//'/'//trim(length)//'^2'
-        end select
-    end function pressure_unit
 
     !> Columns of the nondimensional data file and report table (SPEC §9 fixes the first nine).
     pure function nondim_columns(m) result(cols)
         type(model_t), intent(in) :: m
         type(column_t), allocatable :: cols(:)
-        real(dp) :: f, l, rig, s_disp, s_psi, s_sig
-        f = total_vertical_load(m%loads)
-        l = m%structure%length
-        rig = flexural_rigidity(m%structure)
-        if (m%structure%kind == MODEL_BEAM) then
-            s_disp = rig/(f*l**3)
-            s_psi = rig/(f*l**2)
-            s_sig = l/f
-        else
-            s_disp = rig/(f*l**2)
-            s_psi = rig/(f*l)
-            s_sig = pi*l**2/f
-        end if
-        cols = [col('t', 't', '', 'x/l (beam) or r/a (plate)', Q_X, 1.0_dp/l), &
+        type(scales_t) :: k
+        real(dp) :: s_disp, s_psi, s_sig
+        logical :: beam
+        beam = m%structure%kind == MODEL_BEAM
+        k = nondim_scale_factors(m)
+        s_disp = k%disp
+        s_psi = k%rotation
+        s_sig = k%traction
+        cols = [col('t', 't', '', 'x/l (beam) or r/a (plate)', Q_X, k%length), &
                 col('U', 'U', '', 'mid-plane horizontal displacement', Q_U, s_disp), &
                 col('W', 'W', '', 'settlement', Q_W, s_disp), &
                 col('Psi', 'Psi', '', 'section rotation', Q_PSI, s_psi), &
@@ -111,16 +72,17 @@ contains
                 col('state', 'state', '', '0 lift-off, 1 stick, 2 slip', Q_STATE, 1.0_dp)]
         cols(size(cols))%integer_valued = .true.
         if (m%structure%kind == MODEL_BEAM) then
-            cols = [cols, col('N/F', 'N/F', '', 'axial force', Q_N, 1.0_dp/f), &
+            cols = [cols, col('N/F', 'N/F', '', 'axial force', Q_N, k%force), &
                     col('M/(Fl)', 'M/(Fl)', '', 'bending moment (> 0 hogging)', Q_M, &
-                        1.0_dp/(f*l)), &
-                    col('Q/F', 'Q/F', '', 'shear force', Q_Q, 1.0_dp/f)]
+                        k%moment), &
+                    col('Q/F', 'Q/F', '', 'shear force', Q_Q, k%shear)]
         else
-            cols = [cols, col('N_r*a/F', 'N_r*a/F', '', 'radial membrane force', Q_N, l/f), &
-                    col('N_t*a/F', 'N_t*a/F', '', 'hoop membrane force', Q_NT, l/f), &
-                    col('M_r/F', 'M_r/F', '', 'radial moment (> 0 hogging)', Q_M, 1.0_dp/f), &
-                    col('M_t/F', 'M_t/F', '', 'hoop moment (> 0 hogging)', Q_MT, 1.0_dp/f), &
-                    col('Q_r*a/F', 'Q_r*a/F', '', 'radial shear force', Q_Q, l/f)]
+            cols = [cols, col('N_r*a/F', 'N_r*a/F', '', 'radial membrane force', Q_N, &
+                              k%line_force), &
+                    col('N_t*a/F', 'N_t*a/F', '', 'hoop membrane force', Q_NT, k%line_force), &
+                    col('M_r/F', 'M_r/F', '', 'radial moment (> 0 hogging)', Q_M, k%moment), &
+                    col('M_t/F', 'M_t/F', '', 'hoop moment (> 0 hogging)', Q_MT, k%moment), &
+                    col('Q_r*a/F', 'Q_r*a/F', '', 'radial shear force', Q_Q, k%shear)]
         end if
         ! the finite-element traction itself (the paper's nodal values; see station_results)
         cols = [cols, col('Sigma_x^h', 'Sigma_x^h', '', 'finite-element Sigma_x at the station', &
@@ -128,6 +90,11 @@ contains
                 col('Sigma_z^h', 'Sigma_z^h', '', 'finite-element Sigma_z at the station', &
                     Q_SZ_FE, s_sig)]
         cols(size(cols) - 1:)%in_report = .false.
+        call set_roles(cols, [character(len=12) :: 't', 'W', 'gap', 'Sigma_z', 'Sigma_x', &
+                              'state', 'slip', merge('M/(Fl)', 'M_r/F ', beam), &
+                              merge('     ', 'M_t/F', beam), merge('Q/F    ', 'Q_r*a/F', beam), &
+                              merge('N/F    ', 'N_r*a/F', beam), merge('       ', 'N_t*a/F', beam)], &
+                       [character(len=12) :: 'M_theta/F', 'N_theta*a/F'])
     end function nondim_columns
 
     !> Columns of the physical CSV and report table, in display units.
@@ -172,7 +139,51 @@ contains
                         'hoop moment (> 0 hogging)', Q_MT, 1.0_dp), &
                     col('Q_r', 'Q_r', un%line_load, 'radial shear force', Q_Q, 1.0_dp)]
         end if
+        if (m%structure%kind == MODEL_BEAM) then
+            call set_roles(cols, [character(len=12) :: 'x', 'w', 'gap', 'p_z', 'p_x', 'state', &
+                                  'slip', 'M', '', 'Q', 'N', ''], [character(len=12) :: '', ''])
+        else
+            call set_roles(cols, [character(len=12) :: 'r', 'w', 'gap', 'sigma_z', 'sigma_x', &
+                                  'state', 'slip', 'M_r', 'M_t', 'Q_r', 'N_r', 'N_t'], &
+                           [character(len=12) :: 'M_theta', 'N_theta'])
+        end if
     end function physical_columns
+
+    !> The roles of the columns named keys(ROLE_POSITION:ROLE_HOOP_FORCE) ('' where the model
+    !! has none), their words, and the legends of the hoop moment and force.
+    pure subroutine set_roles(cols, keys, hoop_legends)
+        type(column_t), intent(inout) :: cols(:)          !! the table
+        character(len=*), intent(in) :: keys(:)           !! per role, the column's key
+        character(len=*), intent(in) :: hoop_legends(2)   !! M_theta, N_theta (or '')
+        character(len=24), parameter :: beam_words(12) = [character(len=24) :: '', &
+            'settlement', '', 'contact pressure', 'shear traction', '', 'slip u_b - u_f', &
+            'bending moment', '', 'shear force', 'axial force', '']
+        character(len=24), parameter :: plate_words(12) = [character(len=24) :: '', &
+            'settlement', '', 'contact pressure', 'shear traction', '', 'slip u_b - u_f', &
+            'radial moment', 'hoop moment', 'radial shear force', 'radial membrane force', &
+            'hoop membrane force']
+        integer :: r, i
+        do r = 1, size(keys)
+            if (len_trim(keys(r)) == 0) cycle
+            i = column_index(cols, trim(keys(r)))
+            cols(i)%role = r
+            cols(i)%legend = cols(i)%symbol
+            cols(i)%words = merge(plate_words(r), beam_words(r), len_trim(keys(ROLE_HOOP_MOMENT)) > 0)
+        end do
+        if (len_trim(keys(ROLE_HOOP_MOMENT)) == 0) return
+        cols(column_index(cols, trim(keys(ROLE_HOOP_MOMENT))))%legend = hoop_legends(1)
+        cols(column_index(cols, trim(keys(ROLE_HOOP_FORCE))))%legend = hoop_legends(2)
+    end subroutine set_roles
+
+    !> Position of the column with this role in `cols`; 0 if the model has none.
+    pure integer function role_column(cols, role) result(i)
+        type(column_t), intent(in) :: cols(:)   !! the table
+        integer, intent(in) :: role             !! ROLE_*
+        do i = 1, size(cols)
+            if (cols(i)%role == role) return
+        end do
+        i = 0
+    end function role_column
 
     pure function col(key, symbol, unit, meaning, quantity, factor) result(c)
         character(len=*), intent(in) :: key, symbol, unit, meaning

@@ -27,7 +27,7 @@ module station_results
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_INTERNAL
     use model, only: model_t, MODEL_BEAM, LOAD_PATCH, LOAD_MOMENT, friction_compliance, &
-                     total_vertical_load
+                     total_vertical_load, traction_measure
     use quadrature, only: gauss_legendre
     use discretization, only: discretization_t, locate_element
     use mindlin_structure, only: section_t, section_of, displacement_at, traction_at, &
@@ -516,11 +516,7 @@ contains
         real(dp) :: w_scale, mean_pressure, sigma_scale
         logical :: lifted(tab%n)
         w_scale = max(maxval(abs(tab%val(Q_W, :))), tiny(1.0_dp))
-        if (m%structure%kind == MODEL_BEAM) then
-            mean_pressure = total_vertical_load(m%loads)/m%structure%length
-        else
-            mean_pressure = total_vertical_load(m%loads)/(pi*m%structure%length**2)
-        end if
+        mean_pressure = total_vertical_load(m%loads)/traction_measure(m%structure)
         ! the penalty leaves sigma_z ~ -eta_bar (nondimensional) where lifted off
         tab%tension_tol = max(1.0e3_dp*m%interface%eta_bar, 1.0e-12_dp)*mean_pressure
         lifted = tab%state == STATE_LIFTOFF

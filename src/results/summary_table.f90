@@ -5,9 +5,9 @@
 !! Values are in display units for physical decks (settlements in mm when lengths are in m,
 !! pressures in kPa for kN and m) and nondimensional (SPEC §6) for NONDIM decks.
 module summary_table
-    use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, total_vertical_load, flexural_rigidity
-    use station_columns, only: units_t, case_units
+    use kinds, only: dp
+    use model, only: model_t, MODEL_BEAM
+    use case_scales, only: scales_t, case_scale_factors
     use design_summary, only: summary_t
     implicit none
     private
@@ -28,16 +28,6 @@ module summary_table
                                             !! mesh decides the value; no error estimate
     end type entry_t
 
-    !> Scale factors from deck units to what is printed.
-    type :: scales_t
-        real(dp) :: disp = 1.0_dp, length = 1.0_dp, pressure = 1.0_dp
-        real(dp) :: moment = 1.0_dp, shear = 1.0_dp, rotation = 1.0_dp
-        ! (no initialisers: gfortran 12 writes blank character constants of a type that
-        ! travels through several modules into .mod files it cannot read back)
-        character(len=16) :: u_disp, u_length, u_pressure, u_moment, u_shear, u_rotation, &
-                             u_subgrade
-    end type scales_t
-
     public :: summary_entries, entry_keys
 
 contains
@@ -51,7 +41,7 @@ contains
         type(scales_t) :: k
         logical :: beam
         beam = m%structure%kind == MODEL_BEAM
-        k = print_scales(m)
+        k = case_scale_factors(m)
         e = [ent('settlement_max', 'max settlement', k%u_disp, s%w_max%value*k%disp), &
              ent('settlement_max_x', '  at', k%u_length, s%w_max%x*k%length), &
              ent('settlement_min', 'min settlement', k%u_disp, s%w_min%value*k%disp), &
@@ -152,53 +142,6 @@ contains
              ent('hoop_moment_hogging_x', '  at', k%u_length, s%mt_hog%x*k%length, &
                  s%mt_hog%defined)]
     end function moment_entries
-
-    !> Physical display units, or the nondimensional scales of SPEC §6 for a NONDIM deck.
-    pure function print_scales(m) result(k)
-        type(model_t), intent(in) :: m
-        type(scales_t) :: k
-        type(units_t) :: un
-        real(dp) :: f, l, rig
-        k%u_disp = ''
-        k%u_length = ''
-        k%u_pressure = ''
-        k%u_moment = ''
-        k%u_shear = ''
-        k%u_rotation = ''
-        k%u_subgrade = ''
-        if (m%nondim) then
-            f = total_vertical_load(m%loads)
-            l = m%structure%length
-            rig = flexural_rigidity(m%structure)
-            k%length = 1.0_dp/l
-            if (m%structure%kind == MODEL_BEAM) then
-                k%disp = rig/(f*l**3)
-                k%pressure = l*m%structure%b/f       ! Sigma = l sigma / F, sigma = b p
-                k%moment = 1.0_dp/(f*l)
-                k%shear = 1.0_dp/f
-            else
-                k%disp = rig/(f*l**2)
-                k%pressure = pi*l**2/f
-                k%moment = 1.0_dp/f
-                k%shear = l/f
-            end if
-            k%rotation = k%disp/k%length
-            return
-        end if
-        un = case_units(m)
-        k%disp = un%disp_factor
-        k%u_disp = un%disp
-        k%u_length = un%length
-        k%u_pressure = un%pressure
-        k%u_moment = un%moment
-        k%u_shear = un%force
-        k%u_rotation = 'rad'
-        k%u_subgrade = trim(un%force)//'/'//trim(un%length)//'^3'
-        if (m%structure%kind /= MODEL_BEAM) then
-            k%u_moment = trim(un%moment)//'/'//trim(un%length)
-            k%u_shear = un%line_load
-        end if
-    end function print_scales
 
     pure function area_unit(k) result(unit)
         type(scales_t), intent(in) :: k
