@@ -13,9 +13,11 @@
 !! - watchdog: full steps while they lower the best merit, or for up to `watchdog` steps without
 !!   descent; then the exact line search from the best point along its direction. F is
 !!   piecewise linear along a Newton ray (kinks where a point crosses sigma_z = 0 or
-!!   |sigma_x| = f sigma_z), so the merit is minimised exactly piece by piece. A step to a set
-!!   pattern met in the last 16 iterates (a cycle) is replaced by the better of the exact line
-!!   search along it and the single-flip step (Murty's fallback for block pivoting: the
+!!   |sigma_x| = f sigma_z), so the merit is minimised exactly piece by piece; a kink, where
+!!   the weights jump and round-off decides the crossing point's set, counts with the larger
+!!   of the merits on its two sides. A step to a set pattern met in the last 16 iterates (a
+!!   cycle) is replaced by the better of the exact line search along it (its merit on a kink:
+!!   the larger side's) and the single-flip step (Murty's fallback for block pivoting: the
 !!   solution for the pattern with only the ray's first crossing point changed, one more
 !!   linear solve); a full step that keeps the set pattern is always taken (it solves F = 0);
 !! - continuation where the plain iteration stalls (25 steps, the watchdog runs out once - its
@@ -482,7 +484,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         integer, allocatable :: code(:)
         real(dp), allocatable :: z_flip(:), res_flip(:)
-        real(dp) :: phi_flip
+        real(dp) :: phi_flip, phi_line
         logical :: descent, cycled, searched, evaluated
         integer :: k
         t = 1.0_dp
@@ -503,8 +505,11 @@ contains
             s%relaxed = 0
         else if (cycled) then
             call single_flip_step(d, sys, ls, law, sol, dz, z_flip)
-            call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t)
-            if (t <= 0.0_dp) t = 0.5_dp
+            call line_search(d, sys, law, sol%pts, s, sol%z, dz, s%phi_now, t, phi_line)
+            if (t <= 0.0_dp) then
+                t = 0.5_dp
+                phi_line = 0.0_dp   ! the half step counts with its merit alone
+            end if
             sol%z = sol%z + t*dz
             s%relaxed = s%relaxed + 1
             if (allocated(z_flip)) then
@@ -514,7 +519,8 @@ contains
                 call complete_residual(d, sys, law, sol%pts, sol%z, s%res)
                 s%phi = merit(d, sys, law, sol%pts, s, sol%z, s%res)
                 evaluated = .true.
-                if (phi_flip < s%phi) then
+                ! on a kink the line search's merit counts, not the side round-off chose
+                if (phi_flip < max(s%phi, phi_line)) then
                     sol%z = z_flip
                     s%res = res_flip
                     s%phi = phi_flip
@@ -606,8 +612,12 @@ contains
 
     !> Step length t on the ray z + t dz: the exact minimiser of the merit over (0, 1] (on each
     !! piece between kinks F is affine and the weights constant, so the merit squared is
-    !! quadratic there); 0 if no point of the ray is better than z.
-    subroutine line_search(d, sys, law, pts, s, z, dz, phi0, t)
+    !! quadratic there); 0 if no point of the ray is better than z. The merit jumps at a kink
+    !! (a point's weights change with its set), and on a kink the point's set is decided by
+    !! the last bit of its traction: a kink counts with the larger of its two one-sided
+    !! merits, and a piece's minimum at its end is that kink's (phi_t: the merit counted at
+    !! t, independent of rounding).
+    subroutine line_search(d, sys, law, pts, s, z, dz, phi0, t, phi_t)
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         type(law_t), intent(in) :: law
@@ -616,32 +626,58 @@ contains
         real(dp), intent(in) :: z(:), dz(:)   !! the ray
         real(dp), intent(in) :: phi0          !! merit at z
         real(dp), intent(out) :: t
+        real(dp), intent(out), optional :: phi_t   !! the merit counted at t (phi0 if t = 0)
         real(dp), allocatable :: lin0(:), lin1(:), f_a(:), f_b(:), knots(:), wgt(:)
-        real(dp) :: best, phi_cand, frac, t_mid
+        real(dp) :: best, phi_cand, frac, t_mid, end_before
         integer :: k
-        associate (z => z, dz => dz)
-            lin0 = linear_part(d, sys, z)
-            lin0(1:d%nv) = lin0(1:d%nv) - sys%q
-            lin1 = linear_part(d, sys, dz)
-            allocate (f_a(d%n), f_b(d%n))
-            knots = ray_kinks(law, point_tractions(pts, z), point_tractions(pts, dz))
-            best = phi0
-            t = 0.0_dp
-            call complete_residual(d, sys, law, pts, z, f_a, lin0)
-            segments: do k = 2, size(knots)
-                call complete_residual(d, sys, law, pts, z + knots(k)*dz, f_b, &
-                                       lin0 + knots(k)*lin1)
-                t_mid = 0.5_dp*(knots(k - 1) + knots(k))
-                wgt = merit_weights(d, sys, law, pts, s, z + t_mid*dz)
-                call segment_minimum(wgt, f_a, f_b, frac, phi_cand)
-                if (phi_cand < best) then
-                    best = phi_cand
-                    t = knots(k - 1) + frac*(knots(k) - knots(k - 1))
-                end if
-                f_a = f_b
-            end do segments
-        end associate
+        lin0 = linear_part(d, sys, z)
+        lin0(1:d%nv) = lin0(1:d%nv) - sys%q
+        lin1 = linear_part(d, sys, dz)
+        allocate (f_a(d%n), f_b(d%n))
+        knots = distinct(ray_kinks(law, point_tractions(pts, z), point_tractions(pts, dz)))
+        best = phi0
+        t = 0.0_dp
+        end_before = 0.0_dp
+        call complete_residual(d, sys, law, pts, z, f_a, lin0)
+        segments: do k = 2, size(knots)
+            call complete_residual(d, sys, law, pts, z + knots(k)*dz, f_b, &
+                                   lin0 + knots(k)*lin1)
+            t_mid = 0.5_dp*(knots(k - 1) + knots(k))
+            wgt = merit_weights(d, sys, law, pts, s, z + t_mid*dz)
+            ! the kink at knots(k - 1): the larger of the merits on its two sides
+            if (k > 2) call keep_better(max(end_before, norm2(wgt*f_a)), knots(k - 1), best, t)
+            call segment_minimum(wgt, f_a, f_b, frac, phi_cand)
+            if (frac > 0.0_dp .and. frac < 1.0_dp) &
+                call keep_better(phi_cand, knots(k - 1) + frac*(knots(k) - knots(k - 1)), &
+                                 best, t)
+            end_before = norm2(wgt*f_b)
+            f_a = f_b
+        end do segments
+        call keep_better(end_before, 1.0_dp, best, t)    ! the full step
+        if (present(phi_t)) phi_t = best
     end subroutine line_search
+
+    !> A candidate step t_cand with merit phi_cand replaces (best, t) if it is lower.
+    pure subroutine keep_better(phi_cand, t_cand, best, t)
+        real(dp), intent(in) :: phi_cand, t_cand
+        real(dp), intent(inout) :: best, t
+        if (phi_cand >= best) return
+        best = phi_cand
+        t = t_cand
+    end subroutine keep_better
+
+    !> The sorted values x without repeats (points crossing the ray together share a kink).
+    pure function distinct(x) result(y)
+        real(dp), intent(in) :: x(:)    !! sorted ascending
+        real(dp), allocatable :: y(:)
+        logical :: first(size(x))
+        integer :: i
+        first = .true.
+        do i = 2, size(x)
+            first(i) = x(i) > x(i - 1)
+        end do
+        y = pack(x, first)
+    end function distinct
 
     !> The merit: the Jacobi correction |F_i / J_ii| (J the generalised Jacobian at z) of
     !! every equation, relative to the block scale of its unknowns, in the 2-norm. Tension
