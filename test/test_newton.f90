@@ -466,7 +466,7 @@ contains
         if (allocated(err)) return
         call case_model(deck, 3, m, label, err)
         if (allocated(err)) return
-        m%method = METHOD_NEWTON
+        m%solver%method = METHOD_NEWTON
         loads: do k = -20, 20
             changed = m
             changed%loads(1)%fz = m%loads(1)%fz*(1.0_dp + real(k, dp)*epsilon(1.0_dp))
