@@ -20,6 +20,7 @@
 !! in [1E-30, 1E+30): nothing derived from the deck can then overflow.
 module deck_fields
     use kinds, only: dp
+    use sorting, only: sort_ascending
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -378,34 +379,21 @@ contains
                                       ' more errors not listed'
     end function render_diagnostics
 
-    !> Stable sort of the errors by (line, first column); line 0 goes last.
+    !> Stable sort of the errors by (line, first column); line 0 goes last. The key line *
+    !! 10^4 + column is exact in double precision for any line below 10^11.
     pure function line_order(diag) result(order)
-        type(diagnostics_t), intent(in) :: diag
+        type(diagnostics_t), intent(in) :: diag   !! the errors
         integer, allocatable :: order(:)
-        integer :: i, j, t
+        real(dp) :: key(diag%n)
+        integer :: i
         order = [(i, i=1, diag%n)]
-        insertion: do i = 2, diag%n
-            t = order(i)
-            j = i - 1
-            shift: do while (j >= 1)
-                if (.not. comes_after(diag%items(order(j)), diag%items(t))) exit shift
-                order(j + 1) = order(j)
-                j = j - 1
-            end do shift
-            order(j + 1) = t
-        end do insertion
+        do i = 1, diag%n
+            key(i) = real(diag%items(i)%line, dp)
+            if (diag%items(i)%line == 0) key(i) = 1.0e10_dp
+            key(i) = key(i)*1.0e4_dp + real(diag%items(i)%first, dp)
+        end do
+        call sort_ascending(key, order)
     end function line_order
-
-    !> a sorts strictly after b.
-    pure logical function comes_after(a, b)
-        type(diagnostic_t), intent(in) :: a, b
-        integer :: la, lb
-        la = a%line
-        lb = b%line
-        if (la == 0) la = huge(la)
-        if (lb == 0) lb = huge(lb)
-        comes_after = la > lb .or. (la == lb .and. a%first > b%first)
-    end function comes_after
 
     !> `deck:line:c1-c2: text`, the line and the carets (or `deck: text` without a line).
     pure function render_one(d, deck_name) result(text)

@@ -549,13 +549,18 @@ contains
 
     !> C_* identifier of an upper-case card name; 0 when unknown.
     pure integer function card_id(name)
-        character(len=*), intent(in) :: name
-        integer :: k
-        card_id = 0
-        do k = 1, n_cards
-            if (trim(name) == trim(card_names(k))) card_id = k
-        end do
+        character(len=*), intent(in) :: name   !! upper-case card name
+        card_id = name_index(name, card_names)
     end function card_id
+
+    !> Position of name in a list of names (trailing blanks ignored); 0 when absent.
+    pure integer function name_index(name, names) result(k)
+        character(len=*), intent(in) :: name       !! the name looked for
+        character(len=*), intent(in) :: names(:)   !! the list
+        do k = size(names), 1, -1
+            if (trim(name) == trim(names(k))) return
+        end do
+    end function name_index
 
     !> Add a card to the list (growing it as needed).
     subroutine append_card(st, cd)
@@ -1266,12 +1271,8 @@ contains
 
     !> Index of a sweepable name; 0 if unknown.
     pure integer function sweep_index(name)
-        character(len=*), intent(in) :: name
-        integer :: p
-        sweep_index = 0
-        do p = 1, n_sweepable
-            if (trim(name) == trim(sweep_names(p))) sweep_index = p
-        end do
+        character(len=*), intent(in) :: name   !! upper-case SWEEP name
+        sweep_index = name_index(name, sweep_names)
     end function sweep_index
 
     !> The sweepable names, blank-separated.

@@ -390,22 +390,31 @@ contains
     pure subroutine push_line(line, x0, offset, w, wc)
         type(line_rule_t), intent(inout) :: line
         real(dp), intent(in) :: x0, offset, w, wc
-        integer :: cap
-        if (.not. allocated(line%s)) then
-            allocate (line%s(256), line%w(256), line%wc(256), line%d(256))
-        else if (line%n == size(line%s)) then
-            cap = 2*size(line%s)
-            call grow_vector(line%s, cap)
-            call grow_vector(line%w, cap)
-            call grow_vector(line%wc, cap)
-            call grow_vector(line%d, cap)
-        end if
+        call room_for_one(line%n, 256, line%s, line%w, line%wc, line%d)
         line%n = line%n + 1
         line%s(line%n) = x0 + offset
         line%d(line%n) = offset
         line%w(line%n) = w
         line%wc(line%n) = wc
     end subroutine push_line
+
+    !> Room for one more entry in four parallel vectors holding n: first `initial` entries,
+    !! then twice as many whenever they are full.
+    pure subroutine room_for_one(n, initial, v1, v2, v3, v4)
+        integer, intent(in) :: n                 !! entries held
+        integer, intent(in) :: initial           !! first capacity
+        real(dp), allocatable, intent(inout) :: v1(:), v2(:), v3(:), v4(:)
+        integer :: cap
+        if (.not. allocated(v1)) then
+            allocate (v1(initial), v2(initial), v3(initial), v4(initial))
+        else if (n == size(v1)) then
+            cap = 2*size(v1)
+            call grow_vector(v1, cap)
+            call grow_vector(v2, cap)
+            call grow_vector(v3, cap)
+            call grow_vector(v4, cap)
+        end if
+    end subroutine room_for_one
 
     !> Enlarge an array to `cap` entries, keeping its contents.
     pure subroutine grow_vector(v, cap)
@@ -420,16 +429,7 @@ contains
     pure subroutine push_point(rule, x, xi, w, wc)
         type(point_rule_t), intent(inout) :: rule
         real(dp), intent(in) :: x, xi, w, wc
-        integer :: cap
-        if (.not. allocated(rule%x)) then
-            allocate (rule%x(1024), rule%xi(1024), rule%w(1024), rule%wc(1024))
-        else if (rule%n == size(rule%x)) then
-            cap = 2*size(rule%x)
-            call grow_vector(rule%x, cap)
-            call grow_vector(rule%xi, cap)
-            call grow_vector(rule%w, cap)
-            call grow_vector(rule%wc, cap)
-        end if
+        call room_for_one(rule%n, 1024, rule%x, rule%xi, rule%w, rule%wc)
         rule%n = rule%n + 1
         rule%x(rule%n) = x
         rule%xi(rule%n) = xi

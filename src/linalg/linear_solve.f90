@@ -32,16 +32,8 @@ contains
         call dsytrf('L', n, a, n, ipiv, query, -1, info)
         allocate (work(max(1, int(query(1)))))
         call dsytrf('L', n, a, n, ipiv, work, size(work), info)
-        if (info > 0) then
-            write (text, '(a,i0,a,i0,a)') 'the contact system is singular (D(', info, &
-                ',', info, ') = 0 in LDL^T): the structure is not held (rigid-body motion)'
-            call new_error(err, EXIT_ANALYSIS, trim(text))
-            return
-        else if (info < 0) then
-            write (text, '(a,i0)') 'dsytrf: illegal argument ', -info
-            call new_error(err, EXIT_INTERNAL, trim(text))
-            return
-        end if
+        call factorisation_info('dsytrf', 'D', 'LDL^T', info, err)
+        if (allocated(err)) return
         rhs(:, 1) = b
         call dsytrs('L', n, 1, a, n, ipiv, rhs, n, info)
         if (info /= 0) then
@@ -60,6 +52,25 @@ contains
                            '(non-finite solution)')
         end if
     end subroutine solve_symmetric
+
+    !> The words for a factorisation's info: > 0 a zero pivot (the structure is not held),
+    !! < 0 an illegal argument (a broken invariant of ours).
+    subroutine factorisation_info(routine, factor, method, info, err)
+        character(len=*), intent(in) :: routine          !! LAPACK routine, e.g. 'dgesv'
+        character(len=*), intent(in) :: factor           !! the factor with the zero pivot
+        character(len=*), intent(in) :: method           !! 'LU' or 'LDL^T'
+        integer, intent(in) :: info                      !! its info
+        type(error_t), allocatable, intent(out) :: err   !! none for info = 0
+        character(len=160) :: text
+        if (info > 0) then
+            write (text, '(a,i0,a,i0,a)') 'the contact system is singular ('//factor//'(', info, &
+                ',', info, ') = 0 in '//method//'): the structure is not held (rigid-body motion)'
+            call new_error(err, EXIT_ANALYSIS, trim(text))
+        else if (info < 0) then
+            write (text, '(a,i0)') routine//': illegal argument ', -info
+            call new_error(err, EXIT_INTERNAL, trim(text))
+        end if
+    end subroutine factorisation_info
 
     !> Square, consistent sizes and no NaN: the preconditions of both solvers (LAPACK's XERBLA,
     !! which stops the program, is never reached).
@@ -95,16 +106,8 @@ contains
         a_copy = a
         rhs(:, 1) = b
         call dgesv(n, 1, a, n, ipiv, rhs, n, info)
-        if (info > 0) then
-            write (text, '(a,i0,a,i0,a)') 'the contact system is singular (U(', info, &
-                ',', info, ') = 0 in LU): the structure is not held (rigid-body motion)'
-            call new_error(err, EXIT_ANALYSIS, trim(text))
-            return
-        else if (info < 0) then
-            write (text, '(a,i0)') 'dgesv: illegal argument ', -info
-            call new_error(err, EXIT_INTERNAL, trim(text))
-            return
-        end if
+        call factorisation_info('dgesv', 'U', 'LU', info, err)
+        if (allocated(err)) return
         x = rhs(:, 1)
         refinement: do step = 1, 2
             rhs(:, 1) = b - matmul(a_copy, x)

@@ -15,7 +15,7 @@ module case_quality
     use model, only: model_t
     use discretization, only: discretization_t, new_discretization, loads_on_nodes
     use contact_solver, only: solution_t
-    use solved_case, only: case_t, solve_case, finish_case
+    use solved_case, only: case_t, solve_case, finish_case, failed_case
     use flexibility_cache, only: flexibility_cache_t
     use plausibility, only: warning_length, settlement_warnings
     use error_estimate, only: estimate_errors
@@ -79,10 +79,7 @@ contains
         call new_discretization(m, d, err)
         if (.not. allocated(err)) call solve_adaptive(m, d, sol, adaptation, err, cache)
         if (allocated(err)) then
-            c%model = m
-            c%d = d
-            c%sol = sol
-            allocate (c%entries(0))
+            c = failed_case(m, d, sol)
             return
         end if
         call finish_case(m, d, sol, c, err)

@@ -93,18 +93,11 @@ contains
     pure function case_scale_factors(m) result(k)
         type(model_t), intent(in) :: m   !! structure, loads, units, NONDIM flag
         type(scales_t) :: k
-        k%units = case_units(m)
-        k%u_disp = ''
-        k%u_length = ''
-        k%u_pressure = ''
-        k%u_moment = ''
-        k%u_shear = ''
-        k%u_rotation = ''
-        k%u_subgrade = ''
         if (m%nondim) then
             k = nondim_scale_factors(m)
             return
         end if
+        k = unit_scales(m)
         k%disp = k%units%disp_factor
         k%u_disp = k%units%disp
         k%u_length = k%units%length
@@ -119,12 +112,10 @@ contains
         end if
     end function case_scale_factors
 
-    !> The groups of SPEC §6 (module header), for any deck: the nondimensional data file of a
-    !! physical deck prints them too.
-    pure function nondim_scale_factors(m) result(k)
-        type(model_t), intent(in) :: m          !! structure and loads
+    !> Factors 1 and no unit labels: the start of either set of scales.
+    pure function unit_scales(m) result(k)
+        type(model_t), intent(in) :: m   !! its unit labels
         type(scales_t) :: k
-        real(dp) :: f, l, rig
         k%units = case_units(m)
         k%u_disp = ''
         k%u_length = ''
@@ -133,6 +124,15 @@ contains
         k%u_shear = ''
         k%u_rotation = ''
         k%u_subgrade = ''
+    end function unit_scales
+
+    !> The groups of SPEC §6 (module header), for any deck: the nondimensional data file of a
+    !! physical deck prints them too.
+    pure function nondim_scale_factors(m) result(k)
+        type(model_t), intent(in) :: m          !! structure and loads
+        type(scales_t) :: k
+        real(dp) :: f, l, rig
+        k = unit_scales(m)
         f = total_vertical_load(m%loads)
         l = m%structure%length
         rig = flexural_rigidity(m%structure)

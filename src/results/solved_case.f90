@@ -31,7 +31,7 @@ module solved_case
         type(entry_t), allocatable :: entries(:)  !! key results (summary_table)
     end type case_t
 
-    public :: solve_case, solve_on, finish_case
+    public :: solve_case, solve_on, finish_case, failed_case
 
 contains
 
@@ -67,15 +67,24 @@ contains
             call solve_contact(m, d, sol, err, cache=cache)
         end if
         if (allocated(err)) then
-            ! the failed solve's counts and history stay for the report
-            c%model = m
-            c%d = d
-            c%sol = sol
-            allocate (c%entries(0))
+            c = failed_case(m, d, sol)
             return
         end if
         call finish_case(m, d, sol, c, err)
     end subroutine solve_on
+
+    !> A case whose solve failed: what there is of it (the discretisation, the solver's counts
+    !! and history) for the report of the failure; no tables and no key results.
+    function failed_case(m, d, sol) result(c)
+        type(model_t), intent(in) :: m              !! the model
+        type(discretization_t), intent(in) :: d     !! its discretisation
+        type(solution_t), intent(in) :: sol         !! the failed solve's state
+        type(case_t) :: c
+        c%model = m
+        c%d = d
+        c%sol = sol
+        allocate (c%entries(0))
+    end function failed_case
 
     !> The results of a solution: station and design tables, design summary, key results.
     subroutine finish_case(m, d, sol, c, err)
