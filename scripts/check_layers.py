@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The layers of src/ (doc/ARCHITECTURE.md): a module may use modules of its own folder and
 of the folders listed before it, never of a later one. Prints every back-edge (file, the
-module it uses, both folders) and exits 1 if there is one. Usage: python3 scripts/check_layers.py
+module it uses, both folders) and exits 1 if there is one.
+Usage: python3 scripts/check_layers.py [SRC_DIR]   (default: the project's src/)
 """
 import pathlib, re, sys
 
@@ -10,7 +11,8 @@ LAYERS = ['.', 'gsl', 'linalg', 'model', 'fe', 'halfspace', 'contact', 'deck', '
           'quality', 'output', 'driver']
 
 def main():
-    root = pathlib.Path(__file__).resolve().parent.parent / 'src'
+    root = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else \
+        pathlib.Path(__file__).resolve().parent.parent / 'src'
     folder_of = {}
     uses = {}
     for path in sorted(root.rglob('*.f90')):
@@ -31,7 +33,7 @@ def main():
         level = LAYERS.index(folder_of[name])
         for u in sorted(used):
             if u in folder_of and LAYERS.index(folder_of[u]) > level:
-                print(f'{path.relative_to(root.parent)}: {name} ({folder_of[name]}) uses '
+                print(f'{path.relative_to(root)}: {name} ({folder_of[name]}) uses '
                       f'{u} ({folder_of[u]})')
                 bad += 1
     print(f'{len(uses)} modules in {len(LAYERS)} layers, {bad} back-edges')

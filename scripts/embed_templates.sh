@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Regenerates src/report/figure_templates.f90 from scripts/gnuplot/fricon_panels.gp and
+# Regenerates src/output/figure_templates.f90 from scripts/gnuplot/fricon_panels.gp and
 # fricon_sweep.gp: the gnuplot templates become part of the program, so a figure script
 # written by fricon is self-contained (it draws from any folder, and an installed binary needs
 # no file of the source tree). Run after editing a template; the test
 # report_writer/embedded_templates_match fails while the module and the templates differ.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=src/report/figure_templates.f90
+out=src/output/figure_templates.f90
 emit() { # emit NAME FILE: a pure function NAME returning the lines of FILE
     local name=$1 file=$2 n
     n=$(wc -l <"$file")

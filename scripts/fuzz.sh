@@ -39,7 +39,10 @@ while [ $# -gt 0 ]; do
 done
 
 build=fuzz/build
-srcs="src/kinds.f90 src/errors.f90 src/model.f90 src/fe/mesh.f90 src/fe/shape_functions.f90
+srcs="src/kinds.f90 src/errors.f90 src/sorting.f90 src/model/foundation_structure.f90
+      src/model/ground_model.f90 src/model/interface_properties.f90 src/model/applied_loads.f90
+      src/model/mesh_request.f90 src/model/solver_controls.f90 src/model/model.f90
+      src/fe/mesh.f90 src/fe/shape_functions.f90
       src/fe/mesh_refinement.f90 src/fe/discretization.f90
       src/deck/deck_fields.f90 src/deck/deck_reader.f90 src/deck/plausibility.f90
       fuzz/fuzz_deck.f90"

@@ -21,6 +21,7 @@ program tester
     use test_simplifications, only: collect_simplifications
     use test_adaptive, only: collect_adaptive
     use test_nested_spaces, only: collect_nested_spaces
+    use test_architecture, only: collect_architecture
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -28,7 +29,7 @@ program tester
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
-        'simplifications adaptive nested_spaces '
+        'simplifications adaptive nested_spaces architecture '
 
     want_suite = ''
     want_test = ''
@@ -43,6 +44,10 @@ program tester
     n_pass = 0
     n_fail = 0
 
+    if (wanted('architecture')) then
+        call collect_architecture(tests)
+        call run_suite('architecture', tests, want_test, n_pass, n_fail)
+    end if
     if (wanted('shape_functions')) then
         call collect_shape_functions(tests)
         call run_suite('shape_functions', tests, want_test, n_pass, n_fail)

@@ -575,7 +575,7 @@ contains
                    'title from the JSON: '//trim(line)//' (expected '//title//')')
     end subroutine test_json_title
 
-    !> The gnuplot templates embedded in the program (src/report/figure_templates.f90) are the
+    !> The gnuplot templates embedded in the program (src/output/figure_templates.f90) are the
     !! files scripts/gnuplot/*.gp line for line: after editing a template, run
     !! scripts/embed_templates.sh.
     subroutine test_templates(err)

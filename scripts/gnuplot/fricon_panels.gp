@@ -1,6 +1,6 @@
 # fricon figure of one case: six panels from the station file of the case.
 # fricon writes output/CASE.gp: the settings below, then this template (embedded in the
-# program, src/report/figure_templates.f90, by scripts/embed_templates.sh). The settings are:
+# program, src/output/figure_templates.f90, by scripts/embed_templates.sh). The settings are:
 #   data, png, title, model ('BEAM' or 'PLATE'), csv (1: comma-separated with one header line,
 #   0: the whitespace .dat with '#' comments),
 #   column numbers c_x c_w c_gap c_p c_s c_state c_m c_mt c_q c_slip c_n c_nt (0: no such column;

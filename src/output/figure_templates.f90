@@ -18,7 +18,7 @@ contains
             //"e of the case."
         lines(2) = "# fricon writes output/CASE.gp: the settings below, then thi" &
             //"s template (embedded in the"
-        lines(3) = "# program, src/report/figure_templates.f90, by scripts/embed" &
+        lines(3) = "# program, src/output/figure_templates.f90, by scripts/embed" &
             //"_templates.sh). The settings are:"
         lines(4) = "#   data, png, title, model ('BEAM' or 'PLATE'), csv (1: com" &
             //"ma-separated with one header line,"

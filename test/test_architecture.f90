@@ -1,0 +1,45 @@
+!> The layers of src/ (doc/ARCHITECTURE.md): scripts/check_layers.py finds no module that uses
+!! a module of a later layer, and it does find one in a small tree made to have one (so the
+!! check can fail).
+module test_architecture
+    use harness, only: error_t, unittest_t, new_unittest, check
+    implicit none
+    private
+    public :: collect_architecture
+
+contains
+
+    subroutine collect_architecture(tests)
+        type(unittest_t), allocatable, intent(out) :: tests(:)
+        tests = [new_unittest('no_back_edges', test_no_back_edges), &
+                 new_unittest('back_edge_found', test_back_edge_found)]
+    end subroutine collect_architecture
+
+    !> The project's own src/: exit status 0 (no back-edge).
+    subroutine test_no_back_edges(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status
+        call execute_command_line('python3 scripts/check_layers.py > build/check_layers.txt', &
+                                  exitstat=status)
+        call check(err, status == 0, 'a module uses a later layer: see build/check_layers.txt')
+    end subroutine test_no_back_edges
+
+    !> A tree where a results module uses an output module: exit status 1.
+    subroutine test_back_edge_found(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = 'build/test_layers'
+        integer :: status, u
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/results '//dir// &
+                                  '/output')
+        open (newunit=u, file=dir//'/output/writer.f90', status='replace', action='write')
+        write (u, '(a)') 'module writer', 'end module writer'
+        close (u)
+        open (newunit=u, file=dir//'/results/table.f90', status='replace', action='write')
+        write (u, '(a)') 'module table', '    use writer', 'end module table'
+        close (u)
+        call execute_command_line('python3 scripts/check_layers.py '//dir//' > /dev/null', &
+                                  exitstat=status)
+        call check(err, status == 1, 'results using output was not reported as a back-edge')
+        call execute_command_line('rm -rf '//dir)
+    end subroutine test_back_edge_found
+end module test_architecture
