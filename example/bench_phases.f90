@@ -37,12 +37,12 @@ program bench_phases
     use mindlin_structure, only: section_of, stiffness_entries, coupling_entries
     use sparse_matrix, only: columns_t, compressed
     use halfspace_operator, only: assemble_flexibility
-    use station_results, only: station_table_t, tabulate, contact_extent
+    use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
     use design_summary, only: summary_t, summarise
     use summary_table, only: entry_t, summary_entries
     use error_estimate, only: estimate_errors
-    use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
-                             write_plot_script, write_report
+    use solved_case, only: case_t, finish_case
+    use case_files, only: case_result_t, write_case_files
     implicit none
 
     integer, parameter :: n_phase = 10
@@ -208,9 +208,7 @@ contains
         call time_solve(m, d, sys, sol, info(I_BUILD), t(P_NEWTON), t(P_CHECKS))
         call time_schur(d, sys, sol, info(I_SCHUR_SETUP), info(I_SCHUR_FACT))
         call time_results(m, d, sol, tab, s, e, t(P_TAB), t(P_SUMMARY), t(P_ESTIMATE))
-        t0 = now()
-        call write_files(deck, m, d, sol, tab, s, e, label, tmp_dir)
-        t(P_WRITE) = now() - t0
+        call write_files(deck, m, d, sol, e, label, tmp_dir, t(P_WRITE))
         call time_whole(m, d, sol, info(I_WHOLE), r%z_diff(i))
         r%n(i) = d%n
         r%nr(i) = d%nr
@@ -322,8 +320,9 @@ contains
         if (allocated(err)) error stop 'bench_phases: Schur factorisation failed'
     end subroutine time_schur
 
-    !> As analysis_driver::solve_case: the station table, the design summary with its key
-    !! results, and their error estimates (the case re-solved on N_e/2 and N_e/4, tabulated).
+    !> As the pipeline (solved_case::finish_case) and the quality layer
+    !! (case_quality::solve_to_quality): the station and design tables, the design summary
+    !! with its key results, and their error estimates (the case re-solved on N_e/2 and N_e/4).
     subroutine time_results(m, d, sol, tab, s, e, t_tab, t_summary, t_estimate)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -333,44 +332,51 @@ contains
         type(entry_t), allocatable, intent(out) :: e(:)
         real(dp), intent(out) :: t_tab, t_summary, t_estimate
         type(error_t), allocatable :: err
+        type(station_table_t) :: design
         real(dp) :: t0
         t0 = now()
         call tabulate(m, d, sol, tab, err)
+        if (.not. allocated(err)) call tabulate_design(m, d, sol, tab, design, err)
         t_tab = now() - t0
         if (allocated(err)) error stop 'bench_phases: tabulate failed'
         t0 = now()
-        s = summarise(m, sol, tab)
-        e = summary_entries(m, s, contact_extent(tab, m%structure%length))
+        s = summarise(m, sol, design)
+        e = summary_entries(m, s, contact_extent(design, m%structure%length))
         t_summary = now() - t0
         t0 = now()
         call estimate_errors(m, d, e, sol%coarse, s%edge_in_contact)
         t_estimate = now() - t0
     end subroutine time_results
 
-    !> The files of analysis_driver::write_case_files for a solved case, into tmp_dir: the
-    !! report, the data file (the CSV for physical decks), the JSON summary and the gnuplot
-    !! script. Not the PNG: gnuplot is a child process, outside this process's time.
-    subroutine write_files(deck, m, d, sol, tab, s, e, label, tmp_dir)
-        type(deck_t), intent(in) :: deck
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(solution_t), intent(in) :: sol
-        type(station_table_t), intent(in) :: tab
-        type(summary_t), intent(in) :: s
-        type(entry_t), intent(in) :: e(:)
-        character(len=*), intent(in) :: label, tmp_dir
-        character(len=1) :: no_notes(0)
+    !> The files of a solved case as the program writes them (case_files::write_case_files),
+    !! into tmp_dir: the report, the data file (the CSV for physical decks), the JSON summary
+    !! and the gnuplot script. Not the PNG: gnuplot is a child process, outside this
+    !! process's time. The case's tables are made again outside the timed phase.
+    subroutine write_files(deck, m, d, sol, e, label, tmp_dir, t_write)
+        type(deck_t), intent(in) :: deck               !! the deck (echoed in the report)
+        type(model_t), intent(in) :: m                 !! the case's model
+        type(discretization_t), intent(in) :: d        !! its discretisation
+        type(solution_t), intent(in) :: sol            !! its solution
+        type(entry_t), intent(in) :: e(:)              !! key results with their estimates
+        character(len=*), intent(in) :: label          !! the case's label
+        character(len=*), intent(in) :: tmp_dir        !! where the files go
+        real(dp), intent(out) :: t_write               !! time of the writing [s]
+        type(case_t) :: c
+        type(case_result_t) :: result
         type(error_t), allocatable :: err
-        call write_data_file(tmp_dir//'/case.dat', m, tab, err)
-        if (.not. allocated(err) .and. .not. m%nondim) &
-            call write_physical_csv(tmp_dir//'/case.csv', m, tab, err)
-        if (.not. allocated(err)) call write_summary_json(tmp_dir//'/case.json', 'case', &
-                                                          deck%path, m, 0, '', e, s, sol, tab, err)
-        if (.not. allocated(err)) call write_plot_script(tmp_dir//'/case.gp', 'case', m, label, &
-                                                         s, err)
-        if (.not. allocated(err)) call write_report(tmp_dir//'/case.txt', deck%path, deck%lines, &
-                                                    label, m, d, sol, tab, e, s, '', no_notes, err)
-        if (allocated(err)) error stop 'bench_phases: writing the report failed'
+        real(dp) :: t0
+        call finish_case(m, d, sol, c, err)
+        if (allocated(err)) error stop 'bench_phases: the case could not be tabulated'
+        c%entries = e
+        result%name = 'case'
+        result%label = label
+        result%message = ''
+        result%entries = e
+        allocate (result%warnings(0))
+        t0 = now()
+        call write_case_files(deck, c, tmp_dir//'/case', .false., result)
+        t_write = now() - t0
+        if (result%status /= 0) error stop 'bench_phases: writing the report failed'
     end subroutine write_files
 
     !> The whole solve_contact, for comparison with the sum of the replica's phases, and the
