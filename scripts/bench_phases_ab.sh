@@ -106,12 +106,12 @@ table() {
             if (!(key in t) || $c + 0 < t[key]) t[key] = $c + 0
         }
     }
-    function ms(tag, b, ne, c,   key) {
+    function ms(tag, b, ne, c,   key, v) {
         key = tag SUBSEP b SUBSEP ne SUBSEP c
         if (!(key in t)) return "?"
-        if (t[key] < 1.0e-3) return sprintf("%.3f", 1000 * t[key])
-        if (t[key] < 1.0) return sprintf("%.3g", 1000 * t[key])
-        return sprintf("%.0f", 1000 * t[key])
+        v = 1000 * t[key]
+        if (v < 10) return sprintf(v < 1 ? "%.3f" : "%.2f", v)
+        return sprintf(v < 100 ? "%.1f" : "%.0f", v)
     }
     function ratio(b, ne, c,   kr, kc) {
         kr = "ref" SUBSEP b SUBSEP ne SUBSEP c
@@ -154,8 +154,8 @@ md=$work/phases_ab.md
     echo "# Time per phase, before and after (bench_phases, both builds in one run)"
     echo
     echo "Command: \`bash scripts/bench_phases_ab.sh $ref $reps${meshes[*]+ ${meshes[*]}}\`."
-    echo "Before: \`$ref_commit\` ($(git log -1 --format=%s "$ref_commit" | cut -c1-80));" \
-        "after: \`$cur_commit\`."
+    echo "Before: \`$ref_commit\` (committed $(git log -1 --format=%cs "$ref_commit"));" \
+        "after: \`$cur_commit\` (the current tree)."
     echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 |
         sed 's/^ //'); run started $started; load average (1, 5, 15 min) $load_before before," \
         "$load_after after."
