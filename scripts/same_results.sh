@@ -125,11 +125,20 @@ first_difference() {
     cmp -s "$work/a" "$work/b" && return 0
     at=$(cmp "$work/a" "$work/b" 2>&1 | grep -o 'line [0-9]*' | head -n 1)
     n=${at#line }
-    echo "$label ${at:-differs}"
-    if [ -n "$n" ]; then
-        echo "             reference: $(sed -n "${n}p" "$work/a" | cut -c1-110)"
-        echo "             current:   $(sed -n "${n}p" "$work/b" | cut -c1-110)"
+    if [ -z "$n" ]; then
+        echo "$label differs"
+        return 0
     fi
+    # the two lines from 40 characters before their first difference
+    A=$(sed -n "${n}p" "$work/a") B=$(sed -n "${n}p" "$work/b") awk -v label="$label" \
+        -v n="$n" 'BEGIN {
+        a = ENVIRON["A"]; b = ENVIRON["B"]; c = 1
+        while (c <= length(a) && substr(a, c, 1) == substr(b, c, 1)) c++
+        from = c > 40 ? c - 40 : 1
+        cut = from > 1 ? "..." : ""
+        printf "%s line %d, column %d\n", label, n, c
+        printf "             reference: %s%s\n", cut, substr(a, from, 100)
+        printf "             current:   %s%s\n", cut, substr(b, from, 100) }'
 }
 
 # compare_case ID: the first difference of the two runs of one case (empty: the same)
