@@ -7,8 +7,9 @@
 #   bash scripts/same_results.sh [--figures] [REF_REV [DECK...]]
 #
 # REF_REV: any commit name git knows (default: the merge-base of HEAD with main; HEAD compares
-# the working tree with its last commit). DECK...: other decks instead of the default list
-# (the default case is then left out). --figures: gnuplot runs too and the PNG files are
+# the working tree with its last commit). DECK...: other decks instead of the default list,
+# e.g. test/data/malformed/*.dat for the error paths (the word `default` names the built-in
+# case). --figures: gnuplot runs too and the PNG files are
 # compared byte for byte as well (gnuplot's PNG of the same script and data is the same bytes
 # on one machine); without it, --no-figures: the figure scripts (.gp, the templates embedded)
 # and their data are compared, which is all a figure is drawn from.
@@ -37,7 +38,8 @@
 # Prints one line per case (same, or DIFFERENT with the first differing file and line and the
 # two lines) and a count; the reference worktree and all outputs are removed at the end, also
 # on an error or an interrupt. Exit status 0 when every case is the same, 1 otherwise, 2 on a
-# usage or build error. About 2 minutes (two release builds of about 30 s each, and the runs).
+# usage or build error. About a minute on two shared cores (30 to 90 s, most of it the
+# reference's release build; the runs take about 10 s, --figures adds about 30 s).
 set -uo pipefail
 figures=--no-figures
 if [ "${1:-}" = --figures ]; then
@@ -50,21 +52,29 @@ case "${1:-}" in
     exit 2
     ;;
 esac
-cd "$(dirname "$0")/.." || exit 2
-root=$PWD
-# shellcheck source=scripts/bench_binaries.sh
-source scripts/bench_binaries.sh
+root=$(cd "$(dirname "$0")/.." && pwd) || exit 2
+ref=''
 if [ $# -ge 1 ]; then
     ref=$1
     shift
-else
+fi
+# decks named from the caller's folder; the runs are made from the project root, with the
+# path relative to it for a deck inside it
+cases=()
+for deck in "$@"; do
+    if [ "$deck" != default ] && [ -f "$deck" ]; then
+        deck=$(readlink -f "$deck")
+        deck=${deck#"$root"/}
+    fi
+    cases+=("$deck")
+done
+cd "$root" || exit 2
+# shellcheck source=scripts/bench_binaries.sh
+source scripts/bench_binaries.sh
+if [ -z "$ref" ]; then
     ref=$(git merge-base HEAD main) || { echo "same_results: no merge-base with main" >&2; exit 2; }
 fi
-if [ $# -ge 1 ]; then
-    cases=("$@")
-else
-    cases=(default input/*.dat input/paper/*.dat)
-fi
+[ ${#cases[@]} -eq 0 ] && cases=(default input/*.dat input/paper/*.dat)
 for deck in "${cases[@]}"; do
     [ "$deck" = default ] || [ -f "$deck" ] || { echo "same_results: no deck $deck" >&2; exit 2; }
 done
