@@ -94,7 +94,7 @@ contains
             t_km = min(t_km, now() - t0)
             deallocate (k, mm, t_mat)
             t0 = now()
-            pts = contact_points(m, d)
+            pts = contact_points(m%structure, d)
             call build_system(m, d, pts, sys, err)
             t_build = min(t_build, now() - t0)
             t0 = now()

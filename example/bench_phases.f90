@@ -227,7 +227,7 @@ contains
         if (allocated(err)) error stop 'bench_phases: discretisation failed'
         call check_load_admissible(m, err)
         if (allocated(err)) error stop 'bench_phases: the load is not admissible'
-        sol%pts = contact_points(m, d)
+        sol%pts = contact_points(m%structure, d)
     end subroutine discretise
 
     !> T, and K with M, as build_system assembles them (K and M by their nonzeros: element
@@ -246,7 +246,7 @@ contains
         if (allocated(err)) error stop 'bench_phases: T assembly failed'
         t0 = now()
         k = compressed(stiffness_entries(section_of(m%structure), d))
-        mm = compressed(coupling_entries(m, d))
+        mm = compressed(coupling_entries(m%structure, d))
         t_km = now() - t0
         if (k%ncol /= d%nv .or. mm%nrow /= d%nr) error stop 'bench_phases: K or M misshapen'
     end subroutine time_assembly
@@ -289,7 +289,7 @@ contains
         t_newton = now() - t0
         if (allocated(err)) error stop 'bench_phases: the Newton solve failed'
         t0 = now()
-        call classify_complete(m, sol)
+        call classify_complete(m%interface, sol)
         call final_checks(m, d, sys, sol, err)
         sol%z = to_absolute(sys%rigid, sol%z)
         t_checks = now() - t0

@@ -113,7 +113,7 @@ contains
         seconds = huge(1.0_dp)
         do k = 1, 5
             call cpu_time(t0)
-            pts = contact_points(m, d)
+            pts = contact_points(m%structure, d)
             call build_system(m, d, pts, sys, err)
             call cpu_time(t1)
             seconds = min(seconds, t1 - t0)

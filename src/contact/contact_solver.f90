@@ -22,7 +22,7 @@
 module contact_solver
     use errors, only: error_t
     use flexibility_cache, only: flexibility_cache_t
-    use model, only: model_t, METHOD_TWOLOOP
+    use model, only: interface_t, model_t, METHOD_TWOLOOP
     use iso_fortran_env, only: int64
     use kinds, only: dp
     use applied_loads, only: load_positions
@@ -76,7 +76,7 @@ contains
         if (present(progress_unit)) sol%progress_unit = progress_unit
         call check_load_admissible(m, err)
         if (allocated(err)) return
-        sol%pts = contact_points(m, d)
+        sol%pts = contact_points(m%structure, d)
         nest = nested_discretisation(m, d, dc)
         t0 = wall_seconds()
         if (nest) then
@@ -102,7 +102,7 @@ contains
             call solve_two_loop(m, d, sys, sol, err)
         else
             call solve_newton(m, d, sys, sol, err, sigma_start)
-            if (.not. allocated(err)) call classify_complete(m, sol)
+            if (.not. allocated(err)) call classify_complete(m%interface, sol)
         end if
         sol%seconds(4) = wall_seconds() - t0
         t0 = wall_seconds()
@@ -138,7 +138,7 @@ contains
         call solve_newton(m, dr, sr, sol, err, sigma_start)
         sol%seconds(4) = wall_seconds() - t0
         if (.not. allocated(err)) then
-            call classify_complete(m, sol)
+            call classify_complete(m%interface, sol)
             call final_checks(m, dr, sr, sol, err)
         end if
         call absolute_answer(sr, sol)
@@ -204,11 +204,11 @@ contains
     end subroutine nested_prediction
 
     !> Tractions, threshold tau0 = f max(sigma_z, 0), sets and states of the complete problem.
-    subroutine classify_complete(m, sol)
-        type(model_t), intent(in) :: m
+    subroutine classify_complete(interface, sol)
+        type(interface_t), intent(in) :: interface   !! the interface part of the model
         type(solution_t), intent(inout) :: sol
         sol%sigma = point_tractions(sol%pts, sol%z)
-        sol%tau0 = friction_threshold(m%interface%f, sol%sigma(2, :))
+        sol%tau0 = friction_threshold(interface%f, sol%sigma(2, :))
         sol%state = contact_state(sol%sigma(1, :), sol%sigma(2, :), sol%tau0)
         sol%slip = is_slipping(sol%sigma(1, :), sol%tau0)
         sol%tension = in_tension(sol%sigma(2, :))

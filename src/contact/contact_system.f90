@@ -16,7 +16,8 @@ module contact_system
     use errors, only: error_t, add_context
     use quadrature, only: gauss_legendre
     use shape_functions, only: eval_basis, max_local, basis_t, INTERP_P2, INTERP_S2
-    use model, only: model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ, &
+    use model, only: interface_t, structure_t, model_t, MODEL_BEAM, FIELD_U, FIELD_W, FIELD_PSI, &
+        FIELD_SX, FIELD_SZ, &
                      friction_compliance
     use discretization, only: discretization_t
     use mindlin_structure, only: section_of, stiffness_entries, assemble_loads, &
@@ -192,8 +193,8 @@ contains
         call assemble_loads(m, d, sys%q, err)
         if (allocated(err)) return
         sys%c = friction_compliance(m%structure, m%ground)
-        sys%law = new_law(m, sys%c, m%interface%eps_bar, m%interface%eta_bar)
-        sys%rigid = rigid_modes(m, d)
+        sys%law = new_law(m%interface, sys%c, m%interface%eps_bar, m%interface%eta_bar)
+        sys%rigid = rigid_modes(m%structure, d)
         sys%kappa = (1.0_dp - m%interface%eps_bar**2)/m%interface%eps_bar
         sys%penalty = sys%law%penalty
         ! B0 = -(T + c eps S0): S0 the stick branch of the law, everywhere
@@ -204,7 +205,7 @@ contains
         call pack_lower(t_mat, b0)
         deallocate (t_mat)
         call set_base_matrix(sys, d%nv, stiffness_entries(section_of(m%structure), d), &
-                             coupling_entries(m, d), b0)
+                             coupling_entries(m%structure, d), b0)
         sys%row_scale = diagonal_scaling(a0_diagonal(sys))
     end subroutine build_system
 
@@ -232,13 +233,13 @@ contains
 
     !> The rigid-body modes of the structure: the translation of w (plate), and for the beam
     !! also the translation of u_s and the rotation psi = 1, w = x.
-    pure function rigid_modes(m, d) result(rb)
-        type(model_t), intent(in) :: m
+    pure function rigid_modes(structure, d) result(rb)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(rigid_t) :: rb
         integer :: w_range(2), u_range(2), psi_range(2)
         w_range = [d%offset(FIELD_W) + 1, d%offset(FIELD_W) + d%basis(FIELD_W)%n_dof]
-        if (m%structure%kind /= MODEL_BEAM) then
+        if (structure%kind /= MODEL_BEAM) then
             rb = new_rigid(d%nv, reshape(w_range, [2, 1]), [0, 0])
             return
         end if
@@ -346,13 +347,13 @@ contains
     end function a0_diagonal
 
     !> The law with regularisation eps_bar = eps, penalty parameter eta_bar = eta.
-    pure function new_law(m, c, eps, eta) result(law)
-        type(model_t), intent(in) :: m
+    pure function new_law(interface, c, eps, eta) result(law)
+        type(interface_t), intent(in) :: interface   !! the interface part of the model
         real(dp), intent(in) :: c      !! friction compliance (model.f90)
         real(dp), intent(in) :: eps    !! eps_bar of the friction law
         real(dp), intent(in) :: eta    !! eta_bar of the penalty
         type(law_t) :: law
-        law%f = m%interface%f
+        law%f = interface%f
         law%eps = eps
         law%slip = c*(1.0_dp - eps**2)/eps
         law%penalty = c/eta
@@ -379,8 +380,8 @@ contains
     end subroutine add_point_mass
 
     !> Gauss points per element: (highest traction degree + 1), exact for the masses.
-    pure function contact_points(m, d) result(pts)
-        type(model_t), intent(in) :: m
+    pure function contact_points(structure, d) result(pts)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(contact_points_t) :: pts
         real(dp), allocatable :: xg(:), wg(:)
@@ -400,7 +401,7 @@ contains
                 pts%xi(p) = xg(g)
                 pts%x(p) = d%msh%x(e - 1) + 0.5_dp*(xg(g) + 1.0_dp)*h
                 pts%wt(p) = 0.5_dp*wg(g)*h
-                if (m%structure%kind /= MODEL_BEAM) pts%wt(p) = pts%wt(p)*2.0_dp*pi*pts%x(p)
+                if (structure%kind /= MODEL_BEAM) pts%wt(p) = pts%wt(p)*2.0_dp*pi*pts%x(p)
             end do gauss_points
         end do elements
         call tabulate_basis(d, pts)

@@ -38,7 +38,7 @@
 module newton_method
     use kinds, only: dp, xp
     use errors, only: error_t, new_error, EXIT_ANALYSIS
-    use model, only: model_t
+    use model, only: model_t, interface_t
     use discretization, only: discretization_t
     use linear_solve, only: solve_equilibrated
     use schur_solver, only: schur_t, schur_factor_t, new_schur, schur_prepare, schur_solve, &
@@ -242,7 +242,8 @@ contains
         stages: do
             stage = stage + 1
             solves_before = sol%n_solves
-            call newton_stage(d, sys, ls, stage_law(m, sys, level), stage, m%solver%max_inner, &
+            call newton_stage(d, sys, ls, stage_law(m%interface, sys, level), stage, &
+                m%solver%max_inner, &
                               .true., sol, converged, err)
             if (allocated(err)) return
             if (converged) then
@@ -271,13 +272,13 @@ contains
 
     !> The deck's law with eps_bar scaled by 10^level (at most 0.5) and eta_bar by
     !! 10^min(level, top_level).
-    pure function stage_law(m, sys, level) result(law)
-        type(model_t), intent(in) :: m
+    pure function stage_law(interface, sys, level) result(law)
+        type(interface_t), intent(in) :: interface   !! the interface part of the model
         type(system_t), intent(in) :: sys
         real(dp), intent(in) :: level
         type(law_t) :: law
-        law = new_law(m, sys%c, min(m%interface%eps_bar*10.0_dp**level, 0.5_dp), &
-                      m%interface%eta_bar*10.0_dp**min(level, top_level))
+        law = new_law(interface, sys%c, min(interface%eps_bar*10.0_dp**level, 0.5_dp), &
+                      interface%eta_bar*10.0_dp**min(level, top_level))
     end function stage_law
 
     !> Newton iterations for one law from sol%z; converged tells whether it stopped on a

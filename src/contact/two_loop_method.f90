@@ -10,7 +10,7 @@
 module two_loop_method
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_ANALYSIS
-    use model, only: model_t, MODEL_BEAM, total_vertical_load, traction_measure
+    use model, only: solver_controls_t, model_t, MODEL_BEAM, total_vertical_load, traction_measure
     use discretization, only: discretization_t
     use mindlin_structure, only: traction_at
     use linear_solve, only: solve_symmetric
@@ -66,7 +66,7 @@ contains
             slip_prev = sol%slip
             tension_prev = sol%tension
             sigma_prev = sol%sigma
-            call penalty_loop(m, d, sys, outer, .false., sol, err)
+            call penalty_loop(m%solver, d, sys, outer, .false., sol, err)
             if (allocated(err)) then
                 if (index(err%message, 'did not converge') > 0) then
                     ! the plain fixed point failed: restart this inner loop with backtracking
@@ -76,7 +76,7 @@ contains
                     sol%slip = slip_prev
                     sol%tension = tension_prev
                     sol%sigma = sigma_prev
-                    call penalty_loop(m, d, sys, outer, .true., sol, err)
+                    call penalty_loop(m%solver, d, sys, outer, .true., sol, err)
                 end if
             end if
             if (allocated(err)) return
@@ -123,8 +123,8 @@ contains
     !! full steps as in the paper, a step halved when its set pattern was met before (a cycle).
     !! Searching mode (the fallback): every step halved until it lowers the scaled residual
     !! (backtracking). Converged only on a full step.
-    subroutine penalty_loop(m, d, sys, outer, searching, sol, err)
-        type(model_t), intent(in) :: m
+    subroutine penalty_loop(solver, d, sys, outer, searching, sol, err)
+        type(solver_controls_t), intent(in) :: solver   !! the solver part of the model
         type(discretization_t), intent(in) :: d
         type(system_t), intent(in) :: sys
         integer, intent(in) :: outer
@@ -142,7 +142,7 @@ contains
 
         allocate (z_new(d%n), seen(sol%pts%n, memory))
         n_changed = 0
-        inner_loop: do inner = 1, m%solver%max_inner
+        inner_loop: do inner = 1, solver%max_inner
             code = set_code(sol)
             seen(:, mod(inner - 1, memory) + 1) = code
             n_seen = min(inner, memory)
@@ -151,7 +151,7 @@ contains
             call solve_with_sets(d, sys, sol, z_new, err)
             if (allocated(err)) return
             z_base = sol%z
-            if (inner > 1 .and. relative_change(d, z_new, z_base) <= m%solver%tol_inner) then
+            if (inner > 1 .and. relative_change(d, z_new, z_base) <= solver%tol_inner) then
                 ! the Newton point of the current sets is the current iterate (within tol):
                 ! any set still changing sits exactly at its threshold
                 sol%z = z_new
@@ -175,10 +175,10 @@ contains
             end if
             call log_inner(d, sys, sol, outer, inner, n_changed, incr, lambda)
             sol%n_inner = sol%n_inner + 1
-            if (lambda == 1.0_dp .and. (n_changed == 0 .or. incr <= m%solver%tol_inner)) return
+            if (lambda == 1.0_dp .and. (n_changed == 0 .or. incr <= solver%tol_inner)) return
         end do inner_loop
         write (text, '(a,i0,a,i0,a,i0,a)') 'contact (inner) loop did not converge in ', &
-            m%solver%max_inner, ' iterations at outer iteration ', outer, ' (', n_changed, &
+            solver%max_inner, ' iterations at outer iteration ', outer, ' (', n_changed, &
             ' Gauss points still change state)'
         call new_error(err, EXIT_ANALYSIS, trim(text))
     end subroutine penalty_loop

@@ -5,7 +5,8 @@ module discretization
     use errors, only: error_t
     use mesh, only: mesh_t, new_mesh, loads_pieces
     use shape_functions, only: basis_t, new_basis
-    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, &
+    use model, only: load_t, model_t, MODEL_BEAM, LOAD_PATCH, FIELD_U, FIELD_W, FIELD_PSI, &
+        FIELD_SX, &
                      FIELD_SZ
     use mesh_refinement, only: nearest_node
     use foundation_structure, only: interface_ends
@@ -64,7 +65,8 @@ contains
         d%msh = msh
         do field = FIELD_U, FIELD_SZ
             if (field <= FIELD_PSI) then
-                call new_basis(d%basis(field), d%msh, m%mesh%interp(field), concentrated_nodes(m, &
+                call new_basis(d%basis(field), d%msh, m%mesh%interp(field), &
+                    concentrated_nodes(m%loads, &
                     msh))
             else
                 call new_basis(d%basis(field), d%msh, m%mesh%interp(field))
@@ -87,34 +89,34 @@ contains
     !! does, and an S2 displacement basis is made C0 there (shape_functions); P1 and P2 are
     !! C0 everywhere already. A load between nodes gets nothing (LOADS grading puts nodes on
     !! the loads).
-    pure function concentrated_nodes(m, msh) result(nodes)
-        type(model_t), intent(in) :: m
+    pure function concentrated_nodes(loads, msh) result(nodes)
+        type(load_t), intent(in) :: loads(:)   !! the loads part of the model
         type(mesh_t), intent(in) :: msh
         integer, allocatable :: nodes(:)
         real(dp) :: tol
         integer :: i, k
         tol = 1.0e-9_dp*(msh%x(msh%ne) - msh%x(0))
         allocate (nodes(0))
-        do i = 1, size(m%loads)
-            if (m%loads(i)%kind == LOAD_PATCH) cycle
-            k = nearest_node(msh, m%loads(i)%x1)
-            if (abs(msh%x(k) - m%loads(i)%x1) <= tol .and. k > 0 .and. k < msh%ne .and. &
+        do i = 1, size(loads)
+            if (loads(i)%kind == LOAD_PATCH) cycle
+            k = nearest_node(msh, loads(i)%x1)
+            if (abs(msh%x(k) - loads(i)%x1) <= tol .and. k > 0 .and. k < msh%ne .and. &
                 .not. any(nodes == k)) nodes = [nodes, k]
         end do
     end function concentrated_nodes
 
     !> Whether every concentrated load (point, ring, moment) inside the interface sits on a
     !! node of msh, so that an S2 displacement basis has its slope jump there.
-    pure logical function loads_on_nodes(m, msh)
-        type(model_t), intent(in) :: m
+    pure logical function loads_on_nodes(loads, msh)
+        type(load_t), intent(in) :: loads(:)   !! the loads part of the model
         type(mesh_t), intent(in) :: msh
         real(dp) :: tol
         integer :: i
         tol = 1.0e-9_dp*(msh%x(msh%ne) - msh%x(0))
         loads_on_nodes = .true.
-        do i = 1, size(m%loads)
-            associate (x => m%loads(i)%x1)
-                if (m%loads(i)%kind == LOAD_PATCH .or. x <= msh%x(0) + tol .or. &
+        do i = 1, size(loads)
+            associate (x => loads(i)%x1)
+                if (loads(i)%kind == LOAD_PATCH .or. x <= msh%x(0) + tol .or. &
                     x >= msh%x(msh%ne) - tol) cycle
                 if (abs(msh%x(nearest_node(msh, x)) - x) > tol) loads_on_nodes = .false.
             end associate

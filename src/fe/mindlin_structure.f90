@@ -20,7 +20,8 @@ module mindlin_structure
     use discretization, only: discretization_t, locate_element
     use sparse_matrix, only: triplets_t, new_triplets, add_entry, compressed, dense_of
     use foundation_structure, only: section_t, section_of
-    use model, only: model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, &
+    use model, only: structure_t, model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH, &
+        LOAD_MOMENT, &
                      LOAD_RING, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     implicit none
     private
@@ -146,12 +147,12 @@ contains
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         real(dp), intent(out) :: mm(:, :)    !! nr x nv
-        mm = dense_of(compressed(coupling_entries(m, d)))
+        mm = dense_of(compressed(coupling_entries(m%structure, d)))
     end subroutine assemble_coupling
 
     !> The element contributions to M as triplets.
-    pure function coupling_entries(m, d) result(mm)
-        type(model_t), intent(in) :: m
+    pure function coupling_entries(structure, d) result(mm)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(triplets_t) :: mm
         integer, parameter :: n = 4    ! exact for degree 2 x degree 2 x r
@@ -160,15 +161,16 @@ contains
         mm = new_triplets(d%nr, d%nv, 12*d%msh%ne*max_local**2)
         call gauss_legendre(n, xi, w)
         elements: do e = 1, d%msh%ne
-            call add_mass_block(m, d, e, FIELD_SX, FIELD_U, 1.0_dp, xi, w, mm)
-            call add_mass_block(m, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*m%structure%h, xi, w, mm)
-            call add_mass_block(m, d, e, FIELD_SZ, FIELD_W, 1.0_dp, xi, w, mm)
+            call add_mass_block(structure, d, e, FIELD_SX, FIELD_U, 1.0_dp, xi, w, mm)
+            call add_mass_block(structure, d, e, FIELD_SX, FIELD_PSI, -0.5_dp*structure%h, xi, w, &
+                mm)
+            call add_mass_block(structure, d, e, FIELD_SZ, FIELD_W, 1.0_dp, xi, w, mm)
         end do elements
     end function coupling_entries
 
     !> factor * int g_a f_b (weight 1 or 2 pi r) on element e into the (row_field, col_field) block.
-    pure subroutine add_mass_block(m, d, e, row_field, col_field, factor, xi, w, mm)
-        type(model_t), intent(in) :: m
+    pure subroutine add_mass_block(structure, d, e, row_field, col_field, factor, xi, w, mm)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         integer, intent(in) :: e, row_field, col_field
         real(dp), intent(in) :: factor
@@ -181,7 +183,7 @@ contains
             call eval_basis(d%basis(row_field), e, xi(q), ir, vr, dr, x)
             call eval_basis(d%basis(col_field), e, xi(q), ic, vc, dr, x)
             wt = factor*w(q)*0.5_dp*(d%msh%x(e) - d%msh%x(e - 1))
-            if (m%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
+            if (structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
             do j = 1, d%basis(col_field)%n_local
                 do i = 1, d%basis(row_field)%n_local
                     call add_entry(mm, row0 + ir(i), d%offset(col_field) + ic(j), &
@@ -209,7 +211,7 @@ contains
                 case (LOAD_MOMENT)
                     call add_point_force(d, FIELD_PSI, ld%x1, ld%fz, q)
                 case (LOAD_PATCH)
-                    call add_patch(m, d, ld, q)
+                    call add_patch(m%structure, d, ld, q)
                 case default
                     call new_error(err, EXIT_INPUT, 'unknown load kind')
                     return
@@ -234,8 +236,8 @@ contains
     end subroutine add_point_force
 
     !> Uniform patch of total F_z, F_x over [x1, x2] (beam) or the annulus x1 <= r <= x2 (plate).
-    pure subroutine add_patch(m, d, ld, q)
-        type(model_t), intent(in) :: m
+    pure subroutine add_patch(structure, d, ld, q)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(load_t), intent(in) :: ld
         real(dp), intent(inout) :: q(:)
@@ -243,7 +245,7 @@ contains
         real(dp) :: xg(n), wg(n), area, lo, hi, x, wt
         integer :: e, g
         call gauss_legendre(n, xg, wg)
-        if (m%structure%kind == MODEL_BEAM) then
+        if (structure%kind == MODEL_BEAM) then
             area = ld%x2 - ld%x1
         else
             area = pi*(ld%x2**2 - ld%x1**2)
@@ -255,10 +257,10 @@ contains
             do g = 1, n
                 x = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
                 wt = 0.5_dp*wg(g)*(hi - lo)/area
-                if (m%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
+                if (structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*x
                 call add_point_force(d, FIELD_W, x, wt*ld%fz, q)
                 call add_point_force(d, FIELD_U, x, wt*ld%fx, q)
-                call add_point_force(d, FIELD_PSI, x, wt*0.5_dp*m%structure%h*ld%fx, q)
+                call add_point_force(d, FIELD_PSI, x, wt*0.5_dp*structure%h*ld%fx, q)
             end do
         end do elements
     end subroutine add_patch

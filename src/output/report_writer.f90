@@ -5,7 +5,8 @@ module report_writer
     use errors, only: error_t
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: canonical_path
-    use model, only: model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, flexural_rigidity, &
+    use model, only: load_t, model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, &
+        flexural_rigidity, &
                      relative_stiffness, soil_shear_modulus, friction_compliance, &
                      total_vertical_load, has_concentrated_load, base_area, traction_measure
     use shape_functions, only: interp_name
@@ -542,7 +543,7 @@ contains
         call put_num(u, 'clip_inner', 1.25_dp)
         call put_num(u, 'edge_d', m%structure%h*xs)
         call put_num(u, 'friction', m%interface%f)
-        call write_figure_loads(u, m, xs)
+        call write_figure_loads(u, m%loads, xs)
     end subroutine write_figure_settings
 
     !> The line-load unit of a physical deck (force/length).
@@ -661,21 +662,20 @@ contains
     !> The loads of the figure settings as gnuplot arrays: kind letter (P point, M moment,
     !! R ring, D patch) and the interval [x1, x2] (a point for all but the patch), in the
     !! plotted unit of x (xs per deck length).
-    subroutine write_figure_loads(u, m, xs)
+    subroutine write_figure_loads(u, loads, xs)
         use model, only: LOAD_PATCH, LOAD_MOMENT, LOAD_RING
         integer, intent(in) :: u
-        type(model_t), intent(in) :: m
+        type(load_t), intent(in) :: loads(:)   !! the loads part of the model
         real(dp), intent(in) :: xs
         character(len=1) :: kind_letter
         integer :: k, n
         write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
-        n = 0
-        if (allocated(m%loads)) n = size(m%loads)
+        n = size(loads)
         write (u, '(a)') 'n_loads = '//int_text(n)
         if (n == 0) return
         write (u, '(a)', advance='no') 'array load_kind['//int_text(n)//'] = ['
         do k = 1, n
-            select case (m%loads(k)%kind)
+            select case (loads(k)%kind)
             case (LOAD_PATCH)
                 kind_letter = 'D'
             case (LOAD_MOMENT)
@@ -690,13 +690,13 @@ contains
         write (u, '(a)') ''
         write (u, '(a)', advance='no') 'array load_x1['//int_text(n)//'] = ['
         do k = 1, n
-            write (u, '(a)', advance='no') num(m%loads(k)%x1*xs)//after(k)
+            write (u, '(a)', advance='no') num(loads(k)%x1*xs)//after(k)
         end do
         write (u, '(a)') ''
         write (u, '(a)', advance='no') 'array load_x2['//int_text(n)//'] = ['
         do k = 1, n
-            write (u, '(a)', advance='no') num(merge(m%loads(k)%x2, m%loads(k)%x1, &
-                m%loads(k)%kind == LOAD_PATCH)*xs)//after(k)
+            write (u, '(a)', advance='no') num(merge(loads(k)%x2, loads(k)%x1, &
+                loads(k)%kind == LOAD_PATCH)*xs)//after(k)
         end do
         write (u, '(a)') ''
     contains

@@ -31,7 +31,7 @@
 module adaptive_solve
     use kinds, only: dp
     use errors, only: error_t
-    use model, only: model_t, MODEL_BEAM, total_vertical_load
+    use model, only: load_t, mesh_request_t, structure_t, model_t, MODEL_BEAM, total_vertical_load
     use mesh, only: mesh_t
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes, &
                                nearest_node
@@ -114,7 +114,7 @@ contains
         integer :: k, ne_estimated
         real(dp) :: last_estimate
         logical :: short
-        call start_record(m, info)
+        call start_record(m%mesh, info)
         d_try = d
         ne_estimated = 0
         last_estimate = huge(1.0_dp)
@@ -132,7 +132,7 @@ contains
             end if
             d = d_try
             sol = sol_try
-            if (estimate_due(m, d%msh%ne, ne_estimated, last_estimate)) then
+            if (estimate_due(m%mesh, d%msh%ne, ne_estimated, last_estimate)) then
                 call assess(m, d, sol, a, prev_nodes, cache=cache)
                 ne_estimated = d%msh%ne
                 last_estimate = a%estimate
@@ -166,15 +166,15 @@ contains
     !! the last estimate (est_last), reduced as if the error fell like ne^-2 (faster than
     !! any key result falls here), could be within tol. The other cycles take their
     !! indicators from the difference to the previous cycle's solution and cost one solve.
-    pure logical function estimate_due(m, ne, ne_last, est_last)
-        type(model_t), intent(in) :: m
+    pure logical function estimate_due(mesh, ne, ne_last, est_last)
+        type(mesh_request_t), intent(in) :: mesh   !! the mesh part of the model
         integer, intent(in) :: ne, ne_last
         real(dp), intent(in) :: est_last
         real(dp) :: predicted
         estimate_due = .true.
         if (ne_last <= 0 .or. ne >= 2*ne_last .or. est_last >= huge(1.0_dp)) return
         predicted = est_last*(real(ne_last, dp)/real(ne, dp))**2
-        estimate_due = predicted <= skip_factor*m%mesh%adapt_tol
+        estimate_due = predicted <= skip_factor*mesh%adapt_tol
     end function estimate_due
 
     pure logical function same_mesh(a, b)
@@ -183,12 +183,12 @@ contains
         if (same_mesh) same_mesh = all(a%x == b%x)
     end function same_mesh
 
-    subroutine start_record(m, info)
-        type(model_t), intent(in) :: m
+    subroutine start_record(mesh, info)
+        type(mesh_request_t), intent(in) :: mesh   !! the mesh part of the model
         type(adaptation_t), intent(out) :: info
         info%adapted = .true.
-        info%tol = m%mesh%adapt_tol
-        info%max_ne = m%mesh%adapt_max_ne
+        info%tol = mesh%adapt_tol
+        info%max_ne = mesh%adapt_max_ne
         info%note = ''
         info%worst = ''
         allocate (info%history_ne(0), info%history_estimate(0), info%entries(0))
@@ -256,18 +256,18 @@ contains
         if (allocated(a%eta)) deallocate (a%eta)
         allocate (a%eta(d%msh%ne), source=1.0_dp)   ! no estimate: refine everywhere
         if (present(prev)) then
-            a%eta = indicators(m, d, s, tab_nodes, prev_nodes)
+            a%eta = indicators(m%structure, d, s, tab_nodes, prev_nodes)
             a%rel = prev%rel                        ! the same keys, in the same order
             a%estimate = huge(1.0_dp)
         else
             call coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
-            if (ok) a%eta = indicators(m, d, s, tab_nodes, tab2)
+            if (ok) a%eta = indicators(m%structure, d, s, tab_nodes, tab2)
             a%rel = relative_errors(a%e)
             a%estimate = huge(1.0_dp)
             if (ok .and. all(a%rel >= 0.0_dp .or. .not. estimated_and_defined(a%e))) &
                 a%estimate = maxval(a%rel)
         end if
-        a%targets = target_positions(m, d, s, a)
+        a%targets = target_positions(m%mesh, d, s, a)
         a%rough = feature_elements(m, d, tab_nodes, a%boundary)
         prev_nodes = tab_nodes
         end associate
@@ -289,7 +289,7 @@ contains
         logical, allocatable :: p2(:), p4(:)
         real(dp) :: ratio, floor
         ok = .false.
-        call coarsened(d%msh, pins(m, d%msh, a%boundary), c2, p2)
+        call coarsened(d%msh, pins(m%loads, d%msh, a%boundary), c2, p2)
         call coarsened(c2, p2, c4, p4)
         if (c4%ne < min_coarse .or. c2%ne >= d%msh%ne .or. c4%ne >= c2%ne) return
         call discretise_mesh(m, c2, d2)
@@ -301,19 +301,19 @@ contains
         e4 = c4_case%entries
         tab2 = c2_case%design
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
-        floor = extent_floor(m, a%e, pack(a%boundary, a%liftoff))
-        call attach_estimates(m, a%e, e2, e4, ratio, floor, loads_on_nodes(m, d%msh) .and. &
-                              loads_on_nodes(m, c2) .and. loads_on_nodes(m, c4))
+        floor = extent_floor(m%structure, a%e, pack(a%boundary, a%liftoff))
+        call attach_estimates(m, a%e, e2, e4, ratio, floor, loads_on_nodes(m%loads, d%msh) .and. &
+                              loads_on_nodes(m%loads, c2) .and. loads_on_nodes(m%loads, c4))
     end subroutine coarse_estimates
 
     !> Pinned nodes: the ends, the load positions and the node nearest each boundary.
-    pure function pins(m, msh, boundary) result(pinned)
-        type(model_t), intent(in) :: m
+    pure function pins(loads, msh, boundary) result(pinned)
+        type(load_t), intent(in) :: loads(:)   !! the loads part of the model
         type(mesh_t), intent(in) :: msh
         real(dp), intent(in) :: boundary(:)
         logical :: pinned(0:msh%ne)
         integer :: k
-        pinned = pinned_nodes(msh, load_positions(m%loads))
+        pinned = pinned_nodes(msh, load_positions(loads))
         do k = 1, size(boundary)
             pinned(nearest_node(msh, boundary(k))) = .true.
         end do
@@ -321,8 +321,8 @@ contains
 
     !> The contact extent is a node: its error is at least the distance (as t) between that
     !! node and the nearest located lift-off boundary (0 when there is none: full contact).
-    pure real(dp) function extent_floor(m, e, boundary) result(floor)
-        type(model_t), intent(in) :: m
+    pure real(dp) function extent_floor(structure, e, boundary) result(floor)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(entry_t), intent(in) :: e(:)
         real(dp), intent(in) :: boundary(:)
         real(dp) :: t
@@ -331,8 +331,8 @@ contains
         if (size(boundary) == 0) return
         do i = 1, size(e)
             if (trim(e(i)%key) /= 'contact_extent_t') cycle
-            t = e(i)%value*m%structure%length
-            floor = minval(abs(boundary - t))/m%structure%length
+            t = e(i)%value*structure%length
+            floor = minval(abs(boundary - t))/structure%length
         end do
     end function extent_floor
 
@@ -437,8 +437,8 @@ contains
 
     !> eta_e: (h_e/L) times the largest scaled difference, at the element's nodes, between
     !! the solution and the first coarse solution (interpolated): W, Sigma_z and M.
-    function indicators(m, d, s, tab, tab2) result(eta)
-        type(model_t), intent(in) :: m
+    function indicators(structure, d, s, tab, tab2) result(eta)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(summary_t), intent(in) :: s
         type(station_table_t), intent(in) :: tab, tab2     !! fine and coarse, at nodes
@@ -447,7 +447,7 @@ contains
         integer, parameter :: q(3) = [Q_W, Q_SZ, Q_M]
         integer :: j, k, i
         scales(1) = maxval(abs(tab%val(Q_W, :)))
-        scales(2) = s%mean_pressure*merge(m%structure%b, 1.0_dp, m%structure%kind == MODEL_BEAM)
+        scales(2) = s%mean_pressure*merge(structure%b, 1.0_dp, structure%kind == MODEL_BEAM)
         scales(3) = maxval(abs(tab%val(Q_M, :)))
         scales = max(scales, tiny(1.0_dp))
         node_diff = 0.0_dp
@@ -458,7 +458,7 @@ contains
                 node_diff(i) = max(node_diff(i), diff)
             end do
         end do stations
-        eta = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/m%structure%length* &
+        eta = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1))/structure%length* &
               max(node_diff(:d%msh%ne - 1), node_diff(1:))
     end function indicators
 
@@ -484,8 +484,8 @@ contains
     !> Where the key results whose estimate is above tol are measured: the largest
     !! settlement and moments, the pressure at d from an edge and at the centre, the contact
     !! boundaries.
-    pure function target_positions(m, d, s, a) result(x)
-        type(model_t), intent(in) :: m
+    pure function target_positions(mesh, d, s, a) result(x)
+        type(mesh_request_t), intent(in) :: mesh   !! the mesh part of the model
         type(discretization_t), intent(in) :: d
         type(summary_t), intent(in) :: s
         type(assessment_t), intent(in) :: a
@@ -493,7 +493,7 @@ contains
         integer :: i
         allocate (x(0))
         do i = 1, size(a%e)
-            if (a%rel(i) >= 0.0_dp .and. a%rel(i) <= m%mesh%adapt_tol) cycle
+            if (a%rel(i) >= 0.0_dp .and. a%rel(i) <= mesh%adapt_tol) cycle
             if (.not. (estimated_and_defined(a%e(i)))) cycle
             select case (trim(a%e(i)%key))
             case ('settlement_max')

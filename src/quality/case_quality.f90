@@ -56,7 +56,7 @@ contains
             call take_adapted_estimates(adaptation, c, warnings)
             return
         end if
-        if (.not. loads_on_nodes(m, c%d%msh)) &
+        if (.not. loads_on_nodes(m%loads, c%d%msh)) &
             warnings = [character(len=warning_length) :: warnings, &
                         'a POINT, RING or MOMENT load lies between two nodes of '// &
                         'the mesh: results near it converge at first order only '// &

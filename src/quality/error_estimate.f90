@@ -65,7 +65,8 @@ contains
         if (present(edge_in_contact)) singular_edge = edge_in_contact .and. &
                                                       trim(m%mesh%grading) == 'UNIFORM'
         call attach_estimates(m, e, e2, e4, 2.0_dp, 0.5_dp*h_edge, &
-                              loads_on_nodes(m, d%msh) .and. nodes2 .and. nodes4, singular_edge)
+                              loads_on_nodes(m%loads, d%msh) .and. nodes2 .and. nodes4, &
+                                  singular_edge)
     end subroutine estimate_errors
 
     !> Estimates of the estimated keys of e from the same keys on two coarser meshes of a
@@ -176,7 +177,7 @@ contains
         on_nodes = .false.
         call new_discretization(mc, d, err)
         if (allocated(err)) return
-        on_nodes = loads_on_nodes(m, d%msh)
+        on_nodes = loads_on_nodes(m%loads, d%msh)
         do k = 1, size(known)
             if (same_nodes(known(k)%x, d%msh%x)) then
                 call coarse_case(mc, d, c, ok, known(k))

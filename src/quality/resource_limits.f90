@@ -35,7 +35,7 @@ contains
     !> Unknowns of the case (displacements + tractions), from its discretisation; with ADAPT,
     !! of the largest mesh it may reach (max_elements).
     integer function case_unknowns(m) result(n)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the case (its whole model is discretised)
         type(discretization_t) :: d
         type(error_t), allocatable :: err
         type(model_t) :: mc

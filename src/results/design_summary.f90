@@ -17,7 +17,7 @@
 !! OUTPUT card's stations).
 module design_summary
     use kinds, only: dp, pi
-    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, LOAD_RING, &
+    use model, only: load_t, structure_t, model_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, LOAD_RING, &
                      total_vertical_load, friction_compliance, base_area, traction_measure
     use contact_solver, only: solution_t
     use interface_law, only: STATE_LIFTOFF, STATE_SLIP, admissible_excess
@@ -89,7 +89,7 @@ contains
         type(summary_t) :: s
         call settlement_values(m, tab, s)
         call contact_values(m, tab, s)
-        call resultant_values(m, tab, s)
+        call resultant_values(m%structure, tab, s)
         call check_values(m, sol, tab, s)
     end function summarise
 
@@ -176,7 +176,7 @@ contains
                 s%edge_point_in_contact(1) = in_contact_at(tab, x0 + m%structure%h)
             end if
         end if
-        call centre_value(m, tab, width, s)
+        call centre_value(m%loads, tab, width, s)
     end subroutine contact_values
 
     !> The pressure at the centre x = 0 (the plate's axis, the middle of a beam), under the
@@ -184,8 +184,8 @@ contains
     !! station nearest to it), or when a concentrated load (beam POINT or MOMENT, plate RING
     !! at r = 0) acts there: the Mindlin plate's or beam's pressure is singular under it
     !! (1/r, log), and no mesh converges to a value.
-    pure subroutine centre_value(m, tab, width, s)
-        type(model_t), intent(in) :: m
+    pure subroutine centre_value(loads, tab, width, s)
+        type(load_t), intent(in) :: loads(:)   !! the loads part of the model
         type(station_table_t), intent(in) :: tab
         real(dp), intent(in) :: width              !! line load -> pressure
         type(summary_t), intent(inout) :: s
@@ -196,8 +196,8 @@ contains
         tol = 1.0e-9_dp*(x1 - x0)
         s%centre_defined = x0 <= tol .and. x1 >= -tol
         if (s%centre_defined) s%centre_defined = in_contact_at(tab, 0.0_dp)
-        do k = 1, size(m%loads)
-            if (m%loads(k)%kind /= LOAD_PATCH .and. abs(m%loads(k)%x1) <= tol) &
+        do k = 1, size(loads)
+            if (loads(k)%kind /= LOAD_PATCH .and. abs(loads(k)%x1) <= tol) &
                 s%centre_defined = .false.
         end do
         s%centre_pressure = 0.0_dp
@@ -242,13 +242,13 @@ contains
         end do
     end function alternating_runs
 
-    pure subroutine resultant_values(m, tab, s)
-        type(model_t), intent(in) :: m
+    pure subroutine resultant_values(structure, tab, s)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(station_table_t), intent(in) :: tab
         type(summary_t), intent(inout) :: s
         integer :: i
         call moment_extremes(tab, tab%val(Q_M, :), s%m_sag, s%m_hog)
-        if (m%structure%kind /= MODEL_BEAM) call moment_extremes(tab, tab%val(Q_MT, :), s%mt_sag, &
+        if (structure%kind /= MODEL_BEAM) call moment_extremes(tab, tab%val(Q_MT, :), s%mt_sag, &
             s%mt_hog)
         i = maxloc(abs(tab%val(Q_Q, :)), dim=1)
         s%q_abs_max = located_t(tab%val(Q_Q, i), tab%val(Q_X, i))

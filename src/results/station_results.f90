@@ -26,7 +26,8 @@
 module station_results
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_INTERNAL
-    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, LOAD_MOMENT, friction_compliance, &
+    use model, only: load_t, structure_t, model_t, MODEL_BEAM, LOAD_PATCH, LOAD_MOMENT, &
+        friction_compliance, &
                      total_vertical_load, traction_measure
     use quadrature, only: gauss_legendre
     use discretization, only: discretization_t, locate_element
@@ -109,13 +110,13 @@ contains
         end do stations
         call statics_resultants(m, d, sol, tab)
         call pointwise_checks(m, gap_pw, tab)
-        tab%w_mean = mean_settlement(m, d, sol)
+        tab%w_mean = mean_settlement(m%structure, d, sol)
     end subroutine tabulate
 
     !> The mean of the finite-element settlement w over the base, weighted by 2 pi r for the
     !! plate: 4-point Gauss per element (exact for w of degree <= 5, 6 with the weight r).
-    pure real(dp) function mean_settlement(m, d, sol) result(w_mean)
-        type(model_t), intent(in) :: m
+    pure real(dp) function mean_settlement(structure, d, sol) result(w_mean)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         real(dp) :: xg(4), wg(4), h, wt, w_sum, wt_sum
@@ -129,7 +130,7 @@ contains
             do g = 1, 4
                 p = displacement_at(d, sol%z(1:d%nv), e, xg(g))
                 wt = 0.5_dp*h*wg(g)
-                if (m%structure%kind /= MODEL_BEAM) wt = wt*p%x
+                if (structure%kind /= MODEL_BEAM) wt = wt*p%x
                 w_sum = w_sum + wt*p%val(2)
                 wt_sum = wt_sum + wt
             end do
@@ -184,7 +185,7 @@ contains
         where (abs(x) <= tol) x = 0.0_dp
         allocate (side(size(x)))
         side = 0
-        edges = patch_edges(m, x0 + tol, x1 - tol)
+        edges = patch_edges(m%loads, x0 + tol, x1 - tol)
         edge_inserts: do j = 1, size(edges)
             if (any(abs(x - edges(j)) <= tol)) cycle edge_inserts
             i = count(x < edges(j))
@@ -250,17 +251,17 @@ contains
     end function merged
 
     !> The ends of the PATCH loads strictly inside (x_min, x_max).
-    pure function patch_edges(m, x_min, x_max) result(x)
-        type(model_t), intent(in) :: m
+    pure function patch_edges(loads, x_min, x_max) result(x)
+        type(load_t), intent(in) :: loads(:)   !! the loads part of the model
         real(dp), intent(in) :: x_min, x_max
         real(dp), allocatable :: x(:)
         integer :: i
         allocate (x(0))
-        do i = 1, size(m%loads)
-            if (m%loads(i)%kind /= LOAD_PATCH) cycle
-            x = [x, pack([m%loads(i)%x1, m%loads(i)%x2], &
-                         [m%loads(i)%x1, m%loads(i)%x2] > x_min .and. &
-                         [m%loads(i)%x1, m%loads(i)%x2] < x_max)]
+        do i = 1, size(loads)
+            if (loads(i)%kind /= LOAD_PATCH) cycle
+            x = [x, pack([loads(i)%x1, loads(i)%x2], &
+                         [loads(i)%x1, loads(i)%x2] > x_min .and. &
+                         [loads(i)%x1, loads(i)%x2] < x_max)]
         end do
     end function patch_edges
 
@@ -370,10 +371,10 @@ contains
         real(dp) :: cum(6, 0:d%msh%ne)
         integer :: i
         call gauss_legendre(4, xg, wg)     ! once: element_integrals runs N_e + n times
-        cum = cumulative_integrals(m, d, sol, xg, wg)
+        cum = cumulative_integrals(m%structure, d, sol, xg, wg)
         stations: do i = 1, tab%n
             x = tab%val(Q_X, i)
-            call traction_integrals(m, d, sol, cum, xg, wg, x, t0, t1, hoop)
+            call traction_integrals(m%structure, d, sol, cum, xg, wg, x, t0, t1, hoop)
             ld = load_integrals(m, x, tab%side(i), position_tolerance(d))
             if (m%structure%kind == MODEL_BEAM) then
                 tab%val(Q_Q, i) = t0(2) - ld(1)
@@ -397,8 +398,8 @@ contains
     !> I0 and I1 of (sigma_x, sigma_z) from x0 to x, and (plate) int_0^x of N_t and M_t: the
     !! node totals of cumulative_integrals plus the part of the element that holds x, with
     !! I1(x) = x J0(x) - J1(x), J1 = int w g s ds.
-    pure subroutine traction_integrals(m, d, sol, cum, xg, wg, x, t0, t1, hoop)
-        type(model_t), intent(in) :: m
+    pure subroutine traction_integrals(structure, d, sol, cum, xg, wg, x, t0, t1, hoop)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         real(dp), intent(in) :: cum(:, 0:)      !! cumulative_integrals
@@ -408,7 +409,7 @@ contains
         real(dp) :: total(6), xi
         integer :: e
         call locate_element(d%msh, x, e, xi)
-        total = cum(:, e - 1) + element_integrals(m, d, sol, xg, wg, e, d%msh%x(e - 1), &
+        total = cum(:, e - 1) + element_integrals(structure, d, sol, xg, wg, e, d%msh%x(e - 1), &
                                                   max(d%msh%x(e - 1), min(x, d%msh%x(e))))
         t0 = total(1:2)
         t1 = x*total(1:2) - total(3:4)
@@ -417,8 +418,8 @@ contains
 
     !> At every node k, int_x0^x_k of w (sigma_x, sigma_z, s sigma_x, s sigma_z) and (plate)
     !! of N_t and M_t: (6, 0:ne), element by element, once per table.
-    pure function cumulative_integrals(m, d, sol, xg, wg) result(cum)
-        type(model_t), intent(in) :: m
+    pure function cumulative_integrals(structure, d, sol, xg, wg) result(cum)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         real(dp), intent(in) :: xg(4), wg(4)    !! 4-point Gauss rule on [-1, 1]
@@ -426,15 +427,16 @@ contains
         integer :: e
         cum(:, 0) = 0.0_dp
         elements: do e = 1, d%msh%ne
-            cum(:, e) = cum(:, e - 1) + element_integrals(m, d, sol, xg, wg, e, d%msh%x(e - 1), &
+            cum(:, e) = cum(:, e - 1) + element_integrals(structure, d, sol, xg, wg, e, &
+                d%msh%x(e - 1), &
                                                           d%msh%x(e))
         end do elements
     end function cumulative_integrals
 
     !> The six integrals of cumulative_integrals over [lo, hi] inside element e, exact for the
     !! polynomial tractions (4-point Gauss; w = 1 for the beam, 2 pi s for the plate).
-    pure function element_integrals(m, d, sol, xg, wg, e, lo, hi) result(part)
-        type(model_t), intent(in) :: m
+    pure function element_integrals(structure, d, sol, xg, wg, e, lo, hi) result(part)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(discretization_t), intent(in) :: d
         type(solution_t), intent(in) :: sol
         real(dp), intent(in) :: xg(4), wg(4)    !! 4-point Gauss rule on [-1, 1]
@@ -446,13 +448,13 @@ contains
         integer :: g
         part = 0.0_dp
         if (hi <= lo) return
-        sec = section_of(m%structure)
+        sec = section_of(structure)
         do g = 1, 4
             s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
             wt = 0.5_dp*wg(g)*(hi - lo)
             xi = 2.0_dp*(s - d%msh%x(e - 1))/(d%msh%x(e) - d%msh%x(e - 1)) - 1.0_dp
             sig = traction_at(d, sol%z(d%nv + 1:), e, xi)
-            if (m%structure%kind /= MODEL_BEAM) then
+            if (structure%kind /= MODEL_BEAM) then
                 res = resultants(sec, displacement_at(d, sol%z(1:d%nv), e, xi))
                 part(5:6) = part(5:6) + wt*res([2, 4])
                 wt = wt*2.0_dp*pi*s

@@ -6,7 +6,7 @@
 !! pressures in kPa for kN and m) and nondimensional (SPEC §6) for NONDIM decks.
 module summary_table
     use kinds, only: dp
-    use model, only: model_t, MODEL_BEAM
+    use model, only: structure_t, model_t, MODEL_BEAM
     use case_scales, only: scales_t, case_scale_factors
     use design_summary, only: summary_t
     implicit none
@@ -78,7 +78,7 @@ contains
         e = [e, ent('pressure_centre', choose(beam, 'pressure at the centre x = 0', &
                     'pressure at the centre r = 0'), k%u_pressure, s%centre_pressure*k%pressure, &
                     s%centre_defined)]
-        e = [e, moment_entries(m, s, k), &
+        e = [e, moment_entries(m%structure, s, k), &
              ent('shear_force_max', choose(beam, 'max |Q| (signed)', 'max |Q_r| (signed)'), &
                  k%u_shear, s%q_abs_max%value*k%shear), &
              ent('shear_force_max_x', '  at', k%u_length, s%q_abs_max%x*k%length), &
@@ -119,20 +119,20 @@ contains
         keys = [(e(i)%key, i=1, size(e))]
     end function entry_keys
 
-    pure function moment_entries(m, s, k) result(e)
-        type(model_t), intent(in) :: m
+    pure function moment_entries(structure, s, k) result(e)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(summary_t), intent(in) :: s
         type(scales_t), intent(in) :: k
         type(entry_t), allocatable :: e(:)
         character(len=4) :: sym
-        sym = merge('M   ', 'M_r ', m%structure%kind == MODEL_BEAM)
+        sym = merge('M   ', 'M_r ', structure%kind == MODEL_BEAM)
         e = [ent('moment_sagging', 'max sagging '//trim(sym)//' (bottom in tension)', k%u_moment, &
                  s%m_sag%value*k%moment, s%m_sag%defined), &
              ent('moment_sagging_x', '  at', k%u_length, s%m_sag%x*k%length, s%m_sag%defined), &
              ent('moment_hogging', 'max hogging '//trim(sym)//' (top in tension)', k%u_moment, &
                  s%m_hog%value*k%moment, s%m_hog%defined), &
              ent('moment_hogging_x', '  at', k%u_length, s%m_hog%x*k%length, s%m_hog%defined)]
-        if (m%structure%kind == MODEL_BEAM) return
+        if (structure%kind == MODEL_BEAM) return
         e = [e, ent('hoop_moment_sagging', 'max sagging M_theta', k%u_moment, &
                     s%mt_sag%value*k%moment, s%mt_sag%defined), &
              ent('hoop_moment_sagging_x', '  at', k%u_length, s%mt_sag%x*k%length, &
