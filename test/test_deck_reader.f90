@@ -657,8 +657,9 @@ contains
         character(len=w), allocatable :: lines(:)
         character(len=10), parameter :: odd(4) = [character(len=10) :: 'NaN', 'Inf', &
                                                   '-Infinity', 'nan(0x1)']
-        character(len=10), parameter :: huge_or_tiny(4) = [character(len=10) :: '1e999', &
-                                                           '-1D400', '10.0E29', '0.1E-30']
+        ! the rule is 1E-30 <= |x| < 1E+30: 1E+30 itself is out, and the message says so
+        character(len=10), parameter :: huge_or_tiny(5) = [character(len=10) :: '1e999', &
+                                                           '-1D400', '10.0E29', '0.1E-30', '1E+30']
         integer :: k
         lines = beam_physical()
         do k = 1, size(odd)
@@ -670,7 +671,8 @@ contains
         do k = 1, size(huge_or_tiny)
             lines(2) = card('GEOMETRY', '10.0', huge_or_tiny(k), '1.0')
             call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:21-30: GEOMETRY h', &
-                              'a deck number is 0 or of magnitude 1E-30 to 1E+30'], err)
+                              'a deck number is 0 or has a magnitude of at least 1E-30 '// &
+                              'and below 1E+30'], err)
             if (allocated(err)) return
         end do
         lines(2) = card('GEOMETRY', '10.0', '0.00000E99', '1.0')

@@ -1306,8 +1306,8 @@ contains
             call field_error(st, cd, j, what//': expected a finite number such as 0.3, '// &
                              '30.0E6 or 1.0D-6, got '''//field_value(cd, j)//'''')
         else if (s == FIELD_RANGE) then
-            call field_error(st, cd, j, what//': a deck number is 0 or of magnitude 1E-30 '// &
-                             'to 1E+30, got '''//field_value(cd, j)//'''')
+            call field_error(st, cd, j, what//': a deck number is 0 or has a magnitude of '// &
+                             'at least 1E-30 and below 1E+30, got '''//field_value(cd, j)//'''')
             s = FIELD_BAD
         else if (s == FIELD_BLANK .and. required) then
             call field_error(st, cd, j, what//' is required but the field is blank '// &
