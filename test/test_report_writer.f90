@@ -37,7 +37,8 @@ contains
                  new_unittest('stale_outputs_of_the_deck_removed', test_stale_outputs), &
                  new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh), &
                  new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on), &
-                 new_unittest('incomplete_file_not_committed', test_incomplete_file)]
+                 new_unittest('incomplete_file_not_committed', test_incomplete_file), &
+                 new_unittest('positions_fit_their_columns', test_position_formats)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -304,6 +305,80 @@ contains
         character(len=*), intent(in) :: path
         inquire (file=path, exist=exists)
     end function exists
+
+    !> Positions print as numbers for any allowed length (GEOMETRY l from 1E-30 to below
+    !! 1E+30): the same beam (h = l/20, b = l/10) at l = 2E12, 1E-20 and 10 has its first
+    !! physical station at x = -l/2 (stations at the nodes, the first at the left end) and its
+    !! first contact or lift-off interval from -l/2, both read back from the report to 1e-4;
+    !! no field of the report is all asterisks, and the figure is drawn (its script reads the
+    !! lift-off zones back as numbers).
+    subroutine test_position_formats(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=10), parameter :: geometry(3, 3) = reshape([character(len=10) :: &
+            '2.0E12', '1.0E11', '2.0E11', '1.0E-20', '5.0E-22', '1.0E-21', '10.0', '0.5', &
+            '1.0'], [3, 3])
+        real(dp), parameter :: length(3) = [2.0e12_dp, 1.0e-20_dp, 10.0_dp]
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        character(len=80), allocatable :: lines(:)
+        character(len=200) :: first_row, first_interval
+        logical :: stars
+        integer :: k, status, ios
+        real(dp) :: x_row, x_interval
+        opt%estimates = .false.
+        sizes: do k = 1, 3
+            call clean_dir()
+            lines = beam_deck([character(len=4) ::])
+            lines(3) = card('GEOMETRY', geometry(:, k))
+            call parse_deck('pos.dat', lines, deck, err)
+            if (allocated(err)) return
+            call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+            call check(err, status == EXIT_OK .and. exists(dir//'/pos.png'), 'l = '// &
+                       trim(geometry(1, k))//': not solved, or no figure')
+            if (allocated(err)) return
+            call report_positions(dir//'/pos.txt', first_row, first_interval, stars)
+            call check(err, .not. stars, 'l = '//trim(geometry(1, k))//': a field of the '// &
+                       'report is asterisks')
+            if (allocated(err)) return
+            read (first_row, *, iostat=ios) x_row
+            if (ios == 0) read (first_interval(index(first_interval, 'from') + 4: &
+                                index(first_interval, ' to') - 1), *, iostat=ios) x_interval
+            call check(err, ios == 0, 'l = '//trim(geometry(1, k))//': unreadable position in "'// &
+                       trim(first_row)//'" or "'//trim(first_interval)//'"')
+            if (allocated(err)) return
+            call check_close(err, x_row, -0.5_dp*length(k), 1.0e-4_dp, 0.0_dp, 'first station')
+            if (allocated(err)) return
+            call check_close(err, x_interval, -0.5_dp*length(k), 1.0e-4_dp, 0.0_dp, &
+                             'first interval')
+            if (allocated(err)) return
+        end do sizes
+    end subroutine test_position_formats
+
+    !> The first row of the physical station table (section 6, after its two heading lines),
+    !! the first interval line ('from ... to ...'), and whether a run of four asterisks occurs.
+    subroutine report_positions(path, first_row, first_interval, stars)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(out) :: first_row, first_interval
+        logical, intent(out) :: stars
+        character(len=400) :: line
+        integer :: u, ios, after_heading
+        first_row = ''
+        first_interval = ''
+        stars = .false.
+        after_heading = -1
+        open (newunit=u, file=path, status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            stars = stars .or. index(line, '****') > 0
+            if (index(line, 'STATIONS (physical units)') > 0) after_heading = 0
+            if (after_heading >= 0) after_heading = after_heading + 1
+            if (after_heading == 4 .and. len_trim(first_row) == 0) first_row = line
+            if (len_trim(first_interval) == 0 .and. index(line, ' from') > 0 .and. &
+                index(line, ' to') > 0) first_interval = line
+        end do
+        close (u)
+    end subroutine report_positions
 
     !> The data file has 14 numeric columns per row (plate); integrating Sigma_z over the disk
     !! from the printed columns (trapezoid on 2 pi t dt / pi) gives ~1 (equilibrium, F = 1).
