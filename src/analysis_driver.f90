@@ -14,7 +14,8 @@ module analysis_driver
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
                              write_plot_script, write_sweep_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
-    use plausibility, only: warning_length, input_warnings, settlement_warnings
+    use plausibility, only: warning_length, input_warnings, settlement_warnings, &
+                            tension_warnings
     use error_estimate, only: estimate_errors
     use adaptive_solve, only: adaptation_t, solve_adaptive
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
@@ -326,7 +327,9 @@ contains
             allocate (result%entries(0))
         else
             result%warnings = [character(len=warning_length) :: result%warnings, &
-                               settlement_warnings(m, s%w_max%value)]
+                               settlement_warnings(m, s%w_max%value), tension_warnings(m, &
+                               s%n_tension_flags, s%n_tension_lifted, tab%n, tab%most_tensile, &
+                               tab%tension_tol)]
             if (m%adapt_tol <= 0.0_dp .and. .not. loads_on_nodes(m, d%msh)) &
                 result%warnings = [character(len=warning_length) :: result%warnings, &
                                    'a POINT, RING or MOMENT load lies between two nodes of '// &

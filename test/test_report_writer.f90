@@ -38,7 +38,8 @@ contains
                  new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh), &
                  new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on), &
                  new_unittest('incomplete_file_not_committed', test_incomplete_file), &
-                 new_unittest('positions_fit_their_columns', test_position_formats)]
+                 new_unittest('positions_fit_their_columns', test_position_formats), &
+                 new_unittest('tension_flags_warned', test_tension_warning)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -353,6 +354,76 @@ contains
             if (allocated(err)) return
         end do sizes
     end subroutine test_position_formats
+
+    !> A solved case whose station table flags tension (rows ending !T) says so in a WARNING
+    !! naming their number, in the report and the JSON: a very soft thick beam (NONDIM rho 1e-6,
+    !! zeta 0.5, f 0, N_e 20) lifts off nearly everywhere and the penalty pulls on it. A case
+    !! without flags (the physical beam) has no such warning.
+    subroutine test_tension_warning(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        character(len=80), allocatable :: lines(:)
+        character(len=400) :: line
+        character(len=16) :: count_text
+        integer :: status, u, ios, n_flagged, n_warned
+        logical :: in_json
+        opt%figures = .false.
+        opt%estimates = .false.
+        call clean_dir()
+        lines = [character(len=80) :: card('MODEL', ['BEAM']), card('NONDIM', [character(len=10) &
+                 :: '1.0E-6', '0.5', '', '', '1.0']), card('FRICTION', ['0.0']), &
+                 card('LOAD', ['POINT', '1.0  ']), card('MESH', ['20']), card('END', [' '])]
+        call parse_deck('soft.dat', lines, deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK, 'the soft beam is solved (status 0)')
+        if (allocated(err)) return
+        n_flagged = 0
+        n_warned = 0
+        open (newunit=u, file=dir//'/soft.txt', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (len_trim(line) > 3) then
+                if (line(len_trim(line) - 2:len_trim(line)) == ' !T') n_flagged = n_flagged + 1
+            end if
+            if (index(line, 'WARNING: tension at ') > 0) n_warned = n_warned + 1
+            if (index(line, 'WARNING: tension at ') > 0) count_text = line(index(line, 'at ') + 3:)
+        end do
+        close (u)
+        call check(err, n_flagged > 0 .and. n_warned == 1, 'rows !T: '//int_text(n_flagged)// &
+                   ', tension warnings: '//int_text(n_warned))
+        if (allocated(err)) return
+        call check(err, count_text(1:index(count_text, ' ') - 1) == int_text(n_flagged), &
+                   'the warning counts '//trim(count_text)//' flagged rows, the table '// &
+                   int_text(n_flagged))
+        if (allocated(err)) return
+        in_json = .false.
+        open (newunit=u, file=dir//'/soft.json', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            in_json = in_json .or. index(line, 'tension at '//int_text(n_flagged)) > 0
+        end do
+        close (u)
+        call check(err, in_json, 'the JSON lacks the tension warning')
+        if (allocated(err)) return
+        call clean_dir()
+        call parse_deck('firm.dat', beam_deck([character(len=4) ::]), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        n_warned = 0
+        open (newunit=u, file=dir//'/firm.txt', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, 'tension at ') > 0) n_warned = n_warned + 1
+        end do
+        close (u)
+        call check(err, status == EXIT_OK .and. n_warned == 0, 'a case without !T rows warns '// &
+                   'of tension')
+    end subroutine test_tension_warning
 
     !> The first row of the physical station table (section 6, after its two heading lines),
     !! the first interval line ('from ... to ...'), and whether a run of four asterisks occurs.
