@@ -20,7 +20,7 @@ module analysis_driver
     use adaptive_solve, only: adaptation_t, solve_adaptive
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
                             case_number, remove_stale_outputs, remove_output, canonical_path, &
-                            remove_shard_summaries
+                            remove_shard_summaries, remove_sweep_outputs
     use blas_threads, only: set_blas_threads, blas_thread_count
     use flexibility_cache, only: enable_flexibility_cache
     use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
@@ -242,8 +242,21 @@ contains
         type(run_options_t), intent(in) :: opt
         type(error_t), allocatable, intent(out) :: err
         character(len=40) :: shard
+        integer :: n_unwritten
+        shard = ''
+        if (opt%shard_count > 1) write (shard, '(a,i0,a,i0)') '.shard-', opt%shard_index, &
+            '-of-', opt%shard_count
+        n_unwritten = count(selected .and. results%status == EXIT_INPUT)
+        if (n_unwritten > 0) then
+            ! a case could not write its files (a full disk): a summary would cover part of
+            ! the sweep, and one of an earlier run would not match it
+            call remove_sweep_outputs(out_dir, stem, trim(shard))
+            write (shard, '(i0)') n_unwritten
+            call new_error(err, EXIT_INPUT, 'no sweep summary written: '//trim(shard)// &
+                           ' case(s) could not write their files')
+            return
+        end if
         if (opt%shard_count > 1) then
-            write (shard, '(a,i0,a,i0)') '.shard-', opt%shard_index, '-of-', opt%shard_count
             ! the summaries of an earlier split into another number of shards are stale
             call remove_shard_summaries(out_dir, stem, opt%shard_count)
             call write_summary_csv(out_dir//'/'//stem//'_summary'//trim(shard)//'.csv', cases(1), &

@@ -39,7 +39,9 @@ contains
                  new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on), &
                  new_unittest('incomplete_file_not_committed', test_incomplete_file), &
                  new_unittest('positions_fit_their_columns', test_position_formats), &
-                 new_unittest('tension_flags_warned', test_tension_warning)]
+                 new_unittest('tension_flags_warned', test_tension_warning), &
+                 new_unittest('file_cut_at_line_end_not_committed', test_cut_at_line_end), &
+                 new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -273,6 +275,58 @@ contains
                    .and. refused(refusal, '2 input errors'), 'follow-on errors or a TAB '// &
                    'reported twice')
     end subroutine test_no_follow_on
+
+    !> A sweep one of whose cases cannot write its files (here case 2's CSV name is taken by a
+    !! folder; on a full disk any file) ends with status 1 and leaves no summary CSV or
+    !! overlay script, not even those of an earlier complete run: they would summarise part
+    !! of the sweep. The other cases' files are written.
+    subroutine test_unwritten_case(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: status
+        opt%figures = .false.
+        opt%estimates = .false.
+        call clean_dir()
+        call parse_deck('u.dat', beam_deck(['F  ', '0.3', '0.4', '0.5']), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK .and. exists(dir//'/u_summary.csv') .and. &
+                   exists(dir//'/u_sweep.gp'), 'the complete sweep has its summary')
+        if (allocated(err)) return
+        call execute_command_line('rm -f '//dir//'/u_002.csv && mkdir '//dir//'/u_002.csv')
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_INPUT .and. exists(dir//'/u_001.txt') .and. &
+                   exists(dir//'/u_003.txt') .and. .not. exists(dir//'/u_002.txt'), &
+                   'case 2 must fail (status 1), cases 1 and 3 be written')
+        if (allocated(err)) return
+        call check(err, .not. exists(dir//'/u_summary.csv') .and. .not. &
+                   exists(dir//'/u_sweep.gp') .and. .not. exists(dir//'/u_summary.csv.tmp'), &
+                   'a summary or overlay left beside a sweep with an unwritten case')
+    end subroutine test_unwritten_case
+
+    !> A full disk can cut a file at a block boundary that falls at a line end (a sweep's
+    !! overlay script was committed with 4096 of its 8900 bytes on a 60 kB tmpfs): two lines
+    !! written and flushed, the file then cut after the first (as the disk would), is not
+    !! committed: an error, and neither the file nor its .tmp.
+    subroutine test_cut_at_line_end(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        integer :: u
+        call clean_dir()
+        call open_temporary(dir//'/cut.txt', u, refusal)
+        call check(err, .not. allocated(refusal), 'cannot open the temporary file')
+        if (allocated(err)) return
+        write (u, '(a)') '= line one'
+        write (u, '(a)') '= line two'
+        flush (u)
+        ! 11 bytes: '= line one' and its line end
+        call execute_command_line('truncate -s 11 '//dir//'/cut.txt.tmp')
+        call commit_file(dir//'/cut.txt', u, refusal)
+        call check(err, refused(refusal, 'incomplete') .and. .not. exists(dir//'/cut.txt') &
+                   .and. .not. exists(dir//'/cut.txt.tmp'), 'a file cut at a line end was '// &
+                   'committed')
+    end subroutine test_cut_at_line_end
 
     !> A file whose last line is cut (what a full disk leaves: gfortran's buffered writes and
     !! close report nothing there; seen on a 40 kB tmpfs, where every case printed "solved"

@@ -54,18 +54,21 @@ contains
         character(len=*), intent(in) :: path
         integer, intent(in) :: unit
         type(error_t), allocatable, intent(out) :: err
-        integer :: ios
+        integer :: ios, written
         character(len=256) :: msg
         msg = ''
+        ! the bytes written, counted by gfortran with what its buffer still holds (-1: unknown)
+        inquire (unit=unit, size=written, iostat=ios)
+        if (ios /= 0) written = -1
         close (unit, iostat=ios, iomsg=msg)
         if (ios /= 0) then
             ios = c_remove(path//'.tmp'//c_null_char)
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': '//trim(msg))
             return
         end if
-        if (.not. complete(path//'.tmp')) then
+        if (.not. complete(path//'.tmp', written)) then
             ! a full disk: gfortran's buffered writes and close report nothing, and the file
-            ! is cut at a block boundary or empty
+            ! is cut at a block boundary (which may fall at a line end) or empty
             ios = c_remove(path//'.tmp'//c_null_char)
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': the file came out '// &
                            'incomplete (is the disk full?)')
@@ -87,10 +90,12 @@ contains
         end if
     end subroutine commit_file
 
-    !> A text file written completely: not empty, and its last byte the end of a line (every
-    !! file fricon writes through here ends its last line).
-    logical function complete(path)
+    !> A text file written completely: as long as what was written to it (when known), not
+    !! empty, and its last byte the end of a line (every file fricon writes through here ends
+    !! its last line).
+    logical function complete(path, written)
         character(len=*), intent(in) :: path
+        integer, intent(in) :: written          !! bytes written; < 0: not known
         integer :: u, ios, size_bytes
         character(len=1) :: last
         complete = .false.
@@ -98,7 +103,7 @@ contains
               form='unformatted', iostat=ios)
         if (ios /= 0) return
         inquire (unit=u, size=size_bytes)
-        if (size_bytes > 0) then
+        if (size_bytes > 0 .and. (written < 0 .or. size_bytes == written)) then
             read (u, pos=size_bytes, iostat=ios) last
             complete = ios == 0 .and. last == achar(10)
         end if
