@@ -9,6 +9,7 @@ program fricon
     use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines, case_count
     use analysis_driver, only: run_analysis, run_options_t
     use output_paths, only: stderr_is_terminal, check_decks_apart, remove_stale_outputs
+    use temporary_cleanup, only: install_cleanup
     implicit none
     interface
         ! void exit(int status);  (the C library: ends without the runtime's "STOP n" line)
@@ -24,6 +25,9 @@ program fricon
     integer :: status, k, deck_status
     logical :: quiet, progress_forced
 
+    ! SIGTERM and SIGINT remove the temporary files of the case being written
+    if (.not. install_cleanup()) write (error_unit, '(a)') 'fricon: warning: no signal '// &
+        'handler: a SIGTERM or SIGINT may leave NAME.tmp files (the next run removes them)'
     call read_arguments(decks, out_dir, options, quiet, progress_forced)
     options%progress = progress_forced .or. (.not. quiet .and. stderr_is_terminal())
     call gsl_start()

@@ -14,6 +14,7 @@ module analysis_driver
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
                              write_plot_script, write_sweep_script, write_report, shell_safe
     use atomic_files, only: open_temporary, commit_file
+    use temporary_cleanup, only: register_temporary, release_temporary
     use plausibility, only: warning_length, input_warnings, settlement_warnings, &
                             tension_warnings
     use error_estimate, only: estimate_errors
@@ -687,6 +688,7 @@ contains
             call remove_output(base//'.png')      ! not an earlier run's figure beside it
             return
         end if
+        call register_temporary(base//'.png.tmp')
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
             ".gp' && tail -c 12 '"//base//".png.tmp' | grep -qa IEND && mv -fT '"//base// &
             ".png.tmp' '"//base//".png'", exitstat=exit_status, cmdstat=cmd_status)
@@ -698,6 +700,7 @@ contains
             call remove_output(base//'.png')
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
+        call release_temporary(base//'.png.tmp')
     end subroutine render_png
 
     !> output/STEM_sweep.gp and .png: the solved cases overlaid (report_writer

@@ -4,6 +4,7 @@ module atomic_files
     use iso_c_binding, only: c_int, c_char, c_null_char
     use errors, only: error_t, new_error, EXIT_INPUT
     use output_paths, only: looks_like_output
+    use temporary_cleanup, only: register_temporary, release_temporary
     implicit none
     private
     public :: open_temporary, commit_file, discard_file
@@ -43,14 +44,28 @@ contains
                 return
             end if
         end if
+        ! removed by the signal handler if SIGTERM or SIGINT ends the program before commit
+        call register_temporary(path//'.tmp')
         open (newunit=unit, file=path//'.tmp', status='replace', action='write', &
               iostat=ios, iomsg=msg)
-        if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))
+        if (ios /= 0) then
+            call release_temporary(path//'.tmp')
+            call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))
+        end if
     end subroutine open_temporary
 
     !> Close the unit and move `path`.tmp to `path`; if that fails, the temporary file is
     !! removed (no NAME.tmp is left) and the error says why it may have failed.
     subroutine commit_file(path, unit, err)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: unit
+        type(error_t), allocatable, intent(out) :: err
+        call move_into_place(path, unit, err)
+        call release_temporary(path//'.tmp')
+    end subroutine commit_file
+
+    !> commit_file without the signal handler's registration.
+    subroutine move_into_place(path, unit, err)
         character(len=*), intent(in) :: path
         integer, intent(in) :: unit
         type(error_t), allocatable, intent(out) :: err
@@ -88,7 +103,7 @@ contains
                            'is there (a folder of that name, or a file or folder without write '// &
                            'permission)')
         end if
-    end subroutine commit_file
+    end subroutine move_into_place
 
     !> A text file written completely: as long as what was written to it (when known), not
     !! empty, and its last byte the end of a line (every file fricon writes through here ends
@@ -130,6 +145,10 @@ contains
     subroutine discard_file(unit)
         integer, intent(in) :: unit
         integer :: ios
+        character(len=4096) :: name
+        name = ''
+        inquire (unit=unit, name=name, iostat=ios)
         close (unit, status='delete', iostat=ios)
+        if (len_trim(name) > 0) call release_temporary(trim(name))
     end subroutine discard_file
 end module atomic_files
