@@ -10,6 +10,7 @@ program fricon
     use command_line, only: command_t, read_command_line, usage_lines, version
     use deck_runs, only: run_decks
     use output_paths, only: stderr_is_terminal
+    use temporary_cleanup, only: install_cleanup
     implicit none
     interface
         ! void exit(int status);  (the C library: ends without the runtime's "STOP n" line)
@@ -23,6 +24,9 @@ program fricon
     integer :: status, k
     character(len=120), allocatable :: lines(:)
 
+    ! SIGTERM and SIGINT remove the temporary files of the case being written
+    if (.not. install_cleanup()) write (error_unit, '(a)') 'fricon: warning: no signal '// &
+        'handler: a SIGTERM or SIGINT may leave NAME.tmp files (the next run removes them)'
     call read_command_line(cmd, err)
     if (allocated(err)) then
         write (error_unit, '(a)') 'ERROR: '//err%message//' (fricon --help lists the options)'

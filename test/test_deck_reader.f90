@@ -82,7 +82,8 @@ contains
                  new_unittest('fuzz_regression_decks', test_fuzz_regressions), &
                  new_unittest('free_format_hint', test_free_format), &
                  new_unittest('fuzz_odd_lines', test_fuzz_lines), &
-                 new_unittest('fuzz_random_bytes', test_fuzz_random)]
+                 new_unittest('fuzz_random_bytes', test_fuzz_random), &
+                 new_unittest('beam_too_narrow', test_beam_too_narrow)]
     end subroutine collect_deck_reader
 
     ! ------------------------------------------------------------------------------------
@@ -571,6 +572,64 @@ contains
                            'SWEEP RHO value v2 must be > 0', 'got -1', 'case 2'], err)
     end subroutine test_sweep_revalidated
 
+    !> A beam narrower than 1E-12 l (the strip kernels then vary below the rounding of positions
+    !! along the beam: the surface displacement came out infinite, an internal error) is an
+    !! input error at the field that set the width: NONDIM beta, GEOMETRY b, or the SWEEP value
+    !! of BETA, B or L. 1E-12 l itself is accepted.
+    subroutine test_beam_too_narrow(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=w), allocatable :: lines(:)
+        lines = beam_nondim()
+        lines(2) = card('NONDIM', '0.0025', '0.1', '0.3', '0.1', '1.0E-16')
+        call expect_case_error(lines, 1, [character(len=120) :: 'test/narrow.dat:2:51-60:', &
+            'NONDIM beta (width ratio b/l of the beam)', 'below the narrowest allowed', &
+            'got 1.0E-16', 'execution not attempted'], err)
+        if (allocated(err)) return
+        lines(2) = card('NONDIM', '0.0025', '0.1', '0.3', '0.1', '1.0E-12')
+        call expect_case_error(lines, 1, [character(len=120) :: ''], err)
+        if (allocated(err)) return
+        lines(2) = card('NONDIM', '0.0025', '0.1', '0.3', '0.1', '0.05')
+        lines = [lines(1:4), card('SWEEP', 'BETA', '0.05', '9.9E-13'), lines(5)]
+        call expect_case_error(lines, 2, [character(len=120) :: 'test/narrow.dat:5:31-40:', &
+            'SWEEP BETA value v2', 'got 9.9E-13', 'case 2'], err)
+        if (allocated(err)) return
+        ! physical: b = 1E-12 on l = 10 is 1E-13 l
+        lines = beam_physical()
+        lines(2) = card('GEOMETRY', '10.0', '0.5', '1.0E-12')
+        call expect_case_error(lines, 1, [character(len=120) :: 'test/narrow.dat:2:31-40:', &
+            'GEOMETRY b (width of the beam)', 'b = 1.0E-13 l'], err)
+        if (allocated(err)) return
+        ! a swept length makes the beam too narrow: the SWEEP L value is named
+        lines(2) = card('GEOMETRY', '10.0', '0.5', '1.0E-10')
+        lines = [lines(1:6), card('SWEEP', 'L', '10.0', '1000.0'), lines(7)]
+        call expect_case_error(lines, 2, [character(len=120) :: 'test/narrow.dat:7:31-40:', &
+            'SWEEP L value v2', 'b = 1.0E-13 l'], err)
+    end subroutine test_beam_too_narrow
+
+    !> The deck parses and its case i is refused with every fragment in the message (no
+    !! fragment, i.e. a single blank one: case i is accepted).
+    subroutine expect_case_error(lines, i, fragments, err)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: fragments(:)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        type(error_t), allocatable :: cerr
+        character(len=:), allocatable :: label
+        call parse_ok('test/narrow.dat', lines, deck, err)
+        if (allocated(err)) return
+        call case_model(deck, i, m, label, cerr)
+        if (len_trim(fragments(1)) == 0) then
+            call check(err, .not. allocated(cerr), 'case '//int_text(i)//' must be accepted')
+            return
+        end if
+        call check(err, allocated(cerr), 'case '//int_text(i)//' accepted; expected "'// &
+                   trim(fragments(1))//'"')
+        if (allocated(err)) return
+        call check_message(cerr, fragments, err)
+    end subroutine expect_case_error
+
     !> A physical SWEEP of the beam length that puts a load off the beam.
     subroutine test_sweep_length(err)
         type(error_t), allocatable, intent(out) :: err
@@ -672,8 +731,9 @@ contains
         character(len=w), allocatable :: lines(:)
         character(len=10), parameter :: odd(4) = [character(len=10) :: 'NaN', 'Inf', &
                                                   '-Infinity', 'nan(0x1)']
-        character(len=10), parameter :: huge_or_tiny(4) = [character(len=10) :: '1e999', &
-                                                           '-1D400', '10.0E29', '0.1E-30']
+        ! the rule is 1E-30 <= |x| < 1E+30: 1E+30 itself is out, and the message says so
+        character(len=10), parameter :: huge_or_tiny(5) = [character(len=10) :: '1e999', &
+                                                           '-1D400', '10.0E29', '0.1E-30', '1E+30']
         integer :: k
         lines = beam_physical()
         do k = 1, size(odd)
@@ -685,7 +745,8 @@ contains
         do k = 1, size(huge_or_tiny)
             lines(2) = card('GEOMETRY', '10.0', huge_or_tiny(k), '1.0')
             call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:21-30: GEOMETRY h', &
-                              'a deck number is 0 or of magnitude 1E-30 to 1E+30'], err)
+                              'a deck number is 0 or has a magnitude of at least 1E-30 '// &
+                              'and below 1E+30'], err)
             if (allocated(err)) return
         end do
         lines(2) = card('GEOMETRY', '10.0', '0.00000E99', '1.0')

@@ -17,6 +17,8 @@ module test_malformed_decks
     use harness, only: unittest_t, new_unittest, error_t, check
     use errors, only: EXIT_INPUT
     use deck_reader, only: deck_t, read_deck, parse_deck, case_count
+    use deck_fields, only: rule_text, RULE_POSITIVE, RULE_STATIONS, RULE_COUNT, RULE_ELEMENTS, &
+                           RULE_OPEN_UNIT
     use analysis_driver, only: run_analysis
     implicit none
     private
@@ -64,7 +66,8 @@ contains
                  new_unittest('too_many_lines', test_too_many_lines), &
                  new_unittest('directory', test_directory), &
                  new_unittest('unreadable_file', test_unreadable), &
-                 new_unittest('no_output_written', test_no_output)]
+                 new_unittest('no_output_written', test_no_output), &
+                 new_unittest('rules_documented', test_rules_documented)]
     end subroutine collect_malformed_decks
 
     ! ------------------------------------------------------------------------------------
@@ -127,10 +130,10 @@ contains
                  "FRICTION f (friction coefficient): expected a finite number such as 0.3")
         ! line 6 GEOMETRY: l (f1, columns 11-20) is '1e999'
         call add('numbers', 'number_1e999.dat', ':6:11-20:', &
-                 "a deck number is 0 or of magnitude 1E-30 to 1E+30, got '1e999'")
+                 "a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, got '1e999'")
         ! line 8 SOIL: nu_f (f2, columns 21-30) is '1e-999'
         call add('numbers', 'number_1e-999.dat', ':8:21-30:', &
-                 "a deck number is 0 or of magnitude 1E-30 to 1E+30, got '1e-999'")
+                 "a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, got '1e-999'")
         ! line 10 LOAD: F_z (f2, columns 21-30) is 'E5'
         call add('numbers', 'number_exponent_only.dat', ':10:21-30:', &
                  "LOAD F_z (total vertical force, or the moment): expected a finite number")
@@ -389,6 +392,31 @@ contains
         if (allocated(err)) return
         call check(err, len(problems) == 0, 'malformed decks misread:'//problems)
     end subroutine check_group
+
+    !> Every range a deck field can be refused by (the deck reader's own rule_text) is listed
+    !! in doc/ERRORS.md, and the limits of the whole-number fields are in README.md, so that a
+    !! user reads the same rule the program applies.
+    subroutine test_rules_documented(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: text, bracket
+        integer :: rule
+        rules: do rule = RULE_POSITIVE, RULE_STATIONS
+            text = rule_text(rule)
+            call check(err, shell('grep -qF -- "'//text//'" doc/ERRORS.md') == 0, &
+                       'doc/ERRORS.md lacks the rule "'//text//'"')
+            if (allocated(err)) return
+            if (rule < RULE_COUNT .and. rule /= RULE_OPEN_UNIT) cycle rules
+            ! README: 'must be ' dropped, as in its tables ("whole number in [1, 100000]")
+            if (rule == RULE_OPEN_UNIT) then
+                bracket = 'in (0, 1)'
+            else
+                bracket = text(index(text, 'whole number'):)
+            end if
+            call check(err, shell('grep -qF -- "'//bracket//'" README.md') == 0, &
+                       'README.md lacks the rule "'//bracket//'"')
+            if (allocated(err)) return
+        end do rules
+    end subroutine test_rules_documented
 
     !> Run a shell command; its exit status (-1 if it could not run).
     integer function shell(command)

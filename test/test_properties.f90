@@ -29,7 +29,8 @@ contains
 
     subroutine collect_properties(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
-        tests = [new_unittest('random_valid_problems', test_random_problems)]
+        tests = [new_unittest('random_valid_problems', test_random_problems), &
+                 new_unittest('narrowest_beam_solved', test_narrowest_beam)]
     end subroutine collect_properties
 
     !> Next uniform number in (0, 1): the Park-Miller minimal standard generator,
@@ -125,6 +126,36 @@ contains
         call check(err, n_solved >= n_cases/2 .and. n_refused >= 2, 'the generator should give '// &
                    'mostly solvable problems and some that slide')
     end subroutine test_random_problems
+
+    !> The narrowest beam a deck may give (b = 1E-12 l, deck_reader's min_width_ratio) is
+    !! solved like any other (statics, finite station values, the friction law) on P1, S2 and
+    !! P2 meshes, gradings UNIFORM, EDGES and LOADS, with friction and a load off the centre.
+    subroutine test_narrowest_beam(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=7), parameter :: gradings(3) = ['UNIFORM', 'EDGES  ', 'LOADS  ']
+        integer, parameter :: interps(3) = [INTERP_P1, INTERP_S2, INTERP_P2]
+        type(model_t) :: m
+        integer :: k, n_solved, n_refused
+        n_solved = 0
+        n_refused = 0
+        meshes: do k = 1, 3
+            m = model_t()
+            m%nondim = .true.
+            m%structure%kind = MODEL_BEAM
+            m%groups%rho = 0.01_dp
+            m%groups%zeta = 0.1_dp
+            m%groups%beta = 1.0e-12_dp
+            m%interface%f = 0.5_dp
+            m%mesh%ne = 20*k
+            m%mesh%grading = gradings(k)
+            m%mesh%interp = interps(k)
+            m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=0.1_dp, x1=0.37_dp)]
+            call complete_model(m)
+            call one_case(m, 'beta 1E-12, '//trim(gradings(k)), n_solved, n_refused, err)
+            if (allocated(err)) return
+        end do meshes
+        call check(err, n_solved == 3, 'every narrowest beam must be solved')
+    end subroutine test_narrowest_beam
 
     subroutine one_case(m, what, n_solved, n_refused, err)
         type(model_t), intent(in) :: m

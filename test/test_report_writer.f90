@@ -37,7 +37,11 @@ contains
                  new_unittest('stale_outputs_of_the_deck_removed', test_stale_outputs), &
                  new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh), &
                  new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on), &
-                 new_unittest('incomplete_file_not_committed', test_incomplete_file)]
+                 new_unittest('incomplete_file_not_committed', test_incomplete_file), &
+                 new_unittest('positions_fit_their_columns', test_position_formats), &
+                 new_unittest('tension_flags_warned', test_tension_warning), &
+                 new_unittest('file_cut_at_line_end_not_committed', test_cut_at_line_end), &
+                 new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -272,6 +276,58 @@ contains
                    'reported twice')
     end subroutine test_no_follow_on
 
+    !> A sweep one of whose cases cannot write its files (here case 2's CSV name is taken by a
+    !! folder; on a full disk any file) ends with status 1 and leaves no summary CSV or
+    !! overlay script, not even those of an earlier complete run: they would summarise part
+    !! of the sweep. The other cases' files are written.
+    subroutine test_unwritten_case(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: status
+        opt%figures = .false.
+        opt%estimates = .false.
+        call clean_dir()
+        call parse_deck('u.dat', beam_deck(['F  ', '0.3', '0.4', '0.5']), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK .and. exists(dir//'/u_summary.csv') .and. &
+                   exists(dir//'/u_sweep.gp'), 'the complete sweep has its summary')
+        if (allocated(err)) return
+        call execute_command_line('rm -f '//dir//'/u_002.csv && mkdir '//dir//'/u_002.csv')
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_INPUT .and. exists(dir//'/u_001.txt') .and. &
+                   exists(dir//'/u_003.txt') .and. .not. exists(dir//'/u_002.txt'), &
+                   'case 2 must fail (status 1), cases 1 and 3 be written')
+        if (allocated(err)) return
+        call check(err, .not. exists(dir//'/u_summary.csv') .and. .not. &
+                   exists(dir//'/u_sweep.gp') .and. .not. exists(dir//'/u_summary.csv.tmp'), &
+                   'a summary or overlay left beside a sweep with an unwritten case')
+    end subroutine test_unwritten_case
+
+    !> A full disk can cut a file at a block boundary that falls at a line end (a sweep's
+    !! overlay script was committed with 4096 of its 8900 bytes on a 60 kB tmpfs): two lines
+    !! written and flushed, the file then cut after the first (as the disk would), is not
+    !! committed: an error, and neither the file nor its .tmp.
+    subroutine test_cut_at_line_end(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        integer :: u
+        call clean_dir()
+        call open_temporary(dir//'/cut.txt', u, refusal)
+        call check(err, .not. allocated(refusal), 'cannot open the temporary file')
+        if (allocated(err)) return
+        write (u, '(a)') '= line one'
+        write (u, '(a)') '= line two'
+        flush (u)
+        ! 11 bytes: '= line one' and its line end
+        call execute_command_line('truncate -s 11 '//dir//'/cut.txt.tmp')
+        call commit_file(dir//'/cut.txt', u, refusal)
+        call check(err, refused(refusal, 'incomplete') .and. .not. exists(dir//'/cut.txt') &
+                   .and. .not. exists(dir//'/cut.txt.tmp'), 'a file cut at a line end was '// &
+                   'committed')
+    end subroutine test_cut_at_line_end
+
     !> A file whose last line is cut (what a full disk leaves: gfortran's buffered writes and
     !! close report nothing there; seen on a 40 kB tmpfs, where every case printed "solved"
     !! over empty files) is not committed: an error, and neither the file nor its .tmp. A
@@ -304,6 +360,150 @@ contains
         character(len=*), intent(in) :: path
         inquire (file=path, exist=exists)
     end function exists
+
+    !> Positions print as numbers for any allowed length (GEOMETRY l from 1E-30 to below
+    !! 1E+30): the same beam (h = l/20, b = l/10) at l = 2E12, 1E-20 and 10 has its first
+    !! physical station at x = -l/2 (stations at the nodes, the first at the left end) and its
+    !! first contact or lift-off interval from -l/2, both read back from the report to 1e-4;
+    !! no field of the report is all asterisks, and the figure is drawn (its script reads the
+    !! lift-off zones back as numbers).
+    subroutine test_position_formats(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=10), parameter :: geometry(3, 3) = reshape([character(len=10) :: &
+            '2.0E12', '1.0E11', '2.0E11', '1.0E-20', '5.0E-22', '1.0E-21', '10.0', '0.5', &
+            '1.0'], [3, 3])
+        real(dp), parameter :: length(3) = [2.0e12_dp, 1.0e-20_dp, 10.0_dp]
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        character(len=80), allocatable :: lines(:)
+        character(len=200) :: first_row, first_interval
+        logical :: stars
+        integer :: k, status, ios
+        real(dp) :: x_row, x_interval
+        opt%estimates = .false.
+        sizes: do k = 1, 3
+            call clean_dir()
+            lines = beam_deck([character(len=4) ::])
+            lines(3) = card('GEOMETRY', geometry(:, k))
+            call parse_deck('pos.dat', lines, deck, err)
+            if (allocated(err)) return
+            call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+            call check(err, status == EXIT_OK .and. exists(dir//'/pos.png'), 'l = '// &
+                       trim(geometry(1, k))//': not solved, or no figure')
+            if (allocated(err)) return
+            call report_positions(dir//'/pos.txt', first_row, first_interval, stars)
+            call check(err, .not. stars, 'l = '//trim(geometry(1, k))//': a field of the '// &
+                       'report is asterisks')
+            if (allocated(err)) return
+            read (first_row, *, iostat=ios) x_row
+            if (ios == 0) read (first_interval(index(first_interval, 'from') + 4: &
+                                index(first_interval, ' to') - 1), *, iostat=ios) x_interval
+            call check(err, ios == 0, 'l = '//trim(geometry(1, k))//': unreadable position in "'// &
+                       trim(first_row)//'" or "'//trim(first_interval)//'"')
+            if (allocated(err)) return
+            call check_close(err, x_row, -0.5_dp*length(k), 1.0e-4_dp, 0.0_dp, 'first station')
+            if (allocated(err)) return
+            call check_close(err, x_interval, -0.5_dp*length(k), 1.0e-4_dp, 0.0_dp, &
+                             'first interval')
+            if (allocated(err)) return
+        end do sizes
+    end subroutine test_position_formats
+
+    !> A solved case whose station table flags tension (rows ending !T) says so in a WARNING
+    !! naming their number, in the report and the JSON: a very soft thick beam (NONDIM rho 1e-6,
+    !! zeta 0.5, f 0, N_e 20) lifts off nearly everywhere and the penalty pulls on it. A case
+    !! without flags (the physical beam) has no such warning.
+    subroutine test_tension_warning(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        character(len=80), allocatable :: lines(:)
+        character(len=400) :: line
+        character(len=16) :: count_text
+        integer :: status, u, ios, n_flagged, n_warned
+        logical :: in_json
+        opt%figures = .false.
+        opt%estimates = .false.
+        call clean_dir()
+        lines = [character(len=80) :: card('MODEL', ['BEAM']), card('NONDIM', [character(len=10) &
+                 :: '1.0E-6', '0.5', '', '', '1.0']), card('FRICTION', ['0.0']), &
+                 card('LOAD', ['POINT', '1.0  ']), card('MESH', ['20']), card('END', [' '])]
+        call parse_deck('soft.dat', lines, deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK, 'the soft beam is solved (status 0)')
+        if (allocated(err)) return
+        n_flagged = 0
+        n_warned = 0
+        open (newunit=u, file=dir//'/soft.txt', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (len_trim(line) > 3) then
+                if (line(len_trim(line) - 2:len_trim(line)) == ' !T') n_flagged = n_flagged + 1
+            end if
+            if (index(line, 'WARNING: tension at ') > 0) n_warned = n_warned + 1
+            if (index(line, 'WARNING: tension at ') > 0) count_text = line(index(line, 'at ') + 3:)
+        end do
+        close (u)
+        call check(err, n_flagged > 0 .and. n_warned == 1, 'rows !T: '//int_text(n_flagged)// &
+                   ', tension warnings: '//int_text(n_warned))
+        if (allocated(err)) return
+        call check(err, count_text(1:index(count_text, ' ') - 1) == int_text(n_flagged), &
+                   'the warning counts '//trim(count_text)//' flagged rows, the table '// &
+                   int_text(n_flagged))
+        if (allocated(err)) return
+        in_json = .false.
+        open (newunit=u, file=dir//'/soft.json', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            in_json = in_json .or. index(line, 'tension at '//int_text(n_flagged)) > 0
+        end do
+        close (u)
+        call check(err, in_json, 'the JSON lacks the tension warning')
+        if (allocated(err)) return
+        call clean_dir()
+        call parse_deck('firm.dat', beam_deck([character(len=4) ::]), deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        n_warned = 0
+        open (newunit=u, file=dir//'/firm.txt', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, 'tension at ') > 0) n_warned = n_warned + 1
+        end do
+        close (u)
+        call check(err, status == EXIT_OK .and. n_warned == 0, 'a case without !T rows warns '// &
+                   'of tension')
+    end subroutine test_tension_warning
+
+    !> The first row of the physical station table (section 6, after its two heading lines),
+    !! the first interval line ('from ... to ...'), and whether a run of four asterisks occurs.
+    subroutine report_positions(path, first_row, first_interval, stars)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(out) :: first_row, first_interval
+        logical, intent(out) :: stars
+        character(len=400) :: line
+        integer :: u, ios, after_heading
+        first_row = ''
+        first_interval = ''
+        stars = .false.
+        after_heading = -1
+        open (newunit=u, file=path, status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            stars = stars .or. index(line, '****') > 0
+            if (index(line, 'STATIONS (physical units)') > 0) after_heading = 0
+            if (after_heading >= 0) after_heading = after_heading + 1
+            if (after_heading == 4 .and. len_trim(first_row) == 0) first_row = line
+            if (len_trim(first_interval) == 0 .and. index(line, ' from') > 0 .and. &
+                index(line, ' to') > 0) first_interval = line
+        end do
+        close (u)
+    end subroutine report_positions
 
     !> The data file has 14 numeric columns per row (plate); integrating Sigma_z over the disk
     !! from the printed columns (trapezoid on 2 pi t dt / pi) gives ~1 (equilibrium, F = 1).

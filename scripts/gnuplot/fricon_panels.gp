@@ -59,9 +59,9 @@ prev_x = 0
 zone_start = 0
 stats data skip skip_rows u (st = column(c_state), xx = column(c_x), \
     ((st == 0 && prev_state != 0) ? (zone_start = (prev_state < 0) ? xx : 0.5*(xx + prev_x)) : 0), \
-    ((st != 0 && prev_state == 0) ? (zones = zones.sprintf(' %.12g %.12g', zone_start, 0.5*(xx + prev_x))) : 0), \
+    ((st != 0 && prev_state == 0) ? (zones = zones.sprintf(' %.12e %.12e', zone_start, 0.5*(xx + prev_x))) : 0), \
     prev_state = st, prev_x = xx, 0) nooutput
-if (prev_state == 0) { zones = zones.sprintf(' %.12g %.12g', zone_start, prev_x) }
+if (prev_state == 0) { zones = zones.sprintf(' %.12e %.12e', zone_start, prev_x) }
 n_zones = words(zones)/2
 do for [k=1:n_zones] {
     set object k rect from first real(word(zones, 2*k-1)), graph 0 to first real(word(zones, 2*k)), graph 1 \

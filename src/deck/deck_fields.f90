@@ -20,7 +20,7 @@
 !! in [1E-30, 1E+30): nothing derived from the deck can then overflow.
 module deck_fields
     use kinds, only: dp
-    use sorting, only: sort_ascending
+    use sorting, only: ascending_order
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -386,13 +386,12 @@ contains
         integer, allocatable :: order(:)
         real(dp) :: key(diag%n)
         integer :: i
-        order = [(i, i=1, diag%n)]
         do i = 1, diag%n
             key(i) = real(diag%items(i)%line, dp)
             if (diag%items(i)%line == 0) key(i) = 1.0e10_dp
             key(i) = key(i)*1.0e4_dp + real(diag%items(i)%first, dp)
         end do
-        call sort_ascending(key, order)
+        order = ascending_order(key)
     end function line_order
 
     !> `deck:line:c1-c2: text`, the line and the carets (or `deck: text` without a line).

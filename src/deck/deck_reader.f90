@@ -100,6 +100,11 @@ module deck_reader
         '11-20, f2 21-30, f3 31-40, ... (free format is not read; see the column ruler in README)'
     integer, parameter :: max_lines = 100000        !! longer files are not decks
     real(dp), parameter :: unit_load_tol = 1.0e-6_dp  !! NONDIM: |sum F_z - 1| allowed
+    !> Narrowest beam, b/l: the strip kernels vary over X ~ b/2, and the points of their log
+    !! rule near a station lie at a small fraction of b/2 from it; positions along the beam
+    !! are rounded to about 1E-16 l, so below this ratio such points fall on the station
+    !! (an infinite kernel value). Solved to b/l = 3E-13; failed from 1E-14.
+    real(dp), parameter :: min_width_ratio = 1.0e-12_dp
     integer, parameter :: default_adapt_max_ne = 1000 !! ADAPT max_elements when blank
 
     !> One significant card (not blank, not a comment).
@@ -289,6 +294,7 @@ contains
         end do
         call complete_model(m)
         call check_element_count(deck, m, pick, diag)
+        call check_beam_width(deck, m, pick, diag)
         if (diag%n == 0) return
         if (len(label) == 0) then
             call new_error(err, EXIT_INPUT, render_diagnostics(diag, deck%path, &
@@ -328,6 +334,50 @@ contains
             'between the load positions and patch edges), got '//int_text(m%mesh%ne), &
             echo_text(deck%lines(line)))
     end subroutine check_element_count
+
+    !> A beam at least min_width_ratio l wide, reported at the SWEEP BETA, B or L value that
+    !! made it narrower, else at NONDIM beta or GEOMETRY b.
+    subroutine check_beam_width(deck, m, pick, diag)
+        type(deck_t), intent(in) :: deck
+        type(model_t), intent(in) :: m                !! the case, completed
+        integer, intent(in) :: pick(:)                !! the case's value of each SWEEP card
+        type(diagnostics_t), intent(inout) :: diag
+        character(len=:), allocatable :: what, got
+        integer :: line, first, s
+        if (m%structure%kind /= MODEL_BEAM .or. m%structure%b >= min_width_ratio*m%structure%length) return
+        line = 0
+        first = field_first_column(merge(5, 3, m%nondim))
+        what = 'GEOMETRY b (width of the beam)'
+        if (m%nondim) what = 'NONDIM beta (width ratio b/l of the beam)'
+        got = format_real(merge(m%structure%b/m%structure%length, m%structure%b, m%nondim))
+        do s = 1, size(deck%sweeps)
+            select case (trim(deck%sweeps(s)%name))
+            case ('BETA', 'B', 'L')
+                line = deck%sweeps(s)%line
+                first = field_first_column(pick(s) + 1)
+                what = 'SWEEP '//trim(deck%sweeps(s)%name)//' value v'//int_text(pick(s))
+                got = format_real(deck%sweeps(s)%values(pick(s)))
+            end select
+        end do
+        if (line == 0) line = card_line(deck, merge('NONDIM  ', 'GEOMETRY', m%nondim))
+        if (line < 1) return
+        call add_diagnostic(diag, line, first, first + field_width - 1, trim(what)// &
+            ' gives a beam of width b = '//format_real(m%structure%b/m%structure%length)//' l, below the '// &
+            'narrowest allowed, b = '//format_real(min_width_ratio)//' l (the soil kernel '// &
+            'under a beam varies over b/2, finer than positions along the beam are resolved), '// &
+            'got '//got, echo_text(deck%lines(line)))
+    end subroutine check_beam_width
+
+    !> Line of the first card named name (0: none).
+    pure integer function card_line(deck, name) result(line)
+        type(deck_t), intent(in) :: deck
+        character(len=*), intent(in) :: name
+        integer :: s
+        line = 0
+        do s = size(deck%lines), 1, -1
+            if (to_upper(adjustl(deck%lines(s)(1:name_width))) == trim(name)) line = s
+        end do
+    end function card_line
 
     !> The built-in default case (identical to input/default.dat): a circular concrete raft
     !! under a column load on an elastic half-space, physical data in kN and m.
@@ -1310,8 +1360,8 @@ contains
             call field_error(st, cd, j, what//': expected a finite number such as 0.3, '// &
                              '30.0E6 or 1.0D-6, got '''//field_value(cd, j)//'''')
         else if (s == FIELD_RANGE) then
-            call field_error(st, cd, j, what//': a deck number is 0 or of magnitude 1E-30 '// &
-                             'to 1E+30, got '''//field_value(cd, j)//'''')
+            call field_error(st, cd, j, what//': a deck number is 0 or has a magnitude of '// &
+                             'at least 1E-30 and below 1E+30, got '''//field_value(cd, j)//'''')
             s = FIELD_BAD
         else if (s == FIELD_BLANK .and. required) then
             call field_error(st, cd, j, what//' is required but the field is blank '// &

@@ -8,7 +8,8 @@
 !! stiffer than the soil); a settlement of at most the thickness h and a tenth of l (or a).
 module plausibility
     use kinds, only: dp
-    use model, only: model_t
+    use kinds, only: pi
+    use model, only: model_t, MODEL_BEAM, total_vertical_load
     implicit none
     private
 
@@ -17,7 +18,7 @@ module plausibility
     real(dp), parameter :: f_max = 2.0_dp
     real(dp), parameter :: modulus_ratio_range(2) = [2.0_dp, 1.0e5_dp]
 
-    public :: input_warnings, settlement_warnings
+    public :: input_warnings, settlement_warnings, tension_warnings
 
 contains
 
@@ -68,6 +69,37 @@ contains
             w = [character(len=warning_length) :: w, text]
         end if
     end function settlement_warnings
+
+    !> Warning about a solved case whose station table flags tension beyond the penalty's
+    !! O(eta) (rows !T): the report alone showed it. On a very soft structure that lifts off
+    !! far, the penalty pulls on the lifted part in proportion to its gap and to eta_bar (the
+    !! flag count grows with the stations, the tension falls with eta_bar).
+    pure function tension_warnings(m, n_flags, n_lifted, n_stations, most_tensile, &
+                                   tension_tol) result(w)
+        type(model_t), intent(in) :: m
+        integer, intent(in) :: n_flags             !! stations flagged !T
+        integer, intent(in) :: n_lifted            !! of them lifted off
+        integer, intent(in) :: n_stations          !! stations of the table
+        real(dp), intent(in) :: most_tensile       !! least station sigma_z [force/length^k]
+        real(dp), intent(in) :: tension_tol        !! the flag level, same unit (> 0)
+        character(len=warning_length), allocatable :: w(:)
+        character(len=warning_length) :: text
+        character(len=40) :: where
+        real(dp) :: mean
+        allocate (w(0))
+        if (n_flags <= 0) return
+        mean = total_vertical_load(m%loads)/merge(m%structure%length, pi*m%structure%length**2, m%structure%kind == MODEL_BEAM)
+        where = ''
+        if (n_lifted < n_flags) write (where, '(a,i0,a)') ', ', n_flags - n_lifted, &
+            ' not lifted off'
+        ! Sigma_z = sigma_z / mean pressure, as the report's CHECKS; at most 190 characters
+        ! with seven-digit counts
+        write (text, '(a,i0,a,i0,a,es9.2,a,es9.2,a)') 'tension at ', n_flags, ' of ', &
+            n_stations, ' stations'//trim(where)//' (Sigma_z down to ', most_tensile/mean, &
+            ', flag level', tension_tol/mean, '; rows !T): the penalty pulls where lifted '// &
+            'off, less with a smaller SOLVER eta_bar'
+        w = [character(len=warning_length) :: text]
+    end function tension_warnings
 
     pure function degrees_to_coefficient(phi) result(text)
         real(dp), intent(in) :: phi

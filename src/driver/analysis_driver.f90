@@ -16,7 +16,7 @@ module analysis_driver
                             case_number, remove_stale_outputs
     use blas_threads, only: set_blas_threads, blas_thread_count
     use flexibility_cache, only: flexibility_cache_t, new_flexibility_cache
-    use resource_limits, only: check_memory, memory_available, memory_needed, time_needed, &
+    use resource_limits, only: check_memory, memory_available, case_memory, time_needed, &
                                case_unknowns
     implicit none
     private
@@ -162,8 +162,7 @@ contains
                 call add_context(err, 'case '//case_number(i, size(cases)))
                 return
             end if
-            largest = max(largest, memory_needed(case_unknowns(cases(i)), &
-                                                 cases(i)%solver%method == METHOD_TWOLOOP))
+            largest = max(largest, case_memory(cases(i)))
         end do
         threads = max(1, min(threads, int(0.8_dp*available/max(largest, 1.0_dp))))
     end subroutine fit_memory
@@ -178,7 +177,7 @@ contains
         if (time_needed(n) < 2.0_dp) return
         write (unit, '(a,i0,a,f0.1,a)') 'fricon: '//name//': ', n, ' unknowns, about '// &
             seconds(time_needed(n))//' and ', &
-            memory_needed(n, m%solver%method == METHOD_TWOLOOP)/1.0e9_dp, ' GB (rough estimates)'
+            case_memory(m)/1.0e9_dp, ' GB (rough estimates)'
         flush (unit)
     end subroutine announce_size
 

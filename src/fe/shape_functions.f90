@@ -72,22 +72,28 @@ contains
         type(basis_t), intent(inout) :: basis
         integer, intent(in), optional :: c0_nodes(:)
         logical :: double(0:msh%ne)
-        integer :: k, e
+        integer :: k, e, n
         double = .false.
         if (present(c0_nodes)) then
             do k = 1, size(c0_nodes)
                 if (c0_nodes(k) > 0 .and. c0_nodes(k) < msh%ne) double(c0_nodes(k)) = .true.
             end do
         end if
-        basis%knots = [msh%x(0), msh%x(0)]
-        allocate (basis%span(msh%ne))
-        do e = 1, msh%ne
-            basis%knots = [basis%knots, msh%x(e - 1)]
-            if (double(e - 1)) basis%knots = [basis%knots, msh%x(e - 1)]
-            basis%span(e) = size(basis%knots)
-        end do
-        basis%knots = [basis%knots, msh%x(msh%ne), msh%x(msh%ne), msh%x(msh%ne)]
-        basis%n_dof = size(basis%knots) - 3
+        ! 3 knots at each end, one at each interior node, one more at each doubled node
+        allocate (basis%knots(msh%ne + 5 + count(double)), basis%span(msh%ne))
+        basis%knots(1:2) = msh%x(0)
+        n = 2
+        elements: do e = 1, msh%ne
+            n = n + 1
+            basis%knots(n) = msh%x(e - 1)
+            if (double(e - 1)) then
+                n = n + 1
+                basis%knots(n) = msh%x(e - 1)
+            end if
+            basis%span(e) = n
+        end do elements
+        basis%knots(n + 1:n + 3) = msh%x(msh%ne)
+        basis%n_dof = n
     end subroutine spline_knots
 
     !> Values and x-derivatives of the functions nonzero on element e at local xi in [-1, 1].

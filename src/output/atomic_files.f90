@@ -4,6 +4,7 @@ module atomic_files
     use iso_c_binding, only: c_int, c_char, c_null_char
     use errors, only: error_t, new_error, EXIT_INPUT
     use output_paths, only: looks_like_output
+    use temporary_cleanup, only: register_temporary, release_temporary
     implicit none
     private
     public :: open_temporary, commit_file, discard_file
@@ -43,9 +44,14 @@ contains
                 return
             end if
         end if
+        ! removed by the signal handler if SIGTERM or SIGINT ends the program before commit
+        call register_temporary(path//'.tmp')
         open (newunit=unit, file=path//'.tmp', status='replace', action='write', &
               iostat=ios, iomsg=msg)
-        if (ios /= 0) call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))
+        if (ios /= 0) then
+            call release_temporary(path//'.tmp')
+            call new_error(err, EXIT_INPUT, 'cannot write '//path//'.tmp: '//trim(msg))
+        end if
     end subroutine open_temporary
 
     !> Close the unit and move `path`.tmp to `path`; if that fails, the temporary file is
@@ -54,18 +60,30 @@ contains
         character(len=*), intent(in) :: path
         integer, intent(in) :: unit
         type(error_t), allocatable, intent(out) :: err
-        integer :: ios
+        call move_into_place(path, unit, err)
+        call release_temporary(path//'.tmp')
+    end subroutine commit_file
+
+    !> commit_file without the signal handler's registration.
+    subroutine move_into_place(path, unit, err)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: unit
+        type(error_t), allocatable, intent(out) :: err
+        integer :: ios, written
         character(len=256) :: msg
         msg = ''
+        ! the bytes written, counted by gfortran with what its buffer still holds (-1: unknown)
+        inquire (unit=unit, size=written, iostat=ios)
+        if (ios /= 0) written = -1
         close (unit, iostat=ios, iomsg=msg)
         if (ios /= 0) then
             ios = c_remove(path//'.tmp'//c_null_char)
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': '//trim(msg))
             return
         end if
-        if (.not. complete(path//'.tmp')) then
+        if (.not. complete(path//'.tmp', written)) then
             ! a full disk: gfortran's buffered writes and close report nothing, and the file
-            ! is cut at a block boundary or empty
+            ! is cut at a block boundary (which may fall at a line end) or empty
             ios = c_remove(path//'.tmp'//c_null_char)
             call new_error(err, EXIT_INPUT, 'cannot write '//path//': the file came out '// &
                            'incomplete (is the disk full?)')
@@ -85,12 +103,14 @@ contains
                            'is there (a folder of that name, or a file or folder without write '// &
                            'permission)')
         end if
-    end subroutine commit_file
+    end subroutine move_into_place
 
-    !> A text file written completely: not empty, and its last byte the end of a line (every
-    !! file fricon writes through here ends its last line).
-    logical function complete(path)
+    !> A text file written completely: as long as what was written to it (when known), not
+    !! empty, and its last byte the end of a line (every file fricon writes through here ends
+    !! its last line).
+    logical function complete(path, written)
         character(len=*), intent(in) :: path
+        integer, intent(in) :: written          !! bytes written; < 0: not known
         integer :: u, ios, size_bytes
         character(len=1) :: last
         complete = .false.
@@ -98,7 +118,7 @@ contains
               form='unformatted', iostat=ios)
         if (ios /= 0) return
         inquire (unit=u, size=size_bytes)
-        if (size_bytes > 0) then
+        if (size_bytes > 0 .and. (written < 0 .or. size_bytes == written)) then
             read (u, pos=size_bytes, iostat=ios) last
             complete = ios == 0 .and. last == achar(10)
         end if
@@ -125,6 +145,10 @@ contains
     subroutine discard_file(unit)
         integer, intent(in) :: unit
         integer :: ios
+        character(len=4096) :: name
+        name = ''
+        inquire (unit=unit, name=name, iostat=ios)
         close (unit, status='delete', iostat=ios)
+        if (len_trim(name) > 0) call release_temporary(trim(name))
     end subroutine discard_file
 end module atomic_files

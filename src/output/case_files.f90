@@ -11,6 +11,7 @@ module case_files
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
                              write_plot_script, write_report
     use output_paths, only: remove_output, canonical_path
+    use temporary_cleanup, only: register_temporary, release_temporary
     implicit none
     private
 
@@ -174,6 +175,7 @@ contains
             call remove_output(base//'.png')      ! not an earlier run's figure beside it
             return
         end if
+        call register_temporary(base//'.png.tmp')
         call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
             ".gp' && tail -c 12 '"//base//".png.tmp' | grep -qa IEND && mv -fT '"//base// &
             ".png.tmp' '"//base//".png'", exitstat=exit_status, cmdstat=cmd_status)
@@ -185,5 +187,6 @@ contains
             call remove_output(base//'.png')
             call execute_command_line("rm -f '"//base//".png.tmp'")
         end if
+        call release_temporary(base//'.png.tmp')
     end subroutine render_png
 end module case_files

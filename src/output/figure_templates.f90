@@ -107,9 +107,9 @@ contains
         lines(61) = "    ((st == 0 && prev_state != 0) ? (zone_start = (prev_stat" &
             //"e < 0) ? xx : 0.5*(xx + prev_x)) : 0), \"
         lines(62) = "    ((st != 0 && prev_state == 0) ? (zones = zones.sprintf('" &
-            //" %.12g %.12g', zone_start, 0.5*(xx + prev_x))) : 0), \"
+            //" %.12e %.12e', zone_start, 0.5*(xx + prev_x))) : 0), \"
         lines(63) = "    prev_state = st, prev_x = xx, 0) nooutput"
-        lines(64) = "if (prev_state == 0) { zones = zones.sprintf(' %.12g %.12g'," &
+        lines(64) = "if (prev_state == 0) { zones = zones.sprintf(' %.12e %.12e'," &
             //" zone_start, prev_x) }"
         lines(65) = "n_zones = words(zones)/2"
         lines(66) = "do for [k=1:n_zones] {"

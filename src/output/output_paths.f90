@@ -34,7 +34,7 @@ module output_paths
     public :: prepare_output_dir, check_deck_not_overwritten, stderr_is_terminal
     public :: case_name, case_number, writes_file, output_files, base_name, check_decks_apart
     public :: remove_stale_outputs, remove_output, canonical_path, looks_like_output
-    public :: remove_shard_summaries
+    public :: remove_shard_summaries, remove_sweep_outputs
 
 contains
 
@@ -183,6 +183,22 @@ contains
             end do
         end do
     end subroutine remove_shard_summaries
+
+    !> A sweep's summary STEM_summary<shard>.csv and, unsharded (shard ''), its overlay
+    !! script and figure, with their .tmp.
+    subroutine remove_sweep_outputs(dir, stem, shard)
+        character(len=*), intent(in) :: dir, stem
+        character(len=*), intent(in) :: shard      !! '' or '.shard-I-of-N'
+        integer :: k
+        character(len=*), parameter :: tails(2) = ['_sweep.gp ', '_sweep.png']
+        call remove_output(dir//'/'//stem//'_summary'//shard//'.csv.tmp')
+        call remove_output(dir//'/'//stem//'_summary'//shard//'.csv')
+        if (len(shard) > 0) return
+        do k = 1, size(tails)
+            call remove_output(dir//'/'//stem//trim(tails(k))//'.tmp')
+            call remove_output(dir//'/'//stem//trim(tails(k)))
+        end do
+    end subroutine remove_sweep_outputs
 
     !> The files of one case, base.ext for every output extension and their .tmp, if its JSON
     !! summary records the deck (deck_real: its canonical path).

@@ -921,6 +921,8 @@ contains
         type(station_table_t), intent(in) :: tab
         logical, intent(in) :: nondim
         integer :: i, c
+        real(dp) :: extent
+        extent = maxval(abs(tab%val(cols(1)%quantity, :)*cols(1)%scale), mask=tab%n > 0)
         write (u, '(/,a)') heading
         do c = 1, size(cols)
             if (.not. cols(c)%in_report) cycle
@@ -940,7 +942,8 @@ contains
                 if (cols(c)%integer_valued) then
                     write (u, '(a13)', advance='no') trim(state_word(nint(tab%val(Q_STATE, i))))
                 else if (c == 1) then
-                    write (u, '(f13.5)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
+                    write (u, position_format(extent, 13), advance='no') &
+                        tab%val(cols(c)%quantity, i)*cols(c)%scale
                 else
                     write (u, '(es13.4)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
                 end if
@@ -1033,6 +1036,23 @@ contains
         text = trim(buf)
     end function order_text
 
+    !> Edit descriptor of positions up to extent in magnitude: 5 decimals where they show the
+    !! value (extent >= 1E-3) and it fits, else scientific with 5 digits (-1.2345E+29 and
+    !! -1.2345-100 take 11 columns). Width 12 (after text): below 1E4, -9999.99999 leaves a
+    !! blank; width 13 (a table's first column): below 1E6, -999999.99999 fills it.
+    pure function position_format(extent, width) result(fmt)
+        real(dp), intent(in) :: extent    !! largest |position| [the column's unit]
+        integer, intent(in) :: width      !! field width, 12 or 13
+        character(len=:), allocatable :: fmt
+        real(dp) :: widest
+        widest = merge(1.0e4_dp, 1.0e6_dp, width <= 12)
+        if (extent == 0.0_dp .or. (extent >= 1.0e-3_dp .and. extent < widest)) then
+            fmt = '(f'//int_text(width)//'.5)'
+        else
+            fmt = '(es'//int_text(width)//'.4)'
+        end if
+    end function position_format
+
     subroutine write_intervals(u, m, iv, slip)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
@@ -1040,18 +1060,20 @@ contains
         type(interval_t), intent(in) :: slip(:)     !! where the base slips
         type(units_t) :: un
         real(dp) :: scale
+        character(len=:), allocatable :: fmt
         integer :: k
         un = case_units(m)
         scale = merge(1.0_dp/m%structure%length, 1.0_dp, m%nondim)
         write (u, '(3x,a)') 'intervals ('//trim(merge('t               ', un%length, m%nondim))// &
             '; boundaries midway between stations of different state):'
+        fmt = position_format(m%structure%length*scale, 12)
+        fmt = '(6x,a,'//fmt(2:len(fmt) - 1)//',a,'//fmt(2:len(fmt) - 1)//',a)'
         do k = 1, size(iv)
-            write (u, '(6x,a,f12.5,a,f12.5)') merge('contact  from', 'lift-off from', &
-                iv(k)%contact), &
-                iv(k)%x1*scale, ' to', iv(k)%x2*scale
+            write (u, fmt) merge('contact  from', 'lift-off from', iv(k)%contact), &
+                iv(k)%x1*scale, ' to', iv(k)%x2*scale, ''
         end do
         do k = 1, size(slip)
-            write (u, '(6x,a,f12.5,a,f12.5,a)') 'slip     from', slip(k)%x1*scale, ' to', &
+            write (u, fmt) 'slip     from', slip(k)%x1*scale, ' to', &
                 slip(k)%x2*scale, trim(merge(' (f = 0: all contact slips)', &
                                               '                           ', &
                                                   m%interface%f == 0.0_dp))

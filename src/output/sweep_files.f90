@@ -2,12 +2,12 @@
 !! solved cases; a shard of a job array writes its rows to a shard summary.
 module sweep_files
     use kinds, only: dp
-    use errors, only: error_t, EXIT_OK
+    use errors, only: error_t, new_error, EXIT_OK, EXIT_INPUT
     use model, only: model_t
     use summary_table, only: entry_keys
     use report_writer, only: write_sweep_script
     use atomic_files, only: open_temporary, commit_file
-    use output_paths, only: remove_output, remove_shard_summaries
+    use output_paths, only: remove_output, remove_shard_summaries, remove_sweep_outputs
     use case_files, only: case_result_t, render_png
     implicit none
     private
@@ -29,8 +29,21 @@ contains
         integer, intent(in) :: shard_index, shard_count  !! this shard of how many (1 of 1)
         type(error_t), allocatable, intent(out) :: err  !! a file could not be written
         character(len=40) :: shard
+        integer :: n_unwritten
+        shard = ''
+        if (shard_count > 1) write (shard, '(a,i0,a,i0)') '.shard-', shard_index, '-of-', &
+            shard_count
+        n_unwritten = count(selected .and. results%status == EXIT_INPUT)
+        if (n_unwritten > 0) then
+            ! a case could not write its files (a full disk): a summary would cover part of
+            ! the sweep, and one of an earlier run would not match it
+            call remove_sweep_outputs(out_dir, stem, trim(shard))
+            write (shard, '(i0)') n_unwritten
+            call new_error(err, EXIT_INPUT, 'no sweep summary written: '//trim(shard)// &
+                           ' case(s) could not write their files')
+            return
+        end if
         if (shard_count > 1) then
-            write (shard, '(a,i0,a,i0)') '.shard-', shard_index, '-of-', shard_count
             ! the summaries of an earlier split into another number of shards are stale
             call remove_shard_summaries(out_dir, stem, shard_count)
             call write_summary_csv(out_dir//'/'//stem//'_summary'//trim(shard)//'.csv', cases(1), &

@@ -17,7 +17,7 @@ module case_quality
     use contact_solver, only: solution_t
     use solved_case, only: case_t, solve_case, finish_case, failed_case
     use flexibility_cache, only: flexibility_cache_t
-    use plausibility, only: warning_length, settlement_warnings
+    use plausibility, only: warning_length, settlement_warnings, tension_warnings
     use error_estimate, only: estimate_errors
     use adaptive_solve, only: adaptation_t, solve_adaptive
     use admissible_refinement, only: refine_until_admissible, require_admissible
@@ -51,7 +51,10 @@ contains
         if (.not. allocated(err)) call require_admissible(c%summary, err)
         if (allocated(err)) return
         warnings = [character(len=warning_length) :: warnings, &
-                    settlement_warnings(c%model, c%summary%w_max%value)]
+                    settlement_warnings(c%model, c%summary%w_max%value), &
+                    tension_warnings(c%model, c%summary%n_tension_flags, &
+                                     c%summary%n_tension_lifted, c%stations%n, &
+                                     c%stations%most_tensile, c%stations%tension_tol)]
         if (adaptation%adapted) then
             call take_adapted_estimates(adaptation, c, warnings)
             return

@@ -72,6 +72,7 @@ module design_summary
         real(dp) :: utilisation = -1.0_dp             !! H/(f V); -1 if f = 0
         integer :: linear_solves = 0
         integer :: n_tension_flags = 0, n_overlap_flags = 0
+        integer :: n_tension_lifted = 0               !! tension flags at lifted-off stations
         real(dp) :: equilibrium = 0.0_dp              !! max relative reaction error
         real(dp) :: admissibility = 0.0_dp            !! max(|Sigma_x| - f Sigma_z), nondim
         real(dp) :: admissibility_tol = 0.0_dp
@@ -281,6 +282,8 @@ contains
         if (m%interface%f > 0.0_dp) s%utilisation = abs(sum(m%loads%fx))/(m%interface%f*v)
         s%linear_solves = sol%n_solves
         s%n_tension_flags = count(iand(tab%flag, FLAG_TENSION) /= 0)
+        s%n_tension_lifted = count(iand(tab%flag, FLAG_TENSION) /= 0 .and. &
+                                   tab%state == STATE_LIFTOFF)
         s%n_overlap_flags = count(iand(tab%flag, FLAG_OVERLAP) /= 0)
         scale = v*[1.0_dp, 1.0_dp, m%structure%length]
         s%equilibrium = maxval(abs(sol%reaction - sol%applied)/scale)
