@@ -214,7 +214,7 @@ contains
         real(dp), allocatable :: column_loc(:, :, :, :, :)
         logical, allocatable :: shift_ok(:)
         logical :: in_order
-        integer :: e2, n_threads, thread, n_colours, colour, first, last, step, blas_count
+        integer :: e2, n_threads, thread, n_colours, colour, first, last, step
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         allocate (t_mat(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
@@ -277,23 +277,33 @@ contains
             return
         end do threads
         if (use_blocks) then
-            ! dgemm on one BLAS thread: OpenBLAS's threaded kernels sum in an order that depends
-            ! on the thread count, and T must not depend on it (found by review: T changed with
-            ! OPENBLAS_NUM_THREADS). The program's driver runs every case's BLAS on one thread
-            ! already; this guard is for direct callers (tests, examples), which call it
-            ! outside any parallel region, so the count is never touched concurrently.
-            blas_count = blas_thread_count()
-            if (blas_count > 1) call set_blas_threads(1)
-            call add_blocks(kernel, bx, cheb, tree, works(1), t_mat, err)
-            if (blas_count > 1) call set_blas_threads(blas_count)
-            if (allocated(err)) then
-                call add_context(err, 'half-space operator, interpolated blocks')
-                return
-            end if
+            call add_blocks_on_one_thread(kernel, bx, cheb, tree, works(1), t_mat, err)
+            if (allocated(err)) return
         end if
         call add_transpose(t_mat)
         if (present(n_kernel)) n_kernel = sum(works%n_kernel)
     end subroutine assemble_split_kernel
+
+    !> add_blocks with dgemm on one BLAS thread: OpenBLAS's threaded kernels sum in an order
+    !! that depends on the thread count, and T must not depend on it (T changed with
+    !! OPENBLAS_NUM_THREADS otherwise). The program's driver runs every case's BLAS on one
+    !! thread already; this guard is for direct callers (tests, examples), which call it
+    !! outside any parallel region, so the count is never touched concurrently.
+    subroutine add_blocks_on_one_thread(kernel, bx, cheb, tree, work, t_mat, err)
+        class(split_kernel_t), intent(in) :: kernel       !! the half-space kernel
+        type(basis_t), intent(in) :: bx                   !! basis of sigma_x
+        type(chebyshev_t), intent(in) :: cheb             !! the interpolation rule
+        type(cluster_tree_t), intent(inout) :: tree       !! the blocks
+        type(work_t), intent(inout) :: work               !! one thread's work
+        real(dp), intent(inout) :: t_mat(:, :)            !! T, blocks added
+        type(error_t), allocatable, intent(out) :: err    !! an interpolated block failed
+        integer :: blas_count
+        blas_count = blas_thread_count()
+        if (blas_count > 1) call set_blas_threads(1)
+        call add_blocks(kernel, bx, cheb, tree, work, t_mat, err)
+        if (blas_count > 1) call set_blas_threads(blas_count)
+        if (allocated(err)) call add_context(err, 'half-space operator, interpolated blocks')
+    end subroutine add_blocks_on_one_thread
 
     !> Work of one thread (its GL tables already copied: shared_gauss_tables): the numbering and
     !! polynomials of every element, the far-rule limits and the element moments.
