@@ -988,17 +988,25 @@ contains
         end if
         if (word == 'MOMENT') then
             call field_error(st, cd, 1, 'an axisymmetric plate cannot carry an overturning '// &
-                             'moment (MOMENT is a beam load)')
+                             'moment (MOMENT is a beam load): '//raft_not_modelled())
         else if (word /= 'RADIAL' .and. ld%fx /= 0.0_dp) then
             call field_error(st, cd, 3, 'an axisymmetric plate cannot carry a horizontal '// &
-                'force: LOAD F_x must be blank or 0, got '//field_value(cd, 3)// &
-                ' (a radial top traction over an annulus is LOAD RADIAL)')
+                'force: LOAD F_x must be blank or 0, got '//field_value(cd, 3)//'; '// &
+                raft_not_modelled())
         end if
         if (word == 'POINT' .and. ld%x1 /= 0.0_dp) call field_error(st, cd, 4, 'a POINT load '// &
             'on the plate acts at the axis only: LOAD x1 must be blank or 0, got '// &
             field_value(cd, 4)//' (a load on the circle r = x1 is LOAD RING)')
         if (word == 'RADIAL') ld%fz = 0.0_dp
     end subroutine check_load_on_model
+
+    !> What the refusal of an overturning moment or a horizontal force on the plate says: no
+    !! card models it (a RADIAL traction has zero resultant, a square "beam" is a strip).
+    pure function raft_not_modelled() result(text)
+        character(len=:), allocatable :: text
+        text = 'a circular raft under an overturning moment or a horizontal force is not '// &
+               'modelled yet (the raft is axisymmetric, and no other card gives that load)'
+    end function raft_not_modelled
 
     !> LOAD PRESSURE gives intensities; the model keeps a PATCH of the same totals: q (x2 - x1)
     !! on the beam (force per length), q pi (x2^2 - x1^2) on the plate (force per area).
