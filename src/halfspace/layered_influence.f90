@@ -77,7 +77,7 @@ contains
     end subroutine assemble_layered_flexibility
 
     !> T_corr = T - T_hs(top layer) (module header).
-    subroutine layered_correction(bx, bz, beam, width, ground, t_corr, err, refine)
+    subroutine layered_correction(bx, bz, beam, width, ground, t_corr, err, refine, n_nodes)
         type(basis_t), intent(in) :: bx, bz
         logical, intent(in) :: beam
         real(dp), intent(in) :: width
@@ -86,9 +86,12 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), intent(in), optional :: refine   !! accuracy studies: panels and element
                                                    !! rules refine times finer (default 1)
+        integer, intent(out), optional :: n_nodes  !! wavenumber nodes of the outer rule
         real(dp) :: factor
+        integer :: nodes
         factor = 1.0_dp
         if (present(refine)) factor = max(1.0_dp, refine)
+        nodes = 0
         call check_problem(bx, bz, beam, width, ground, err)
         if (allocated(err)) then
             call add_context(err, 'layered ground')
@@ -96,10 +99,11 @@ contains
         end if
         allocate (t_corr(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
         if (beam) then
-            call beam_correction(bx, bz, width, ground, factor, t_corr, err)
+            call beam_correction(bx, bz, width, ground, factor, t_corr, nodes, err)
         else
-            call plate_correction(bx, bz, ground, factor, t_corr, err)
+            call plate_correction(bx, bz, ground, factor, t_corr, nodes, err)
         end if
+        if (present(n_nodes)) n_nodes = nodes
         if (allocated(err)) then
             call add_context(err, 'layered ground')
             return
@@ -133,11 +137,12 @@ contains
     end subroutine check_problem
 
     !> Plate: Hankel transforms and the three blocks (module header).
-    subroutine plate_correction(bx, bz, ground, refine, t_corr, err)
+    subroutine plate_correction(bx, bz, ground, refine, t_corr, n_nodes, err)
         type(basis_t), intent(in) :: bx, bz
         type(layered_ground_t), intent(in) :: ground
         real(dp), intent(in) :: refine
         real(dp), intent(inout) :: t_corr(:, :)
+        integer, intent(out) :: n_nodes
         type(error_t), allocatable, intent(out) :: err
         type(wavenumber_rule_t) :: rule
         real(dp), allocatable :: phi(:, :), hx(:, :), hz(:, :)
@@ -151,6 +156,7 @@ contains
         call compliance_correction(ground, rule%node, phi)
         call drop_tail(ground, phi, rule)
         n = size(rule%node)
+        n_nodes = n
         call hankel_transforms(bx, 1, rule%node, refine, hx)
         call hankel_transforms(bz, 0, rule%node, refine, hz)
         nx = bx%n_dof
@@ -161,12 +167,13 @@ contains
     end subroutine plate_correction
 
     !> Beam: inner integrals K_zz, K_xx, K_q per wavenumber, Fourier transforms, the blocks.
-    subroutine beam_correction(bx, bz, width, ground, refine, t_corr, err)
+    subroutine beam_correction(bx, bz, width, ground, refine, t_corr, n_nodes, err)
         type(basis_t), intent(in) :: bx, bz
         real(dp), intent(in) :: width
         type(layered_ground_t), intent(in) :: ground
         real(dp), intent(in) :: refine
         real(dp), intent(inout) :: t_corr(:, :)
+        integer, intent(out) :: n_nodes
         type(error_t), allocatable, intent(out) :: err
         type(wavenumber_rule_t) :: rule
         real(dp), allocatable :: kernel(:, :), cx(:, :), sx(:, :), cz(:, :), sz(:, :), w(:)
@@ -176,6 +183,7 @@ contains
         omega = length + 2.0_dp*ground%thickness(1)
         call outer_rule(ground, refine*omega, .true., rule, err)
         if (allocated(err)) return
+        n_nodes = size(rule%node)
         call strip_kernels(ground, width, refine, rule%node, kernel, err)
         if (allocated(err)) return
         call fourier_transforms(bx, rule%node, refine, cx, sx)
