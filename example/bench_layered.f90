@@ -167,7 +167,8 @@ contains
     subroutine write_script()
         integer :: gp
         open (newunit=gp, file='output/bench/layered.gp', status='replace', action='write')
-        write (gp, '(a)') '# bench_layered: run from the project folder: gnuplot output/bench/layered.gp'
+        write (gp, '(a)') '# bench_layered: run from the project folder: '// &
+            'gnuplot output/bench/layered.gp'
         write (gp, '(a)') "set terminal pngcairo size 1400,600 font 'Sans,11' noenhanced"
         write (gp, '(a)') "set output 'output/bench/layered.png'"
         write (gp, '(a)') "set multiplot layout 1,2 title 'fricon: time to build T on layered "// &

@@ -27,12 +27,13 @@ module test_layered_ground
     use shape_functions, only: basis_t, new_basis, eval_basis, max_local, INTERP_P1, &
                                INTERP_P2, INTERP_S2
     use lapack_interfaces, only: dpotrf, dgesv
-    use halfspace_plate, only: assemble_plate_flexibility
-    use halfspace_beam, only: assemble_beam_flexibility
+    use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement
+    use halfspace_beam, only: assemble_beam_flexibility, beam_surface_displacement
     use layered_compliance, only: layered_ground_t, new_layered_ground, surface_compliance, &
                                   compliance_correction, BASE_ROUGH, BASE_SMOOTH, &
                                   BASE_HALFSPACE
-    use layered_influence, only: assemble_layered_flexibility, layered_correction
+    use layered_influence, only: assemble_layered_flexibility, layered_correction, &
+                                 layered_surface_displacement
     implicit none
     private
     public :: collect_layered_ground
@@ -54,6 +55,8 @@ contains
                  new_unittest('quadrature_converged', test_quadrature_converged), &
                  new_unittest('symmetric_positive_definite', test_spd), &
                  new_unittest('linear_modulus_sublayers', test_linear_modulus), &
+                 new_unittest('displacements_consistent_with_t', test_displacement_vs_t), &
+                 new_unittest('no_far_field_over_rock', test_no_far_field), &
                  new_unittest('bad_grounds_refused', test_bad_grounds)]
     end subroutine collect_layered_ground
 
@@ -636,6 +639,101 @@ contains
         call check(err, maxval(abs(c - c_fine)/abs(c_fine)) < 1.0e-3_dp, &
                    'sublayered linear modulus off its refined value')
     end subroutine test_linear_modulus
+
+    !> The displacement correction u - u_hs(top) at points, projected on the basis
+    !! (int g_a du W dx by 16-point Gauss per element: du is analytic), equals T_corr r: the
+    !! same integrals taken the other way round (kernel at points vs transforms of both
+    !! functions), to 1e-11 of max |T_corr r|; plate and beam, tractions in both fields.
+    subroutine test_displacement_vs_t(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(layered_ground_t) :: ground
+        type(basis_t) :: bx, bz
+        real(dp), allocatable :: c(:, :), r(:), x(:), wq(:), u_h(:), u_z(:), v_h(:), v_z(:)
+        real(dp), allocatable :: proj(:), t_r(:)
+        real(dp) :: xi(16), w(16), val(max_local), der(max_local), xq, weight
+        integer :: structure, nx, e, q, i, k, idx(max_local)
+        character(len=40) :: what
+        call new_layered_ground(ground, [0.4_dp, 1.0_dp], [1.0_dp, 5.0_dp], [1.0_dp, 5.0_dp], &
+                                [0.3_dp, 0.45_dp], BASE_HALFSPACE, 20.0_dp, 0.2_dp, err)
+        if (allocated(err)) return
+        call gauss_legendre(16, xi, w)
+        structures: do structure = 1, 2
+            if (structure == 1) then
+                call make_bases(0.0_dp, 1.0_dp, 6, 'EDGES', INTERP_P2, INTERP_P1, bx, bz, err)
+            else
+                call make_bases(-1.0_dp, 1.0_dp, 6, 'EDGES', INTERP_P1, INTERP_S2, bx, bz, err)
+            end if
+            if (allocated(err)) return
+            nx = bx%n_dof
+            r = [(cos(1.3_dp*real(i, dp)) + 0.2_dp, i = 1, nx + bz%n_dof)]
+            call layered_correction(bx, bz, structure == 2, 0.3_dp, ground, c, err)
+            if (allocated(err)) return
+            t_r = matmul(c, r)
+            allocate (x(16*bx%ne), wq(16*bx%ne))
+            do e = 1, bx%ne
+                x(16*(e - 1) + 1:16*e) = bx%x(e - 1) + 0.5_dp*(xi + 1.0_dp)*(bx%x(e) - bx%x(e - 1))
+                wq(16*(e - 1) + 1:16*e) = 0.5_dp*w*(bx%x(e) - bx%x(e - 1))
+            end do
+            allocate (u_h(size(x)), u_z(size(x)), v_h(size(x)), v_z(size(x)))
+            call layered_surface_displacement(bx, bz, structure == 2, 0.3_dp, ground, r(1:nx), &
+                                              r(nx + 1:), x, u_h, u_z, err)
+            if (allocated(err)) return
+            if (structure == 1) then
+                call plate_surface_displacement(bx, bz, r(1:nx), r(nx + 1:), &
+                     ground%shear_modulus(1), ground%poisson(1), x, v_h, v_z, err)
+            else
+                call beam_surface_displacement(bx, bz, r(1:nx), r(nx + 1:), &
+                     ground%shear_modulus(1), ground%poisson(1), 0.3_dp, x, v_h, v_z, err)
+            end if
+            if (allocated(err)) return
+            u_h = u_h - v_h
+            u_z = u_z - v_z
+            allocate (proj(size(r)), source=0.0_dp)
+            do e = 1, bx%ne
+                do q = 1, 16
+                    k = 16*(e - 1) + q
+                    weight = wq(k)
+                    if (structure == 1) weight = weight*2.0_dp*pi*x(k)
+                    call eval_basis(bx, e, xi(q), idx, val, der, xq)
+                    do i = 1, bx%n_local
+                        proj(idx(i)) = proj(idx(i)) + weight*val(i)*u_h(k)
+                    end do
+                    call eval_basis(bz, e, xi(q), idx, val, der, xq)
+                    do i = 1, bz%n_local
+                        proj(nx + idx(i)) = proj(nx + idx(i)) + weight*val(i)*u_z(k)
+                    end do
+                end do
+            end do
+            write (what, '("structure ",i0)') structure
+            call check_close(err, maxval(abs(proj - t_r))/maxval(abs(t_r)), 0.0_dp, 0.0_dp, &
+                             1.0e-11_dp, trim(what))
+            if (allocated(err)) return
+            deallocate (x, wq, u_h, u_z, v_h, v_z, proj)
+        end do structures
+    end subroutine test_displacement_vs_t
+
+    !> A uniform pressure on a plate (radius a) over one layer H = a bonded to rock: the
+    !! layered compliance is analytic at s = 0 (no 1/s), so the settlement outside decays
+    !! exponentially, while the half-space's decays like 1/r: at r = 10 a below 1e-4 of w(0)
+    !! (the half-space: w(r)/w(0) -> a/(2r) = 0.05, the far field P (1-nu^2)/(pi E r) of the
+    !! load P = pi a^2 p over w(0) = 2 (1-nu^2) p a/E, Johnson 1985 ch. 3).
+    subroutine test_no_far_field(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(layered_ground_t) :: ground
+        type(basis_t) :: bx, bz
+        real(dp) :: u_r(2), u_z(2)
+        integer :: i
+        call one_layer(1.0_dp, 1.0_dp, 0.3_dp, BASE_ROUGH, 0.0_dp, 0.0_dp, ground, err)
+        if (allocated(err)) return
+        call make_bases(0.0_dp, 1.0_dp, 8, 'UNIFORM', INTERP_P1, INTERP_P1, bx, bz, err)
+        if (allocated(err)) return
+        call layered_surface_displacement(bx, bz, .false., 0.0_dp, ground, &
+             [(0.0_dp, i = 1, bx%n_dof)], [(1.0_dp, i = 1, bz%n_dof)], [0.0_dp, 10.0_dp], &
+             u_r, u_z, err)
+        if (allocated(err)) return
+        call check(err, u_z(1) > 0.0_dp .and. abs(u_z(2)) < 1.0e-4_dp*u_z(1), &
+                   'settlement far outside a plate on a layer over rock not ~0')
+    end subroutine test_no_far_field
 
     !> Bad grounds are refused with a reason: zero modulus at the surface, nu > 0.5, a beam
     !! over a SMOOTH base, a top layer far too thin for the structure.

@@ -25,8 +25,10 @@
 !! growing exponential: nothing overflows) and re-orthonormalised; a layer with x > x_thick
 !! (25) is a half-space to double precision (its reflections carry e^(-2x) x^2 < 1e-19) and
 !! replaces Y by its own decaying subspace. At the surface [S_x, S_z] = -[Q, P], so
-!! s [C_hh, -C_zh; -C_zh, C_zz] = -Y_u Y_t^(-1)/G_1 (Y_u, Y_t the rows of U and of S). Thin layers (x -> 0) step by exp(-x A) = I - x A + ..., exactly;
-!! there is no mode matrix to invert, so nothing cancels as x -> 0. SH likewise with
+!! s [C_hh, -C_zh; -C_zh, C_zz] = -Y_u Y_t^(-1)/G_1 (Y_u, Y_t the rows of U and of S).
+!! Thin layers (x -> 0) step by exp(-x A) = I - x A + ..., exactly: there is no mode matrix
+!! to invert, so nothing cancels as x -> 0. Thick ones (x >= 1) split off their decaying
+!! states (split_step). SH likewise with
 !! y = [U_y, S_y/(G_1 s)], A = [0, 1/g; g, 0].
 !!
 !! The correction phi = s (C - C_hs(top layer)) is finite as s -> 0 for the ROUGH and

@@ -23,6 +23,12 @@
 !! y = 0, k -> 0), up to y = dy_max/2, and plainly beyond; the outer one has a logarithmic
 !! singularity at k = 0 (the far field of phi(0)/s), taken by the product rule of
 !! layered_wavenumbers on [0, k_0].
+!! Surface displacements at points x (layered_surface_displacement) from the same integrals
+!! with the field function replaced by its kernel: plate u_z(r) = int [phi_zz P - phi_zh Q]
+!! J0(xi r) dxi, u_r(r) = int [-phi_zh P + phi_hh Q] J1(xi r) dxi (P, Q the Hankel transforms
+!! of sigma_z, sigma_x); beam u_z = (1/pi) int [K_zz (c_z cos kx + s_z sin kx) + K_q (c_x sin kx
+!! - s_x cos kx)] dk, u_x = (1/pi) int [K_xx (c_x cos kx + s_x sin kx) + K_q (s_z cos kx -
+!! c_z sin kx)] dk (c, s the transforms of sigma).
 !! Each is a sum over wavenumber nodes of rank-one terms, assembled as products
 !! B^T diag(w phi) B by dgemm, then symmetrised. The transforms of the basis functions come
 !! from Gauss–Legendre rules per element with enough points for the highest wavenumber
@@ -33,8 +39,8 @@ module layered_influence
     use quadrature, only: gauss_legendre
     use shape_functions, only: basis_t, eval_basis, max_local
     use lapack_interfaces, only: dgemm
-    use halfspace_beam, only: assemble_beam_flexibility
-    use halfspace_plate, only: assemble_plate_flexibility
+    use halfspace_beam, only: assemble_beam_flexibility, beam_surface_displacement
+    use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement
     use layered_compliance, only: layered_ground_t, compliance_correction, total_depth, &
                                   halfspace_phi, BASE_SMOOTH
     use layered_wavenumbers, only: wavenumber_rule_t, graded_breaks, panel_rule, &
@@ -42,7 +48,7 @@ module layered_influence
     implicit none
     private
 
-    public :: assemble_layered_flexibility, layered_correction
+    public :: assemble_layered_flexibility, layered_correction, layered_surface_displacement
 
     real(dp), parameter :: x_end = 25.0_dp     !! s h_1 beyond which phi is round-off
                                                !! (layered_compliance x_thick)
@@ -198,6 +204,115 @@ contains
         call add_products(t_corr, nx + 1, 1, cz, -w*kernel(:, 3), sx)
         t_corr(1:nx, nx + 1:) = transpose(t_corr(nx + 1:, 1:nx))
     end subroutine beam_correction
+
+    !> Surface displacements of the layered ground at x_eval under sigma_x = sum rx_b g_b,
+    !! sigma_z = sum rz_b g_b: the top layer's half-space (halfspace_beam, halfspace_plate)
+    !! plus the correction (module header).
+    subroutine layered_surface_displacement(bx, bz, beam, width, ground, rx, rz, x_eval, u_h, &
+                                            u_z, err)
+        type(basis_t), intent(in) :: bx, bz               !! traction bases, one mesh
+        logical, intent(in) :: beam                       !! .true. beam, .false. plate
+        real(dp), intent(in) :: width                     !! beam width b (beam)
+        type(layered_ground_t), intent(in) :: ground
+        real(dp), intent(in) :: rx(:), rz(:)              !! traction coefficients
+        real(dp), intent(in) :: x_eval(:)                 !! points (beam x, plate r >= 0)
+        real(dp), intent(out) :: u_h(:)                   !! u_x (beam) or u_r (plate)
+        real(dp), intent(out) :: u_z(:)                   !! settlement, down positive
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: du_h(:), du_z(:)
+        call check_problem(bx, bz, beam, width, ground, err)
+        if (allocated(err)) then
+            call add_context(err, 'layered ground')
+            return
+        end if
+        if (beam) then
+            call beam_surface_displacement(bx, bz, rx, rz, ground%shear_modulus(1), &
+                 ground%poisson(1), width, x_eval, u_h, u_z, err)
+            if (allocated(err)) return
+            call beam_displacement_correction(bx, bz, width, ground, rx, rz, x_eval, du_h, &
+                                              du_z, err)
+        else
+            call plate_surface_displacement(bx, bz, rx, rz, ground%shear_modulus(1), &
+                 ground%poisson(1), x_eval, u_h, u_z, err)
+            if (allocated(err)) return
+            call plate_displacement_correction(bx, bz, ground, rx, rz, x_eval, du_h, du_z, err)
+        end if
+        if (allocated(err)) then
+            call add_context(err, 'layered ground')
+            return
+        end if
+        u_h = u_h + du_h
+        u_z = u_z + du_z
+    end subroutine layered_surface_displacement
+
+    !> The plate's displacement correction (module header).
+    subroutine plate_displacement_correction(bx, bz, ground, rx, rz, x_eval, du_r, du_z, err)
+        type(basis_t), intent(in) :: bx, bz
+        type(layered_ground_t), intent(in) :: ground
+        real(dp), intent(in) :: rx(:), rz(:), x_eval(:)
+        real(dp), allocatable, intent(out) :: du_r(:), du_z(:)
+        type(error_t), allocatable, intent(out) :: err
+        type(wavenumber_rule_t) :: rule
+        real(dp), allocatable :: phi(:, :), hx(:, :), hz(:, :), p(:), q(:), a_z(:), a_r(:)
+        real(dp) :: omega
+        integer :: i, n
+        omega = bx%x(bx%ne) + maxval(abs(x_eval)) + 2.0_dp*ground%thickness(1)
+        call outer_rule(ground, omega, .false., rule, err)
+        if (allocated(err)) return
+        allocate (phi(size(rule%node), 4))
+        call compliance_correction(ground, rule%node, phi)
+        call drop_tail(ground, phi, rule)
+        n = size(rule%node)
+        call hankel_transforms(bx, 1, rule%node, 1.0_dp, hx)
+        call hankel_transforms(bz, 0, rule%node, 1.0_dp, hz)
+        q = matmul(hx, rx)
+        p = matmul(hz, rz)
+        a_z = rule%weight*(phi(1:n, 1)*p - phi(1:n, 2)*q)
+        a_r = rule%weight*(-phi(1:n, 2)*p + phi(1:n, 3)*q)
+        allocate (du_r(size(x_eval)), du_z(size(x_eval)))
+        points: do i = 1, size(x_eval)
+            du_z(i) = sum(a_z*bessel_j0(rule%node*x_eval(i)))
+            du_r(i) = sum(a_r*bessel_j1(rule%node*x_eval(i)))
+        end do points
+    end subroutine plate_displacement_correction
+
+    !> The beam's displacement correction (module header).
+    subroutine beam_displacement_correction(bx, bz, width, ground, rx, rz, x_eval, du_x, du_z, &
+                                            err)
+        type(basis_t), intent(in) :: bx, bz
+        real(dp), intent(in) :: width
+        type(layered_ground_t), intent(in) :: ground
+        real(dp), intent(in) :: rx(:), rz(:), x_eval(:)
+        real(dp), allocatable, intent(out) :: du_x(:), du_z(:)
+        type(error_t), allocatable, intent(out) :: err
+        type(wavenumber_rule_t) :: rule
+        real(dp), allocatable :: kernel(:, :), cx(:, :), sx(:, :), cz(:, :), sz(:, :)
+        real(dp), allocatable :: w(:), c_x(:), s_x(:), c_z(:), s_z(:), cosine(:), sine(:)
+        real(dp) :: omega
+        integer :: i
+        omega = 0.5_dp*(bx%x(bx%ne) - bx%x(0)) + maxval(abs(x_eval)) + &
+                2.0_dp*ground%thickness(1)
+        call outer_rule(ground, omega, .true., rule, err)
+        if (allocated(err)) return
+        call strip_kernels(ground, width, 1.0_dp, rule%node, kernel, err)
+        if (allocated(err)) return
+        call fourier_transforms(bx, rule%node, 1.0_dp, cx, sx)
+        call fourier_transforms(bz, rule%node, 1.0_dp, cz, sz)
+        w = rule%weight/pi
+        c_x = matmul(cx, rx)
+        s_x = matmul(sx, rx)
+        c_z = matmul(cz, rz)
+        s_z = matmul(sz, rz)
+        allocate (du_x(size(x_eval)), du_z(size(x_eval)))
+        points: do i = 1, size(x_eval)
+            cosine = cos(rule%node*x_eval(i))
+            sine = sin(rule%node*x_eval(i))
+            du_z(i) = sum(w*(kernel(:, 1)*(c_z*cosine + s_z*sine) + &
+                             kernel(:, 3)*(c_x*sine - s_x*cosine)))
+            du_x(i) = sum(w*(kernel(:, 2)*(c_x*cosine + s_x*sine) + &
+                             kernel(:, 3)*(s_z*cosine - c_z*sine)))
+        end do points
+    end subroutine beam_displacement_correction
 
     !> The outer wavenumber rule (layered_wavenumbers): panels up to x_end/h_1, the first
     !! [0, k_0] by the logarithmic product rule for the beam (log_first).
