@@ -443,32 +443,41 @@ contains
         call check_close(err, w(1), 0.5_dp, 1.0e-2_dp, 0.0_dp, 'Gibson w(0) = q/(2m)')
     end subroutine test_gibson_plate
 
-    !> Rigid frictionless punch (radius a = 1) on a layer H = a (nu = 0.3) on a rough base:
-    !! the load ratio P_layer/P_hs at equal settlement from T_zz (P = f^T T_zz^(-1) f, same
-    !! EDGES mesh for both, so that the edge singularity's discretisation error cancels) vs
-    !! the Nystrom solution of theta(t) + (1/pi) int_0^1 [k(t-u) + k(t+u)] theta(u) du = 1,
+    !> Rigid frictionless punch (radius a = 1) on a layer H = a on a rough base, nu = 0.3 and
+    !! 0.5: the load ratio P_layer/P_hs at equal settlement from T_zz (P = f^T T_zz^(-1) f,
+    !! same EDGES mesh for both, so that the edge singularity's discretisation error cancels;
+    !! the ratio moves by 4e-5 from N_e = 48 to 96) vs the Nystrom solution of
+    !! theta(t) + (1/pi) int_0^1 [k(t-u) + k(t+u)] theta(u) du = 1,
     !! k(x) = int_0^oo (F(s) - 1) cos(s x) ds, F - 1 = G phi_zz/(1-nu), P/P_hs = int_0^1 theta
     !! (Sneddon's representation of the pressure; half-space: theta = 1, P = 4 G a w/(1-nu)).
+    !! For nu = 0.5 the ratio is 3.62, 1.59 times the textbook fit 1 + 1.28 a/H.
     subroutine test_punch_nystrom(err)
         type(error_t), allocatable, intent(out) :: err
+        real(dp), parameter :: nus(2) = [0.3_dp, 0.5_dp]
         real(dp) :: ratio_nystrom, ratio_t
-        call punch_nystrom(ratio_nystrom, err)
-        if (allocated(err)) return
-        call punch_galerkin(ratio_t, err)
-        if (allocated(err)) return
-        call check_close(err, ratio_t, ratio_nystrom, 2.0e-3_dp, 0.0_dp, 'P_layer/P_hs')
+        integer :: i
+        character(len=40) :: what
+        poisson: do i = 1, 2
+            call punch_nystrom(nus(i), ratio_nystrom, err)
+            if (allocated(err)) return
+            call punch_galerkin(nus(i), ratio_t, err)
+            if (allocated(err)) return
+            write (what, '("P_layer/P_hs, nu = ",f3.1)') nus(i)
+            call check_close(err, ratio_t, ratio_nystrom, 2.0e-4_dp, 0.0_dp, trim(what))
+            if (allocated(err)) return
+        end do poisson
     end subroutine test_punch_nystrom
 
-    subroutine punch_nystrom(ratio, err)
+    subroutine punch_nystrom(nu, ratio, err)
+        real(dp), intent(in) :: nu
         real(dp), intent(out) :: ratio
         type(error_t), allocatable, intent(out) :: err
         integer, parameter :: n = 40, n_panels = 300, n_gl = 20
         type(layered_ground_t) :: ground
-        real(dp) :: t(n), wt(n), a(n, n), rhs(n, 1), xi(n_gl), w_gl(n_gl), g, nu
+        real(dp) :: t(n), wt(n), a(n, n), rhs(n, 1), xi(n_gl), w_gl(n_gl), g
         real(dp), allocatable :: s(:), ws(:), phi(:, :)
         integer :: i, j, p, ipiv(n), info
-        nu = 0.3_dp
-        g = 1.0_dp/(2.0_dp*1.3_dp)
+        g = 1.0_dp/(2.0_dp*(1.0_dp + nu))
         call one_layer(1.0_dp, 1.0_dp, nu, BASE_ROUGH, 0.0_dp, 0.0_dp, ground, err)
         if (allocated(err)) return
         ! s in [0, 40] (phi ~ exp(-2 s)), panels of 40/300 with 20 points
@@ -496,7 +505,8 @@ contains
         ratio = sum(wt*rhs(:, 1))
     end subroutine punch_nystrom
 
-    subroutine punch_galerkin(ratio, err)
+    subroutine punch_galerkin(nu, ratio, err)
+        real(dp), intent(in) :: nu
         real(dp), intent(out) :: ratio
         type(error_t), allocatable, intent(out) :: err
         type(layered_ground_t) :: ground
@@ -506,11 +516,11 @@ contains
         integer :: nx
         call make_bases(0.0_dp, 1.0_dp, 48, 'EDGES', INTERP_P1, INTERP_P1, bx, bz, err)
         if (allocated(err)) return
-        call one_layer(1.0_dp, 1.0_dp, 0.3_dp, BASE_ROUGH, 0.0_dp, 0.0_dp, ground, err)
+        call one_layer(1.0_dp, 1.0_dp, nu, BASE_ROUGH, 0.0_dp, 0.0_dp, ground, err)
         if (allocated(err)) return
         call assemble_layered_flexibility(bx, bz, .false., 0.0_dp, ground, t, err)
         if (allocated(err)) return
-        call assemble_plate_flexibility(bx, bz, 1.0_dp/2.6_dp, 0.3_dp, t_hs, err)
+        call assemble_plate_flexibility(bx, bz, 1.0_dp/(2.0_dp*(1.0_dp + nu)), nu, t_hs, err)
         if (allocated(err)) return
         nx = bx%n_dof
         call plate_mass(bz, f, mass)
