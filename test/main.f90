@@ -22,6 +22,7 @@ program tester
     use test_adaptive, only: collect_adaptive
     use test_nested_spaces, only: collect_nested_spaces
     use test_architecture, only: collect_architecture
+    use test_layered_ground, only: collect_layered_ground
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -29,7 +30,7 @@ program tester
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
-        'simplifications adaptive nested_spaces architecture '
+        'simplifications adaptive nested_spaces architecture layered_ground '
 
     want_suite = ''
     want_test = ''
@@ -67,6 +68,10 @@ program tester
     if (wanted('station_displacement')) then
         call collect_station_displacement(tests)
         call run_suite('station_displacement', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('layered_ground')) then
+        call collect_layered_ground(tests)
+        call run_suite('layered_ground', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('nested_spaces')) then
         call collect_nested_spaces(tests)
