@@ -72,13 +72,14 @@ contains
                 return
             end if
         end if
-        text = 'estimated error: the case re-solved on N_e/2 and N_e/4 elements (same grading '// &
-               'and interpolation); E = 1.25 |Q(N_e/2) - Q(N_e)| / (2^p - 1) with the observed '// &
-               'order p (at most the formal order: 1 on a uniform mesh with an edge in '// &
-               'contact), or (p*) 3 max(|Q(N_e/2) - Q(N_e)|, |Q(N_e/4) - Q(N_e/2)|/2) where '// &
-               'convergence is not yet regular; contact extent at least half an edge element. '// &
-               'An indication, not a bound (doc/OUTPUT.md): to trust a value, solve again on '// &
-               'twice the elements'
+        text = 'estimated error: the case re-solved on its mesh with every element cut in '// &
+               'two (Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - Q_f| '// &
+               '2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, in [1, 2] '// &
+               'and at most the formal order (1 on a uniform mesh with an edge in contact), '// &
+               'p* where p = 1 is assumed; contact extent at least half the element beyond '// &
+               'it. Where the refined case does not fit in memory: the coarse meshes N_e/2, '// &
+               'N_e/4 with Roache''s GCI. Measured: 0.5 to 5 times the true error for 92 % '// &
+               'of 1709 results (doc/OUTPUT.md)'
     end function error_method_text
 
     !> The report's lines on the adaptation.

@@ -4,8 +4,9 @@
 !!  * ADAPT card: adaptive refinement to a tolerance (adaptive_solve); the estimates are
 !!    those of the final cycle.
 !!  * otherwise the MESH card's mesh, refined by doubling while friction is not resolved
-!!    pointwise (admissible_refinement); then the estimate from the same case on N_e/2 and
-!!    N_e/4 elements (error_estimate), unless estimates are switched off.
+!!    pointwise (admissible_refinement); then the estimate from the same case on its mesh
+!!    with every element cut in two and with every other node removed (error_estimate),
+!!    unless estimates are switched off.
 !!
 !! Every refined or coarsened solve is a new case of the one pipeline (solved_case); the
 !! deck's model is never changed.
@@ -33,7 +34,7 @@ contains
     subroutine solve_to_quality(m, estimates, progress_unit, c, adaptation, warnings, err, &
                                 cache)
         type(model_t), intent(in) :: m                  !! the deck's model
-        logical, intent(in) :: estimates                !! estimate errors (two coarse solves)
+        logical, intent(in) :: estimates                !! estimate errors (two more solves)
         integer, intent(in) :: progress_unit            !! >= 0: each Newton step there
         type(case_t), intent(out) :: c                  !! the case solved
         type(adaptation_t), intent(out) :: adaptation   !! what ADAPT did (adapted false else)

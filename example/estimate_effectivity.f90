@@ -1,0 +1,411 @@
+!> What the error estimates are worth: effectivity (estimate / true error) of every estimated
+!! key result over a set of cases (beam and plate; lift-off, slip, full contact; patch,
+!! point and ring loads), each solved with P1, P2 and S2 on UNIFORM, EDGES and LOADS meshes of
+!! N_e = 20, 40 and 80 elements and estimated as the program estimates it (solve_case, then
+!! error_estimate::estimate_errors, without the refinement of friction: the mesh as given).
+!!
+!! The true value (subroutine reference) of each key result of each case comes from two
+!! fine-mesh families of its own: P1 and P2, both on LOADS meshes (a node at every load
+!! position and patch edge, graded towards the ends) of N_f/4, N_f/2 and N_f elements (N_f
+!! = 1280 for P1, 640 for P2); each is
+!! extrapolated (Richardson, its observed order when the three converge monotonically at
+!! 0.5 <= p <= 6, else no extrapolation and the spread of the three as its bar). The reference
+!! is the extrapolation with the smaller bar; its error bar is the larger of that bar and the
+!! distance between the two families' extrapolations. A result enters the table only where
+!! this bar is at most a fifth of its true error (the estimate is then judged against an error
+!! that is known to 20 %) and that error is above round-off (1e-10 of the value; a contact
+!! extent in full contact is exact).
+!!
+!! The cases are split into a tuning set (the first n_tuning) and a held-out set: the
+!! estimator was developed looking at the tuning set only; the table gives both.
+!!
+!! Usage: fpm run --profile release --example estimate_effectivity -- OUT.md [LABEL]
+!! The references are read from output/bench/estimate_references.txt if it exists (they do
+!! not depend on the estimator), else computed (about 30 s) and written there. The whole
+!! study with stored references takes about 5 s on one core.
+program estimate_effectivity
+    use kinds, only: dp
+    use errors, only: error_t
+    use start_up, only: start_program
+    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
+                     LOAD_RING, complete_model
+    use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
+    use summary_table, only: entry_t
+    use solved_case, only: case_t, solve_case
+    use error_estimate, only: estimate_errors, is_estimated
+    implicit none
+
+    integer, parameter :: n_cases = 10, n_tuning = 6
+    integer, parameter :: n_keys = 10
+    character(len=*), parameter :: keys(n_keys) = [character(len=32) :: 'settlement_max', &
+        'differential_settlement', 'contact_extent_t', 'moment_sagging', 'moment_hogging', &
+        'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim', &
+        'pressure_centre', 'shear_force_max']
+    integer, parameter :: ne_tested(3) = [20, 40, 80]
+    character(len=*), parameter :: gradings(3) = [character(len=8) :: 'UNIFORM', 'EDGES', &
+                                                  'LOADS']
+    integer, parameter :: interps(3) = [INTERP_P1, INTERP_P2, INTERP_S2]
+    character(len=*), parameter :: interp_names(3) = [character(len=2) :: 'P1', 'P2', 'S2']
+    integer, parameter :: ne_fine(2) = [1280, 640]   !! finest reference meshes (N_f), P1, P2
+    real(dp), parameter :: bar_fraction = 0.2_dp   !! reference bar <= this times the error
+    character(len=*), parameter :: ref_file = 'output/bench/estimate_references.txt'
+
+    real(dp) :: ref(n_keys, n_cases), bar(n_keys, n_cases)
+    logical :: has_ref(n_keys, n_cases)
+    character(len=256) :: out_file, label
+    real(dp), allocatable :: eff(:)
+    integer, allocatable :: group(:)        !! 1 tuning, 2 held out
+    character(len=200), allocatable :: rows(:)
+    integer :: u
+
+    out_file = 'output/bench/estimate_effectivity.md'
+    label = ''
+    if (command_argument_count() >= 1) call get_command_argument(1, out_file)
+    if (command_argument_count() >= 2) call get_command_argument(2, label)
+    call start_program()
+    call references(ref, bar, has_ref)
+    call measure_all(eff, group, rows)
+    open (newunit=u, file=trim(out_file), status='replace', action='write')
+    call write_table(u, trim(label), eff, group, rows)
+    close (u)
+    print '(a)', 'estimate_effectivity: '//trim(out_file)
+
+contains
+
+    !> Case i of the set (nondimensional: l or a = 1, F = 1); name: one line for the table.
+    subroutine case_model(i, m, name)
+        integer, intent(in) :: i
+        type(model_t), intent(out) :: m
+        character(len=*), intent(out) :: name
+        m%nondim = .true.
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = 0.05_dp
+        select case (i)
+        case (1)  ! soft beam, central point load with H: ends lift off, slip
+            call beam(m, 1.0e-3_dp, 0.6_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=0.1_dp, &
+                                                     x1=0.0_dp)])
+            name = 'beam rho 1e-3 f 0.6, point load H 0.1 (lift-off, slip)'
+        case (2)  ! stiff beam, uniform load: full contact, no friction
+            call beam(m, 1.0_dp, 0.0_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, &
+                                                  x2=0.5_dp)])
+            name = 'beam rho 1 f 0, uniform load (full contact)'
+        case (3)  ! thick beam, short patch with H
+            m%groups%zeta = 0.3_dp
+            call beam(m, 1.0e-2_dp, 0.3_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.2_dp, &
+                                                     x1=-0.05_dp, x2=0.05_dp)])
+            name = 'beam rho 1e-2 zeta 0.3 f 0.3, patch |x|<0.05 H 0.2'
+        case (4)  ! the work-precision plate: lift-off at the rim, slip
+            call plate(m, 1.0e-3_dp, 0.6_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, &
+                                                      x1=0.0_dp, x2=0.1_dp)])
+            name = 'plate rho 1e-3 f 0.6, disk r<0.1 (lift-off)'
+        case (5)  ! stiff thick plate, uniform load, full friction
+            m%groups%zeta = 0.3_dp
+            call plate(m, 1.0_dp, 1.0_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, &
+                                                   x2=1.0_dp)])
+            name = 'plate rho 1 zeta 0.3 f 1, uniform load (full contact)'
+        case (6)  ! plate under a ring
+            call plate(m, 1.0e-2_dp, 0.5_dp, [load_t(kind=LOAD_RING, fz=1.0_dp, x1=0.5_dp)])
+            name = 'plate rho 1e-2 f 0.5, ring r = 0.5'
+        case (7)  ! held out: very soft thick beam, point load
+            m%groups%zeta = 0.3_dp
+            call beam(m, 1.0e-4_dp, 0.3_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)])
+            name = 'beam rho 1e-4 zeta 0.3 f 0.3, point load'
+        case (8)  ! held out: eccentric patch with H
+            m%groups%beta = 0.1_dp
+            call beam(m, 0.1_dp, 0.5_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.3_dp, &
+                                                  x1=-0.3_dp, x2=0.1_dp)])
+            name = 'beam rho 0.1 f 0.5, patch -0.3<x<0.1 H 0.3'
+        case (9)  ! held out: the issue's thin plate
+            m%groups%zeta = 0.02_dp
+            call plate(m, 1.0e-4_dp, 0.6_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, &
+                                                      x1=0.0_dp, x2=0.1_dp)])
+            name = 'plate rho 1e-4 zeta 0.02 f 0.6, disk r<0.1'
+        case default  ! held out: half-radius disk
+            call plate(m, 0.1_dp, 0.3_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, &
+                                                   x2=0.5_dp)])
+            name = 'plate rho 0.1 f 0.3, disk r<0.5'
+        end select
+    end subroutine case_model
+
+    subroutine beam(m, rho, f, loads)
+        type(model_t), intent(inout) :: m
+        real(dp), intent(in) :: rho, f
+        type(load_t), intent(in) :: loads(:)
+        m%structure%kind = MODEL_BEAM
+        m%groups%rho = rho
+        m%interface%f = f
+        m%loads = loads
+    end subroutine beam
+
+    subroutine plate(m, rho, f, loads)
+        type(model_t), intent(inout) :: m
+        real(dp), intent(in) :: rho, f
+        type(load_t), intent(in) :: loads(:)
+        m%structure%kind = MODEL_PLATE
+        m%groups%rho = rho
+        m%interface%f = f
+        m%loads = loads
+    end subroutine plate
+
+    !> Case i discretised: interpolation (all five fields), grading, N_e.
+    function discretised(i, interp, grading, ne) result(m)
+        integer, intent(in) :: i, interp, ne
+        character(len=*), intent(in) :: grading
+        type(model_t) :: m
+        character(len=80) :: name
+        call case_model(i, m, name)
+        m%mesh%ne = ne
+        m%mesh%grading = grading
+        m%mesh%interp = interp
+        call complete_model(m)
+    end function discretised
+
+    !> The key results of a case (ok false if it failed); estimated as the program does when
+    !! estimate is true.
+    subroutine key_values(m, estimate, q, err_est, defined, singular, has_est, ok)
+        type(model_t), intent(in) :: m
+        logical, intent(in) :: estimate
+        real(dp), intent(out) :: q(n_keys), err_est(n_keys)
+        logical, intent(out) :: defined(n_keys), singular(n_keys), has_est(n_keys), ok
+        type(case_t) :: c
+        type(error_t), allocatable :: err
+        integer :: i, k
+        q = 0.0_dp
+        err_est = 0.0_dp
+        defined = .false.
+        singular = .false.
+        has_est = .false.
+        call solve_case(m, c, err)
+        ok = .not. allocated(err)
+        if (.not. ok) return
+        if (estimate) call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
+                                           c%summary%edge_in_contact)
+        do i = 1, size(c%entries)
+            do k = 1, n_keys
+                if (trim(c%entries(i)%key) /= trim(keys(k))) cycle
+                q(k) = c%entries(i)%value
+                if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))
+                defined(k) = c%entries(i)%defined
+                singular(k) = c%entries(i)%singular
+                has_est(k) = c%entries(i)%has_error
+                err_est(k) = c%entries(i)%error
+            end do
+        end do
+    end subroutine key_values
+
+    !> The references of every case: read from ref_file, or computed and written there.
+    subroutine references(ref, bar, has_ref)
+        real(dp), intent(out) :: ref(n_keys, n_cases), bar(n_keys, n_cases)
+        logical, intent(out) :: has_ref(n_keys, n_cases)
+        integer :: u, ios, i, k
+        logical :: exists
+        inquire (file=ref_file, exist=exists)
+        has_ref = .false.
+        if (exists) then
+            open (newunit=u, file=ref_file, status='old', action='read')
+            read (u, *)
+            do
+                read (u, *, iostat=ios) i, k, ref(k, i), bar(k, i)
+                if (ios /= 0) exit
+                has_ref(k, i) = .true.
+            end do
+            close (u)
+            return
+        end if
+        open (newunit=u, file=ref_file, status='replace', action='write')
+        write (u, '(a,i0,a,i0,a)') '# case key reference bar  (LOADS meshes, P1 to N_f = ', &
+            ne_fine(1), ', P2 to ', ne_fine(2), '; example/estimate_effectivity.f90)'
+        do i = 1, n_cases
+            call reference_of(i, ref(:, i), bar(:, i), has_ref(:, i))
+            do k = 1, n_keys
+                if (has_ref(k, i)) write (u, '(2i4,2es24.15)') i, k, ref(k, i), bar(k, i)
+            end do
+            flush (u)
+        end do
+        close (u)
+    end subroutine references
+
+    !> Case i's reference (module header).
+    subroutine reference_of(i, r, b, has)
+        integer, intent(in) :: i
+        real(dp), intent(out) :: r(n_keys), b(n_keys)
+        logical, intent(out) :: has(n_keys)
+        real(dp) :: q(n_keys, 3), e(n_keys), ra(n_keys, 2), ba(n_keys, 2)
+        logical :: def(n_keys, 3), sing(n_keys), he(n_keys), ok
+        integer :: j, fam, k
+        has = .true.
+        do fam = 1, 2
+            do j = 1, 3
+                call key_values(discretised(i, interps(fam), 'LOADS', ne_fine(fam)/2**(3 - j)), &
+                                .false., q(:, j), e, def(:, j), sing, he, ok)
+                if (.not. ok) error stop 'estimate_effectivity: a reference solve failed'
+                has = has .and. def(:, j) .and. .not. sing
+            end do
+            do k = 1, n_keys
+                call extrapolate(q(k, 3), q(k, 2), q(k, 1), ra(k, fam), ba(k, fam))
+            end do
+        end do
+        do k = 1, n_keys
+            j = minloc(ba(k, :), dim=1)
+            r(k) = ra(k, j)
+            b(k) = max(ba(k, j), abs(ra(k, 1) - ra(k, 2)))
+        end do
+    end subroutine reference_of
+
+    !> Richardson from the finest q1, q2, q4 (ratio 2): observed order when monotone with
+    !! 0.5 <= p <= 6, bar the correction; else q1 with the spread as bar.
+    pure subroutine extrapolate(q1, q2, q4, r, b)
+        real(dp), intent(in) :: q1, q2, q4
+        real(dp), intent(out) :: r, b
+        real(dp) :: d12, d24, p
+        r = q1
+        b = max(abs(q1 - q2), abs(q2 - q4))
+        d12 = q1 - q2
+        d24 = q2 - q4
+        if (d12 == 0.0_dp .or. d24 == 0.0_dp) then
+            if (d12 == 0.0_dp .and. d24 == 0.0_dp) b = 0.0_dp
+            return
+        end if
+        if (sign(1.0_dp, d12) /= sign(1.0_dp, d24)) return
+        p = log(d24/d12)/log(2.0_dp)
+        if (p < 0.5_dp .or. p > 6.0_dp) return
+        r = q1 + d12/(2.0_dp**p - 1.0_dp)
+        b = abs(r - q1)
+    end subroutine extrapolate
+
+    !> Every tested discretisation of every case: effectivities of the results whose
+    !! reference is good enough (module header), one row of text each.
+    subroutine measure_all(eff, group, rows)
+        real(dp), allocatable, intent(out) :: eff(:)
+        integer, allocatable, intent(out) :: group(:)
+        character(len=200), allocatable, intent(out) :: rows(:)
+        real(dp) :: q(n_keys), est(n_keys), true_error
+        logical :: def(n_keys), sing(n_keys), has_est(n_keys), ok
+        character(len=200) :: row
+        integer :: i, a, g, n, k
+        allocate (eff(0), group(0), rows(0))
+        do i = 1, n_cases
+            do a = 1, 3
+                do g = 1, 3
+                    do n = 1, size(ne_tested)
+                        call key_values(discretised(i, interps(a), gradings(g), ne_tested(n)), &
+                                        .true., q, est, def, sing, has_est, ok)
+                        if (.not. ok) cycle
+                        do k = 1, n_keys
+                            if (.not. (has_est(k) .and. has_ref(k, i))) cycle
+                            true_error = abs(q(k) - ref(k, i))
+                            ! a true error of zero (a full-contact extent) or at round-off
+                            ! has no effectivity
+                            if (.not. true_error > 1.0e-10_dp*abs(ref(k, i))) cycle
+                            if (.not. bar(k, i) <= bar_fraction*true_error) cycle
+                            write (row, '(i3,1x,a2,1x,a7,i5,1x,a24,3es11.3,f9.3)') i, &
+                                interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
+                                true_error, est(k), est(k)/true_error
+                            eff = [eff, est(k)/true_error]
+                            group = [group, merge(1, 2, i <= n_tuning)]
+                            rows = [rows, row]
+                        end do
+                    end do
+                end do
+            end do
+        end do
+    end subroutine measure_all
+
+    !> The effectivity table: per set and in all, the count, median, 10th and 90th
+    !! percentiles and the fractions outside the bands; then every row.
+    subroutine write_table(u, label, eff, group, rows)
+        integer, intent(in) :: u
+        character(len=*), intent(in) :: label
+        real(dp), intent(in) :: eff(:)
+        integer, intent(in) :: group(:)
+        character(len=*), intent(in) :: rows(:)
+        character(len=80) :: name
+        integer :: i
+        write (u, '(a)') '# Effectivity of the error estimates '//label
+        write (u, '(a)') ''
+        write (u, '(a)') 'example/estimate_effectivity.f90 (effectivity = estimate / true error; '// &
+            'reference bar <= 0.2 of the error)'
+        write (u, '(a)') ''
+        write (u, '(a)') '| set | results | median | 10th pct | 90th pct | < 0.2 | < 0.5 | '// &
+            'in [0.5, 5] | > 3 | > 5 | > 10 |'
+        write (u, '(a)') '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|'
+        call stats_row(u, 'tuning (cases 1-6)', pack(eff, group == 1))
+        call stats_row(u, 'held out (cases 7-10)', pack(eff, group == 2))
+        call stats_row(u, 'all', eff)
+        write (u, '(a)') ''
+        write (u, '(a)') 'Cases:'
+        write (u, '(a)') ''
+        do i = 1, n_cases
+            call case_name(i, name)
+            write (u, '(i0,a)') i, '. '//trim(name)
+        end do
+        write (u, '(a)') ''
+        write (u, '(a)') '```'
+        write (u, '(a)') 'case interp grading N_e key                         value  '// &
+            'true err   estimate effectivity'
+        do i = 1, size(rows)
+            write (u, '(a)') trim(rows(i))
+        end do
+        write (u, '(a)') '```'
+    end subroutine write_table
+
+    subroutine case_name(i, name)
+        integer, intent(in) :: i
+        character(len=*), intent(out) :: name
+        type(model_t) :: m
+        call case_model(i, m, name)
+    end subroutine case_name
+
+    subroutine stats_row(u, name, x)
+        integer, intent(in) :: u
+        character(len=*), intent(in) :: name
+        real(dp), intent(in) :: x(:)
+        real(dp), allocatable :: s(:)
+        integer :: n
+        n = size(x)
+        if (n == 0) return
+        s = sorted(x)
+        write (u, '(a,i0,3(a,f8.3),6(a,f6.1,a),a)') '| '//name//' | ', n, ' | ', &
+            percentile(s, 0.5_dp), ' | ', percentile(s, 0.1_dp), ' | ', percentile(s, 0.9_dp), &
+            ' | ', pct(count(x < 0.2_dp), n), ' %', ' | ', pct(count(x < 0.5_dp), n), ' %', &
+            ' | ', pct(count(x >= 0.5_dp .and. x <= 5.0_dp), n), ' %', &
+            ' | ', pct(count(x > 3.0_dp), n), ' %', ' | ', pct(count(x > 5.0_dp), n), ' %', &
+            ' | ', pct(count(x > 10.0_dp), n), ' %', ' |'
+    end subroutine stats_row
+
+    pure real(dp) function pct(k, n)
+        integer, intent(in) :: k, n
+        pct = 100.0_dp*real(k, dp)/real(n, dp)
+    end function pct
+
+    pure function sorted(x) result(s)
+        real(dp), intent(in) :: x(:)
+        real(dp) :: s(size(x)), t
+        integer :: i, j
+        s = x
+        do i = 2, size(s)
+            t = s(i)
+            j = i - 1
+            do while (j >= 1)
+                if (s(j) <= t) exit
+                s(j + 1) = s(j)
+                j = j - 1
+            end do
+            s(j + 1) = t
+        end do
+    end function sorted
+
+    !> Linear interpolation between order statistics (s sorted).
+    pure real(dp) function percentile(s, p)
+        real(dp), intent(in) :: s(:), p
+        real(dp) :: h
+        integer :: lo
+        h = 1.0_dp + p*real(size(s) - 1, dp)
+        lo = min(int(h), size(s) - 1)
+        if (size(s) == 1) then
+            percentile = s(1)
+            return
+        end if
+        percentile = s(lo) + (h - real(lo, dp))*(s(lo + 1) - s(lo))
+    end function percentile
+end program estimate_effectivity
