@@ -1,16 +1,19 @@
-!> The NONDIM problems and the solve shared by the test suites: plates and beams (nu = 0.3,
-!! the paper's value) with a central point load F = 1 or the loads given, and one call that
-!! solves a case by the one pipeline (solved_case) and returns its solution and stations.
+!> The NONDIM problems and the solves shared by the test suites: plates and beams (nu = 0.3,
+!! the paper's value) with a central point load F = 1 or the loads given; one call that
+!! solves a model by the one pipeline (solved_case) and returns its solution and stations,
+!! and one that solves a case of a deck file.
 module contact_test_support
     use kinds, only: dp
     use harness, only: error_t
+    use errors, only: new_error, EXIT_INTERNAL
+    use deck_reader, only: deck_t, read_deck, case_count, case_model
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, complete_model
     use contact_solver, only: solution_t
     use station_results, only: station_table_t
     use solved_case, only: case_t, solve_case
     implicit none
     private
-    public :: nondim_plate, nondim_beam, run
+    public :: nondim_plate, nondim_beam, run, solve_deck
 
 contains
 
@@ -76,4 +79,30 @@ contains
         sol = c%sol
         tab = c%stations
     end subroutine run
+
+    !> Read a deck, take its case case_no (absent: 1), change N_e to ne if ne > 0, and solve
+    !! it (solved_case::solve_case).
+    subroutine solve_deck(path, ne, c, err, case_no)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: ne                       !! 0: the deck's MESH
+        type(case_t), intent(out) :: c
+        type(error_t), allocatable, intent(out) :: err
+        integer, intent(in), optional :: case_no
+        type(deck_t) :: deck
+        type(model_t) :: m
+        character(len=:), allocatable :: label
+        integer :: i
+        i = 1
+        if (present(case_no)) i = case_no
+        call read_deck(path, deck, err)
+        if (allocated(err)) return
+        if (i > case_count(deck)) then
+            call new_error(err, EXIT_INTERNAL, path//' has fewer cases than the test expects')
+            return
+        end if
+        call case_model(deck, i, m, label, err)
+        if (allocated(err)) return
+        if (ne > 0) m%mesh%ne = ne
+        call solve_case(m, c, err)
+    end subroutine solve_deck
 end module contact_test_support

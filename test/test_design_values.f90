@@ -7,7 +7,7 @@ module test_design_values
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK
     use model, only: model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH
-    use deck_reader, only: deck_t, read_deck, case_model
+    use deck_reader, only: deck_t, read_deck
     use quadrature, only: gauss_legendre
     use discretization, only: locate_element
     use mindlin_structure, only: section_of, displacement_at, traction_at, resultants
@@ -17,7 +17,7 @@ module test_design_values
     use design_summary, only: summary_t, summarise
     use analysis_driver, only: run_analysis
     use solved_case, only: case_t, solve_case
-    use contact_test_support, only: nondim_beam, nondim_plate
+    use contact_test_support, only: nondim_beam, nondim_plate, solve_deck
     use summary_table, only: entry_t, summary_entries
     use error_estimate, only: estimate_errors
     use station_results, only: contact_extent
@@ -53,23 +53,6 @@ contains
                  new_unittest('slip_intervals_hold_the_slipping_stations', test_slip_intervals), &
                  new_unittest('singular_values_flagged_without_estimate', test_singular_values)]
     end subroutine collect_design_values
-
-    !> Read a deck (case 1), optionally change N_e, and solve it (solved_case).
-    subroutine solve_deck(path, ne, c, err)
-        character(len=*), intent(in) :: path
-        integer, intent(in) :: ne            !! 0: the deck's MESH
-        type(case_t), intent(out) :: c
-        type(error_t), allocatable, intent(out) :: err
-        type(deck_t) :: deck
-        type(model_t) :: m
-        character(len=:), allocatable :: label
-        call read_deck(path, deck, err)
-        if (allocated(err)) return
-        call case_model(deck, 1, m, label, err)
-        if (allocated(err)) return
-        if (ne > 0) m%mesh%ne = ne
-        call solve_case(m, c, err)
-    end subroutine solve_deck
 
     !> int_x0^x of the finite-element sigma (component k: 1 sigma_x, 2 sigma_z) times w(s) =
     !! 1 (beam) or 2 pi s (plate), by a 7-point Gauss rule per element (the module uses 4).

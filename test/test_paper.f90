@@ -4,11 +4,10 @@
 module test_paper
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
-    use errors, only: new_error, EXIT_INTERNAL
     use model, only: model_t
-    use deck_reader, only: deck_t, read_deck, case_count, case_model
     use station_results, only: station_table_t
-    use solved_case, only: case_t, solve_case
+    use solved_case, only: case_t
+    use contact_test_support, only: solve_deck
     use station_test_support, only: nd, nd_all
     implicit none
     private
@@ -29,26 +28,17 @@ contains
                  new_unittest('fig07_parabolic_interactions_error', test_parabolic_interactions)]
     end subroutine collect_paper
 
-    !> Solve case i of a deck (solved_case): its model and its stations.
+    !> Solve case i of a deck (contact_test_support::solve_deck): its model and stations.
     subroutine solve_deck_case(path, i, m, tab, err)
         character(len=*), intent(in) :: path
         integer, intent(in) :: i
         type(model_t), intent(out) :: m
         type(station_table_t), intent(out) :: tab
         type(error_t), allocatable, intent(out) :: err
-        type(deck_t) :: deck
         type(case_t) :: c
-        character(len=:), allocatable :: label
-        call read_deck(path, deck, err)
+        call solve_deck(path, 0, c, err, case_no=i)
         if (allocated(err)) return
-        if (i > case_count(deck)) then
-            call new_error(err, EXIT_INTERNAL, path//' has fewer cases than the test expects')
-            return
-        end if
-        call case_model(deck, i, m, label, err)
-        if (allocated(err)) return
-        call solve_case(m, c, err)
-        if (allocated(err)) return
+        m = c%model
         tab = c%stations
     end subroutine solve_deck_case
 
