@@ -16,8 +16,7 @@
 module test_adaptive
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_PLATE, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, &
-                     complete_model
+    use model, only: model_t, load_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT
     use mesh, only: mesh_t, new_mesh
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes
     use discretization, only: discretization_t, new_discretization
@@ -28,8 +27,8 @@ module test_adaptive
     use deck_reader, only: deck_t, read_deck, parse_deck, case_model
     use analysis_driver, only: case_result_t, run_case
     use errors, only: EXIT_OK
-    use contact_solver, only: solve_contact
-    use station_results, only: station_table_t, tabulate
+    use solved_case, only: case_t, solve_case
+    use contact_test_support, only: nondim_plate
     use design_summary, only: summary_t, summarise
     implicit none
     private
@@ -107,17 +106,10 @@ contains
         real(dp), intent(in) :: f, tol
         integer, intent(in) :: max_ne
         type(model_t) :: m
-        m%structure%kind = MODEL_PLATE
-        m%nondim = .true.
-        m%groups%rho = 1.0e3_dp
-        m%groups%zeta = 0.1_dp
-        m%ground%nu_f = 0.1_dp
-        m%interface%f = f
-        m%mesh%ne = 16
+        m = nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, f, 16, &
+                         [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)])
         m%mesh%adapt_tol = tol
         m%mesh%adapt_max_ne = max_ne
-        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)]
-        call complete_model(m)
     end function punch
 
     !> Adapt; the relative estimate and the relative true error of W(0) = settlement_max.
@@ -479,15 +471,11 @@ contains
     subroutine require_unresolved(m, err)
         type(model_t), intent(in) :: m
         type(error_t), allocatable, intent(out) :: err
-        type(discretization_t) :: d
-        type(solution_t) :: sol
-        type(station_table_t) :: tab
+        type(case_t) :: c
         type(summary_t) :: s
-        call new_discretization(m, d, err)
-        if (.not. allocated(err)) call solve_contact(m, d, sol, err)
-        if (.not. allocated(err)) call tabulate(m, d, sol, tab, err)
+        call solve_case(m, c, err)
         if (allocated(err)) return
-        s = summarise(m, sol, tab)
+        s = summarise(m, c%sol, c%stations)
         call check(err, s%admissibility > s%admissibility_tol, 'very soft beam on N_e = 20: '// &
                    'friction already resolved pointwise (the test would not refine)')
     end subroutine require_unresolved

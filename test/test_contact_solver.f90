@@ -171,23 +171,25 @@ contains
     !> |Sigma_x| <= f Sigma_z + O(eps_bar) at every Gauss point (SPEC §4).
     subroutine test_admissibility(err)
         type(error_t), allocatable, intent(out) :: err
-        type(model_t) :: m
+        call require_admissible(nondim_plate(0.01_dp, 0.2_dp, 0.1_dp, 0.2_dp, 30), 'plate', err)
+        if (allocated(err)) return
+        call require_admissible(nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20), &
+                                'beam', err)
+    end subroutine test_admissibility
+
+    !> m solves, and |Sigma_x| <= f Sigma_z + 1e3 eps_bar at every Gauss point.
+    subroutine require_admissible(m, what, err)
+        type(model_t), intent(in) :: m
+        character(len=*), intent(in) :: what
+        type(error_t), allocatable, intent(out) :: err
         type(solution_t) :: sol
         type(station_table_t) :: tab
-        m = nondim_plate(0.01_dp, 0.2_dp, 0.1_dp, 0.2_dp, 30)
         call run(m, sol, tab, err)
         if (allocated(err)) return
         call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', &
             0) <= 1.0e3_dp*m%interface%eps_bar, &
-                   'plate: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
-        if (allocated(err)) return
-        m = nondim_beam(0.0025_dp, 0.1_dp, 0.005_dp, 0.6_dp, 0.1_dp, 20)
-        call run(m, sol, tab, err)
-        if (allocated(err)) return
-        call check(err, sol%admissibility*nd(m, tab, 'Sigma_z', &
-            0) <= 1.0e3_dp*m%interface%eps_bar, &
-                   'beam: |Sigma_x| exceeds f Sigma_z beyond the regularisation')
-    end subroutine test_admissibility
+                   what//': |Sigma_x| exceeds f Sigma_z beyond the regularisation')
+    end subroutine require_admissible
 
     !> Paper Table 1 trend (beam, rho = 0.0025, f = 0.6, N_e = 20, central load with H/V = 0.1,
     !! b/l = 0.005, zeta = 0.1): W and Sigma_z at eps_bar = 1e-4 and 1e-7 agree to 1e-4; 1e-1
@@ -226,33 +228,35 @@ contains
     !> H > f V: no equilibrium, status 2 with a sliding message.
     subroutine test_sliding(err)
         type(error_t), allocatable, intent(out) :: err
-        type(model_t) :: m
+        call expect_status_2(nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.3_dp, 0.31_dp, 20), &
+                             'sliding', 'H > f V was solved', &
+                             'H > f V: expected status 2 and a sliding message', err)
+    end subroutine test_sliding
+
+    !> m must end with status 2 (EXIT_ANALYSIS) and a message that contains word.
+    subroutine expect_status_2(m, word, if_solved, if_other, err)
+        type(model_t), intent(in) :: m
+        character(len=*), intent(in) :: word
+        character(len=*), intent(in) :: if_solved      !! the message if m solves
+        character(len=*), intent(in) :: if_other       !! the message if m fails otherwise
+        type(error_t), allocatable, intent(out) :: err
         type(solution_t) :: sol
         type(station_table_t) :: tab
         type(error_t), allocatable :: run_err
-        m = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.3_dp, 0.31_dp, 20)
         call run(m, sol, tab, run_err)
-        call check(err, allocated(run_err), 'H > f V was solved')
+        call check(err, allocated(run_err), if_solved)
         if (allocated(err)) return
         call check(err, run_err%code == EXIT_ANALYSIS .and. &
-                   index(run_err%message, 'sliding') > 0, &
-                       'H > f V: expected status 2 and a sliding message')
-    end subroutine test_sliding
+                   index(run_err%message, word) > 0, if_other)
+    end subroutine expect_status_2
 
     !> An upward net load has no equilibrium on a tensionless soil: status 2.
     subroutine test_uplift(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m
-        type(solution_t) :: sol
-        type(station_table_t) :: tab
-        type(error_t), allocatable :: run_err
         m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 10)
         m%loads(1)%fz = -1.0_dp
-        call run(m, sol, tab, run_err)
-        call check(err, allocated(run_err), 'uplift was solved')
-        if (allocated(err)) return
-        call check(err, run_err%code == EXIT_ANALYSIS .and. &
-                   index(run_err%message, 'uplift') > 0, 'uplift: expected status 2')
+        call expect_status_2(m, 'uplift', 'uplift was solved', 'uplift: expected status 2', err)
     end subroutine test_uplift
 
     !> An iteration limit too small to converge: status 2 naming the loop, never a result.
@@ -261,26 +265,18 @@ contains
     subroutine test_no_convergence(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m
-        type(solution_t) :: sol
-        type(station_table_t) :: tab
-        type(error_t), allocatable :: run_err
         m = nondim_plate(1.0e-3_dp, 0.05_dp, 0.1_dp, 0.5_dp, 20)
         m%solver%method = METHOD_TWOLOOP
         m%solver%max_outer = 2
-        call run(m, sol, tab, run_err)
-        call check(err, allocated(run_err), 'two outer iterations should not suffice')
-        if (allocated(err)) return
-        call check(err, run_err%code == EXIT_ANALYSIS .and. &
-                   index(run_err%message, 'did not converge') > 0, 'expected status 2')
+        call expect_status_2(m, 'did not converge', 'two outer iterations should not suffice', &
+                             'expected status 2', err)
         if (allocated(err)) return
         m%solver%method = METHOD_NEWTON
         m%solver%max_outer = 100
         m%solver%max_inner = 1
-        call run(m, sol, tab, run_err)
-        call check(err, allocated(run_err), 'one Newton step per stage should not suffice')
-        if (allocated(err)) return
-        call check(err, run_err%code == EXIT_ANALYSIS .and. &
-                   index(run_err%message, 'did not converge') > 0, 'Newton: expected status 2')
+        call expect_status_2(m, 'did not converge', &
+                             'one Newton step per stage should not suffice', &
+                             'Newton: expected status 2', err)
     end subroutine test_no_convergence
 
     !> rho = 1e-5, zeta = 0.2: the plain fixed point does not settle (the paper's known hard

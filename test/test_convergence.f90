@@ -63,13 +63,14 @@
 module test_convergence
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, FIELD_U, FIELD_PSI, &
-                     FIELD_SX, FIELD_SZ, complete_model, relative_stiffness
+    use model, only: model_t, load_t, LOAD_POINT, LOAD_PATCH, FIELD_U, FIELD_PSI, FIELD_SX, &
+                     FIELD_SZ, relative_stiffness
     use shape_functions, only: new_basis, interp_name, INTERP_P1, INTERP_P2, INTERP_S2
     use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact, STATE_STICK
+    use contact_solver, only: STATE_STICK
     use station_test_support, only: nd, nd_all
-    use station_results, only: station_table_t, tabulate
+    use solved_case, only: case_t, solve_on
+    use contact_test_support, only: nondim_plate
     implicit none
     private
     public :: collect_convergence
@@ -108,30 +109,14 @@ contains
                  new_unittest('smooth_bonded_plate_orders', test_smooth_plate)]
     end subroutine collect_convergence
 
-    !> NONDIM plate (a = 1, F = 1), nu = 0.3, nu_f = 0.1, zeta = 0.1.
-    function nondim_plate(rho, f, load) result(m)
-        real(dp), intent(in) :: rho, f
-        type(load_t), intent(in) :: load
-        type(model_t) :: m
-        m%structure%kind = MODEL_PLATE
-        m%nondim = .true.
-        m%groups%rho = rho
-        m%groups%zeta = 0.1_dp
-        m%structure%nu = 0.3_dp
-        m%ground%nu_f = 0.1_dp
-        m%interface%f = f
-        allocate (m%loads(1))
-        m%loads(1) = load
-        call complete_model(m)
-    end function nondim_plate
-
     !> Test 1: frictionless rigid punch, W(0) = rho/4 (Boussinesq). Orders as in the header:
     !! log2(h_e(N)/h_e(2N)) for all three traction families (displacements P1: a rigid plate's
     !! constant displacement is exact in every family).
     subroutine test_rigid_punch(err)
         type(error_t), allocatable, intent(out) :: err
         type(problem_t) :: prob
-        prob%m = nondim_plate(rho_rigid, 0.0_dp, load_t(kind=LOAD_POINT, fz=1.0_dp))
+        prob%m = nondim_plate(rho_rigid, 0.1_dp, 0.1_dp, 0.0_dp, loads=[load_t(kind=LOAD_POINT, &
+                                                                       fz=1.0_dp)])
         prob%w_exact = relative_stiffness(prob%m%structure, prob%m%ground)/4.0_dp
         call punch_orders(prob, 'frictionless rigid punch, rho = 1e4: W(0) against rho/4 '// &
                           '(Boussinesq)', .true., err)
@@ -144,7 +129,8 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(problem_t) :: prob
         real(dp) :: c, nu_f
-        prob%m = nondim_plate(rho_rigid, f_bonded, load_t(kind=LOAD_POINT, fz=1.0_dp))
+        prob%m = nondim_plate(rho_rigid, 0.1_dp, 0.1_dp, f_bonded, loads=[load_t(kind=LOAD_POINT, &
+                                                                         fz=1.0_dp)])
         nu_f = prob%m%ground%nu_f
         c = (1.0_dp - nu_f)*log(3.0_dp - 4.0_dp*nu_f)/(1.0_dp - 2.0_dp*nu_f)
         prob%w_exact = relative_stiffness(prob%m%structure, prob%m%ground)/(4.0_dp*c)
@@ -225,8 +211,8 @@ contains
         integer :: fam, k, n_mesh(3), last_pair
         real(dp) :: theory, observed
         character(len=160) :: text
-        prob%m = nondim_plate(1.0e-12_dp, f_bonded, &
-                              load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp))
+        prob%m = nondim_plate(1.0e-12_dp, 0.1_dp, 0.1_dp, f_bonded, &
+                              loads=[load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)])
         prob%m%interface%eps_bar = 1.0e-10_dp
         prob%w_exact = relative_stiffness(prob%m%structure, prob%m%ground)/pi
         prob%matching = .true.
@@ -289,8 +275,7 @@ contains
         real(dp), intent(out) :: h_edge        !! rim element [a]
         type(error_t), allocatable, intent(out) :: err
         type(discretization_t) :: d
-        type(solution_t) :: sol
-        type(station_table_t) :: tab
+        type(case_t) :: c
         character(len=120) :: text
         integer :: i, field
         call new_discretization(m, d, err)
@@ -305,20 +290,18 @@ contains
                 call new_basis(d%basis(field), d%msh, m%mesh%interp(field))
             end do rebuild_bases
         end if
-        call solve_contact(m, d, sol, err)
+        call solve_on(m, d, c, err)
         if (allocated(err)) return
-        call tabulate(m, d, sol, tab, err)
-        if (allocated(err)) return
-        w0 = nd(m, tab, 'W', 1)
+        w0 = nd(m, c%stations, 'W', 1)
         h_edge = (d%msh%x(m%mesh%ne) - d%msh%x(m%mesh%ne - 1))/m%structure%length
         write (text, '(a,i0,a)') 'N_e = ', m%mesh%ne, ': '
         ! a spurious "converged" state (all points in tension) misses equilibrium by ~F; the
         ! round-off of the stiff punch (rho = 1e4) leaves up to ~1e-6 F (N_e = 64)
-        call check(err, abs(sol%reaction(1) - sol%applied(1)) <= 1.0e-4_dp*sol%applied(1), &
+        call check(err, abs(c%sol%reaction(1) - c%sol%applied(1)) <= 1.0e-4_dp*c%sol%applied(1), &
                    trim(text)//'vertical equilibrium violated')
         if (allocated(err)) return
         if (.not. want_stick) return
-        call check(err, all(tab%state == STATE_STICK), trim(text)//'bonded case has a '// &
+        call check(err, all(c%stations%state == STATE_STICK), trim(text)//'bonded case has a '// &
                    'station in lift-off or slip')
         if (allocated(err)) return
         if (m%groups%rho >= 1.0e-6_dp) return
@@ -326,7 +309,7 @@ contains
         ! residual stiffness (rho = 1e-12) leaves a rim singularity of tiny amplitude whose value
         ! at the rim node grows as the rim element shrinks (~3e-7 at N_e = 64); 1e-5 allows for
         ! it and still fails on any real departure from the uniform load
-        call check(err, maxval(abs(nd_all(m, tab, 'Sigma_z') - 1.0_dp)) <= 1.0e-5_dp, &
+        call check(err, maxval(abs(nd_all(m, c%stations, 'Sigma_z') - 1.0_dp)) <= 1.0e-5_dp, &
                    trim(text)//'uniform load not passed on as Sigma_z = 1')
     end subroutine solve_w0
 

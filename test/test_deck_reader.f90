@@ -176,6 +176,19 @@ contains
         call check_message(perr, fragments, err)
     end subroutine expect_error
 
+    !> The deck `lines` with line k replaced by new_line must be refused (expect_error).
+    subroutine expect_card_error(lines, k, new_line, fragments, err)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: k
+        character(len=*), intent(in) :: new_line
+        character(len=*), intent(in) :: fragments(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=len(lines)) :: changed(size(lines))
+        changed = lines
+        changed(k) = new_line
+        call expect_error(changed, fragments, err)
+    end subroutine expect_card_error
+
     !> The error is an input error whose message contains every fragment.
     subroutine check_message(perr, fragments, err)
         type(error_t), intent(in) :: perr
@@ -783,16 +796,14 @@ contains
 
     subroutine test_h_zero(err)
         type(error_t), allocatable, intent(out) :: err
-        character(len=w), allocatable :: lines(:)
-        lines = beam_physical()
-        lines(2) = card('GEOMETRY', '10.0', '0.0', '1.0')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:21-30: GEOMETRY h '// &
-                          '(thickness of the structure) must be > 0, got 0.0'], err)
+        call expect_card_error(beam_physical(), 2, card('GEOMETRY', '10.0', '0.0', '1.0'), &
+                               [character(len=120) :: 'test/bad.dat:2:21-30: GEOMETRY h '// &
+                               '(thickness of the structure) must be > 0, got 0.0'], err)
         if (allocated(err)) return
-        lines = beam_nondim()
-        lines(2) = card('NONDIM', '0.0025', '-0.1', '0.3', '0.1', '0.05')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:21-30: NONDIM zeta', &
-                          'must be > 0, got -0.1'], err)
+        call expect_card_error(beam_nondim(), 2, &
+                               card('NONDIM', '0.0025', '-0.1', '0.3', '0.1', '0.05'), &
+                               [character(len=120) :: 'test/bad.dat:2:21-30: NONDIM zeta', &
+                               'must be > 0, got -0.1'], err)
     end subroutine test_h_zero
 
     subroutine test_ne_zero(err)
@@ -830,12 +841,10 @@ contains
 
     subroutine test_load_outside_plate(err)
         type(error_t), allocatable, intent(out) :: err
-        character(len=w), allocatable :: lines(:)
-        lines = plate_nondim()
-        lines(4) = card('LOAD', 'RING', '1.0', '', '1.5')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:4:41-50: LOAD x1 lies '// &
-                          'outside the plate: must be in [0, a] = [0, 1] (NONDIM: in units '// &
-                          'of a), got 1.5'], err)
+        call expect_card_error(plate_nondim(), 4, card('LOAD', 'RING', '1.0', '', '1.5'), &
+                               [character(len=120) :: 'test/bad.dat:4:41-50: LOAD x1 lies '// &
+                               'outside the plate: must be in [0, a] = [0, 1] (NONDIM: in '// &
+                               'units of a), got 1.5'], err)
     end subroutine test_load_outside_plate
 
     subroutine test_patch_reversed(err)
@@ -904,39 +913,32 @@ contains
 
     subroutine test_plate_point_off_axis(err)
         type(error_t), allocatable, intent(out) :: err
-        character(len=w), allocatable :: lines(:)
-        lines = plate_nondim()
-        lines(4) = card('LOAD', 'POINT', '1.0', '', '0.5')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:4:41-50: a POINT load '// &
-                          'on the plate acts at the axis only', 'got 0.5'], err)
+        call expect_card_error(plate_nondim(), 4, card('LOAD', 'POINT', '1.0', '', '0.5'), &
+                               [character(len=120) :: 'test/bad.dat:4:41-50: a POINT load '// &
+                               'on the plate acts at the axis only', 'got 0.5'], err)
     end subroutine test_plate_point_off_axis
 
     subroutine test_ring_on_beam(err)
         type(error_t), allocatable, intent(out) :: err
-        character(len=w), allocatable :: lines(:)
-        lines = beam_nondim()
-        lines(4) = card('LOAD', 'RING', '1.0', '', '0.2')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:4:11-20: RING is a '// &
-                          'plate load; a beam takes POINT, PATCH or MOMENT'], err)
+        call expect_card_error(beam_nondim(), 4, card('LOAD', 'RING', '1.0', '', '0.2'), &
+                               [character(len=120) :: 'test/bad.dat:4:11-20: RING is a '// &
+                               'plate load; a beam takes POINT, PATCH or MOMENT'], err)
     end subroutine test_ring_on_beam
 
     subroutine test_plate_width(err)
         type(error_t), allocatable, intent(out) :: err
-        character(len=w), allocatable :: lines(:)
-        lines = plate_physical()
-        lines(2) = card('GEOMETRY', '6.0', '0.6', '1.0')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:31-40: PLATE has no '// &
-                          'width: GEOMETRY b must be blank'], err)
+        call expect_card_error(plate_physical(), 2, card('GEOMETRY', '6.0', '0.6', '1.0'), &
+                               [character(len=120) :: 'test/bad.dat:2:31-40: PLATE has no '// &
+                               'width: GEOMETRY b must be blank'], err)
         if (allocated(err)) return
-        lines = plate_nondim()
-        lines(2) = card('NONDIM', '0.01', '0.1', '0.3', '0.1', '0.05')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:51-60: PLATE has no '// &
-                          'width: NONDIM beta must be blank'], err)
+        call expect_card_error(plate_nondim(), 2, &
+                               card('NONDIM', '0.01', '0.1', '0.3', '0.1', '0.05'), &
+                               [character(len=120) :: 'test/bad.dat:2:51-60: PLATE has no '// &
+                               'width: NONDIM beta must be blank'], err)
         if (allocated(err)) return
-        lines = beam_nondim()
-        lines(2) = card('NONDIM', '0.0025', '0.1', '0.3', '0.1')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:2:51-60: NONDIM beta', &
-                          'is required but the field is blank'], err)
+        call expect_card_error(beam_nondim(), 2, card('NONDIM', '0.0025', '0.1', '0.3', '0.1'), &
+                               [character(len=120) :: 'test/bad.dat:2:51-60: NONDIM beta', &
+                               'is required but the field is blank'], err)
     end subroutine test_plate_width
 
     subroutine test_tab(err)
@@ -1119,11 +1121,10 @@ contains
     subroutine test_blank_required(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=w), allocatable :: lines(:)
-        lines = beam_physical()
-        lines(4) = card('SOIL', '', '0.3')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:4:11-20: SOIL E_f '// &
-                          '(Young''s modulus of the soil) is required but the field is blank'], &
-                          err)
+        call expect_card_error(beam_physical(), 4, card('SOIL', '', '0.3'), &
+                               [character(len=120) :: 'test/bad.dat:4:11-20: SOIL E_f '// &
+                               '(Young''s modulus of the soil) is required but the field '// &
+                               'is blank'], err)
         if (allocated(err)) return
         lines = beam_physical()
         lines(6) = card('LOAD', 'POINT', '', '100.0')
@@ -1255,15 +1256,12 @@ contains
 
     subroutine test_extra_fields(err)
         type(error_t), allocatable, intent(out) :: err
-        character(len=w), allocatable :: lines(:)
-        lines = beam_physical()
-        lines(4) = card('SOIL', '40.0E3', '0.3', '0.1')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:4:31-40: SOIL has 2 '// &
-                          'field(s); columns 31-40 must be blank, found ''0.1'''], err)
+        call expect_card_error(beam_physical(), 4, card('SOIL', '40.0E3', '0.3', '0.1'), &
+                               [character(len=120) :: 'test/bad.dat:4:31-40: SOIL has 2 '// &
+                               'field(s); columns 31-40 must be blank, found ''0.1'''], err)
         if (allocated(err)) return
-        lines = beam_physical()
-        lines(7) = card('END', 'now')
-        call expect_error(lines, [character(len=120) :: 'test/bad.dat:7:11-20: END has 0'], err)
+        call expect_card_error(beam_physical(), 7, card('END', 'now'), &
+                               [character(len=120) :: 'test/bad.dat:7:11-20: END has 0'], err)
     end subroutine test_extra_fields
 
     subroutine test_sweep_incompatible(err)

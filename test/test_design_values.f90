@@ -6,32 +6,24 @@ module test_design_values
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK
-    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
-                     complete_model
-    use deck_reader, only: deck_t, read_deck, case_model
+    use model, only: model_t, load_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH
+    use deck_reader, only: deck_t, read_deck
     use quadrature, only: gauss_legendre
-    use discretization, only: discretization_t, new_discretization, locate_element
+    use discretization, only: locate_element
     use mindlin_structure, only: section_of, displacement_at, traction_at, resultants
-    use contact_solver, only: solution_t, solve_contact
     use interface_law, only: STATE_LIFTOFF, STATE_SLIP
     use station_columns, only: Q_X, Q_SZ, Q_SX, Q_N, Q_M, Q_MT, Q_Q, Q_GAP, Q_SZ_FE, Q_SX_FE
     use station_results, only: station_table_t, tabulate, tabulate_design
     use design_summary, only: summary_t, summarise
     use analysis_driver, only: run_analysis
+    use solved_case, only: case_t, solve_case
+    use contact_test_support, only: nondim_beam, nondim_plate, solve_deck
     use summary_table, only: entry_t, summary_entries
     use error_estimate, only: estimate_errors
     use station_results, only: contact_extent
     implicit none
     private
     public :: collect_design_values
-
-    !> A solved case with everything a check may need.
-    type :: case_t
-        type(model_t) :: m
-        type(discretization_t) :: d
-        type(solution_t) :: sol
-        type(station_table_t) :: tab
-    end type case_t
 
 contains
 
@@ -62,66 +54,6 @@ contains
                  new_unittest('singular_values_flagged_without_estimate', test_singular_values)]
     end subroutine collect_design_values
 
-    !> Read a deck (case 1), optionally change N_e, solve and tabulate.
-    subroutine solve_deck(path, ne, c, err)
-        character(len=*), intent(in) :: path
-        integer, intent(in) :: ne            !! 0: the deck's MESH
-        type(case_t), intent(out) :: c
-        type(error_t), allocatable, intent(out) :: err
-        type(deck_t) :: deck
-        character(len=:), allocatable :: label
-        call read_deck(path, deck, err)
-        if (allocated(err)) return
-        call case_model(deck, 1, c%m, label, err)
-        if (allocated(err)) return
-        if (ne > 0) c%m%mesh%ne = ne
-        call solve_model(c, err)
-    end subroutine solve_deck
-
-    subroutine solve_model(c, err)
-        type(case_t), intent(inout) :: c
-        type(error_t), allocatable, intent(out) :: err
-        call new_discretization(c%m, c%d, err)
-        if (allocated(err)) return
-        call solve_contact(c%m, c%d, c%sol, err)
-        if (allocated(err)) return
-        call tabulate(c%m, c%d, c%sol, c%tab, err)
-    end subroutine solve_model
-
-    !> NONDIM beam (l = 1, F = 1), loads given.
-    function nondim_beam(rho, beta, f, loads, ne) result(m)
-        real(dp), intent(in) :: rho, beta, f
-        type(load_t), intent(in) :: loads(:)
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%structure%kind = MODEL_BEAM
-        m%nondim = .true.
-        m%groups%rho = rho
-        m%groups%zeta = 0.1_dp
-        m%groups%beta = beta
-        m%interface%f = f
-        m%mesh%ne = ne
-        m%loads = loads
-        call complete_model(m)
-    end function nondim_beam
-
-    !> NONDIM plate (a = 1, F = 1), loads given.
-    function nondim_plate(rho, zeta, f, nu_f, loads, ne) result(m)
-        real(dp), intent(in) :: rho, zeta, f, nu_f
-        type(load_t), intent(in) :: loads(:)
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%structure%kind = MODEL_PLATE
-        m%nondim = .true.
-        m%groups%rho = rho
-        m%groups%zeta = zeta
-        m%ground%nu_f = nu_f
-        m%interface%f = f
-        m%mesh%ne = ne
-        m%loads = loads
-        call complete_model(m)
-    end function nondim_plate
-
     !> int_x0^x of the finite-element sigma (component k: 1 sigma_x, 2 sigma_z) times w(s) =
     !! 1 (beam) or 2 pi s (plate), by a 7-point Gauss rule per element (the module uses 4).
     real(dp) function traction_integral(c, k, x) result(total)
@@ -139,7 +71,7 @@ contains
             do g = 1, 7
                 s = lo + 0.5_dp*(xg(g) + 1.0_dp)*(hi - lo)
                 wt = 0.5_dp*wg(g)*(hi - lo)
-                if (c%m%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*s
+                if (c%model%structure%kind /= MODEL_BEAM) wt = wt*2.0_dp*pi*s
                 sig = traction_at(c%d, c%sol%z(c%d%nv + 1:), e, &
                                   2.0_dp*(s - lo)/(c%d%msh%x(e) - lo) - 1.0_dp)
                 total = total + wt*sig(k)
@@ -157,11 +89,12 @@ contains
         integer :: i
         call solve_deck('input/beam_physical.dat', 0, c, err)
         if (allocated(err)) return
-        i = minloc(abs(c%tab%val(Q_X, :) + 1.22313_dp), dim=1)
-        call check_close(err, c%tab%val(Q_Q, i), 955.0_dp, 5.0e-3_dp, 0.0_dp, 'Q at x = -1.22 m')
+        i = minloc(abs(c%stations%val(Q_X, :) + 1.22313_dp), dim=1)
+        call check_close(err, c%stations%val(Q_Q, i), 955.0_dp, 5.0e-3_dp, 0.0_dp, &
+                         'Q at x = -1.22 m')
         if (allocated(err)) return
-        i = minloc(abs(c%tab%val(Q_X, :) + 0.64069_dp), dim=1)
-        call check_close(err, c%tab%val(Q_Q, i), 1190.0_dp, 5.0e-3_dp, 0.0_dp, &
+        i = minloc(abs(c%stations%val(Q_X, :) + 0.64069_dp), dim=1)
+        call check_close(err, c%stations%val(Q_Q, i), 1190.0_dp, 5.0e-3_dp, 0.0_dp, &
                          'Q next to the column')
     end subroutine test_beam_issue_statics
 
@@ -174,28 +107,29 @@ contains
         type(case_t) :: c
         real(dp) :: x, q_expect, n_expect
         integer :: i
-        c%m = nondim_beam(0.01_dp, 0.05_dp, 0.6_dp, &
-                          [load_t(kind=LOAD_POINT, fz=0.6_dp, fx=0.1_dp, x1=-0.2_dp), &
-                           load_t(kind=LOAD_PATCH, fz=0.4_dp, x1=0.1_dp, x2=0.3_dp)], 30)
-        call solve_model(c, err)
+        call solve_case(nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, ne=30, loads= &
+                        [load_t(kind=LOAD_POINT, fz=0.6_dp, fx=0.1_dp, x1=-0.2_dp), &
+                         load_t(kind=LOAD_PATCH, fz=0.4_dp, x1=0.1_dp, x2=0.3_dp)]), c, err)
         if (allocated(err)) return
-        stations: do i = 1, c%tab%n
-            x = c%tab%val(Q_X, i)
+        stations: do i = 1, c%stations%n
+            x = c%stations%val(Q_X, i)
             q_expect = traction_integral(c, 2, x) - 0.4_dp*min(max(x - 0.1_dp, 0.0_dp), &
                 0.2_dp)/0.2_dp
             n_expect = traction_integral(c, 1, x)
             ! the point load is left of the section, or at it on the right-limit station
             if (x > -0.2_dp + 1.0e-12_dp .or. (abs(x + 0.2_dp) <= 1.0e-12_dp .and. &
-                                                c%tab%side(i) > 0)) then
+                                                c%stations%side(i) > 0)) then
                 q_expect = q_expect - 0.6_dp
                 n_expect = n_expect - 0.1_dp
             end if
-            call check_close(err, c%tab%val(Q_Q, i), q_expect, 0.0_dp, 1.0e-10_dp, 'Q by statics')
+            call check_close(err, c%stations%val(Q_Q, i), q_expect, 0.0_dp, 1.0e-10_dp, &
+                             'Q by statics')
             if (allocated(err)) return
-            call check_close(err, c%tab%val(Q_N, i), n_expect, 0.0_dp, 1.0e-10_dp, 'N by statics')
+            call check_close(err, c%stations%val(Q_N, i), n_expect, 0.0_dp, 1.0e-10_dp, &
+                             'N by statics')
             if (allocated(err)) return
         end do stations
-        call check(err, maxval(abs(c%tab%val([Q_Q, Q_M], [1, c%tab%n]))) < 1.0e-9_dp, &
+        call check(err, maxval(abs(c%stations%val([Q_Q, Q_M], [1, c%stations%n]))) < 1.0e-9_dp, &
                    'Q and M do not vanish at the free ends')
     end subroutine test_beam_statics
 
@@ -207,19 +141,18 @@ contains
         type(case_t) :: c
         type(summary_t) :: s
         integer :: i
-        c%m = nondim_beam(0.05_dp, 0.05_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, &
-            x1=0.0_dp)], 20)
-        call solve_model(c, err)
+        call solve_case(nondim_beam(0.05_dp, 0.1_dp, 0.05_dp, 0.0_dp, ne=20, &
+                                    loads=[load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]), c, err)
         if (allocated(err)) return
-        i = minloc(abs(c%tab%val(Q_X, :)), dim=1)
-        call check(err, c%tab%val(Q_X, i + 1) == c%tab%val(Q_X, i), &
+        i = minloc(abs(c%stations%val(Q_X, :)), dim=1)
+        call check(err, c%stations%val(Q_X, i + 1) == c%stations%val(Q_X, i), &
             'the load station is not doubled')
         if (allocated(err)) return
-        call check_close(err, c%tab%val(Q_Q, i), 0.5_dp, 1.0e-9_dp, 0.0_dp, 'Q(0-)')
+        call check_close(err, c%stations%val(Q_Q, i), 0.5_dp, 1.0e-9_dp, 0.0_dp, 'Q(0-)')
         if (allocated(err)) return
-        call check_close(err, c%tab%val(Q_Q, i + 1), -0.5_dp, 1.0e-9_dp, 0.0_dp, 'Q(0+)')
+        call check_close(err, c%stations%val(Q_Q, i + 1), -0.5_dp, 1.0e-9_dp, 0.0_dp, 'Q(0+)')
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check(err, abs(s%m_sag%x) < 1.0e-12_dp .and. s%m_sag%value < 0.0_dp .and. &
                    s%m_hog%value < 1.0e-9_dp, 'sagging maximum not at the load, or hogging')
         if (allocated(err)) return
@@ -242,20 +175,20 @@ contains
         integer :: i
         call solve_deck('input/strip_footing.dat', 0, c, err)
         if (allocated(err)) return
-        x = c%tab%val(Q_X, :)
-        rhs = -c%tab%val(Q_Q, :) - 0.5_dp*c%m%structure%h*c%tab%val(Q_SX_FE, :)
+        x = c%stations%val(Q_X, :)
+        rhs = -c%stations%val(Q_Q, :) - 0.5_dp*c%model%structure%h*c%stations%val(Q_SX_FE, :)
         slope_max = 0.0_dp
-        do i = 1, c%tab%n - 1
-            if (x(i + 1) > x(i)) slope_max = max(slope_max, (abs(c%tab%val(Q_SZ_FE, i + 1) - &
-                c%tab%val(Q_SZ_FE, i)) + 0.5_dp*c%m%structure%h*abs(c%tab%val(Q_SX_FE, i + 1) - &
-                c%tab%val(Q_SX_FE, i)))/(x(i + 1) - x(i)))
+        do i = 1, c%stations%n - 1
+            if (x(i + 1) > x(i)) slope_max = max(slope_max, (abs(c%stations%val(Q_SZ_FE, i + 1) - &
+                c%stations%val(Q_SZ_FE, i)) + 0.5_dp*c%model%structure%h* &
+                abs(c%stations%val(Q_SX_FE, i + 1) - c%stations%val(Q_SX_FE, i)))/(x(i + 1) - x(i)))
         end do
-        pairs: do i = 1, c%tab%n - 1
+        pairs: do i = 1, c%stations%n - 1
             dx = x(i + 1) - x(i)
             if (dx <= 0.0_dp) cycle pairs
             if (any(abs(abs([3.3_dp, 3.7_dp]) - abs(x(i))) < dx) .or. &
                 any(abs(abs([3.3_dp, 3.7_dp]) - abs(x(i + 1))) < dx)) cycle pairs
-            dm = c%tab%val(Q_M, i + 1) - c%tab%val(Q_M, i)
+            dm = c%stations%val(Q_M, i + 1) - c%stations%val(Q_M, i)
             trap = 0.5_dp*dx*(rhs(i) + rhs(i + 1))
             bound = dx**3/12.0_dp*slope_max + 1.0e-9_dp
             call check(err, abs(dm - trap) <= bound, 'dM/dx differs from -Q - (h/2) sigma_x '// &
@@ -276,16 +209,16 @@ contains
         if (allocated(err)) return
         call solve_deck('input/strip_footing.dat', 320, fine, err)
         if (allocated(err)) return
-        q_max = maxval(abs(coarse%tab%val(Q_Q, :)))
-        stations: do i = 2, coarse%tab%n - 1
-            x = coarse%tab%val(Q_X, i)
+        q_max = maxval(abs(coarse%stations%val(Q_Q, :)))
+        stations: do i = 2, coarse%stations%n - 1
+            x = coarse%stations%val(Q_X, i)
             if (abs(abs(x) - 3.5_dp) < 0.3_dp) cycle stations   ! Q jumps inside the patches
             e = minloc(abs(0.5_dp*(fine%d%msh%x(1:) + fine%d%msh%x(:fine%d%msh%ne - 1)) - x), dim=1)
-            res = resultants(section_of(fine%m%structure), displacement_at(fine%d, &
+            res = resultants(section_of(fine%model%structure), displacement_at(fine%d, &
                 fine%sol%z(1:fine%d%nv), &
                                                                  e, 0.0_dp))
             q_fine = res(3)
-            call check(err, abs(q_fine - coarse%tab%val(Q_Q, i)) <= 2.0e-2_dp*q_max, &
+            call check(err, abs(q_fine - coarse%stations%val(Q_Q, i)) <= 2.0e-2_dp*q_max, &
                        'statics Q (N_e 40) and FE shear (N_e 320) disagree')
             if (allocated(err)) return
         end do stations
@@ -302,23 +235,23 @@ contains
         integer :: i, j
         call solve_deck('input/tank_raft.dat', 0, c, err)
         if (allocated(err)) return
-        j = minloc(abs(c%tab%val(Q_X, :) - 7.5_dp), dim=1)
-        call check_close(err, c%tab%val(Q_Q, j) - c%tab%val(Q_Q, j + 1), &
+        j = minloc(abs(c%stations%val(Q_X, :) - 7.5_dp), dim=1)
+        call check_close(err, c%stations%val(Q_Q, j) - c%stations%val(Q_Q, j + 1), &
             7069.0_dp/(2.0_dp*pi*7.5_dp), &
                          1.0e-9_dp, 0.0_dp, 'jump of Q_r at the wall ring')
         if (allocated(err)) return
-        call check(err, c%tab%val(Q_Q, 1) == 0.0_dp .and. abs(c%tab%val(Q_Q, &
-            c%tab%n)) < 1.0e-6_dp, &
+        call check(err, c%stations%val(Q_Q, 1) == 0.0_dp .and. abs(c%stations%val(Q_Q, &
+            c%stations%n)) < 1.0e-6_dp, &
                    'Q_r(0) or Q_r(a) not zero')
         if (allocated(err)) return
-        call check_close(err, c%tab%val(Q_M, 1), c%tab%val(Q_MT, 1), 1.0e-12_dp, 0.0_dp, &
+        call check_close(err, c%stations%val(Q_M, 1), c%stations%val(Q_MT, 1), 1.0e-12_dp, 0.0_dp, &
             'M_r(0) = M_t(0)')
         if (allocated(err)) return
-        stations: do i = 2, c%tab%n
-            r = c%tab%val(Q_X, i)
+        stations: do i = 2, c%stations%n
+            r = c%stations%val(Q_X, i)
             inside = 12064.0_dp*(r/8.0_dp)**2
             if (r > 7.5_dp .or. i > j) inside = inside + 7069.0_dp
-            call check_close(err, 2.0_dp*pi*r*c%tab%val(Q_Q, i), traction_integral(c, 2, &
+            call check_close(err, 2.0_dp*pi*r*c%stations%val(Q_Q, i), traction_integral(c, 2, &
                 r) - inside, &
                              0.0_dp, 1.0e-8_dp*19133.0_dp, '2 pi r Q_r by statics')
             if (allocated(err)) return
@@ -339,7 +272,7 @@ contains
         do k = 1, 3
             call solve_deck('input/default.dat', 10*2**k, c, err)
             if (allocated(err)) return
-            ratio(k) = abs(c%tab%val(Q_M, c%tab%n))/maxval(abs(c%tab%val(Q_M, :)))
+            ratio(k) = abs(c%stations%val(Q_M, c%stations%n))/maxval(abs(c%stations%val(Q_M, :)))
         end do
         call check(err, ratio(1) < 1.0e-2_dp .and. ratio(2) < ratio(1)/4.0_dp .and. &
                    ratio(3) < ratio(2)/4.0_dp, 'M_r(a) does not vanish with refinement')
@@ -347,7 +280,7 @@ contains
         do k = 1, 3
             call solve_deck('input/plate_nondim.dat', 10*2**k, c, err)
             if (allocated(err)) return
-            ratio(k) = abs(c%tab%val(Q_M, c%tab%n))/maxval(abs(c%tab%val(Q_M, :)))
+            ratio(k) = abs(c%stations%val(Q_M, c%stations%n))/maxval(abs(c%stations%val(Q_M, :)))
         end do
         call check(err, ratio(2) < 2.0e-2_dp .and. ratio(2) < ratio(1)/1.8_dp .and. &
                    ratio(3) < ratio(2)/1.8_dp, 'M_r(a) under a point load does not converge')
@@ -369,15 +302,16 @@ contains
         do k = 1, size(decks)
             call solve_deck(trim(decks(k)), 0, c, err)
             if (allocated(err)) return
-            stations: do i = 1, c%tab%n
-                call locate_element(c%d%msh, c%tab%val(Q_X, i), e, xi)
+            stations: do i = 1, c%stations%n
+                call locate_element(c%d%msh, c%stations%val(Q_X, i), e, xi)
                 e_lo = e
                 e_hi = e
                 if (xi >= 1.0_dp .and. e < c%d%msh%ne) e_hi = e + 1
                 near = pack(c%sol%state, c%sol%pts%elem >= e_lo .and. c%sol%pts%elem <= e_hi)
                 if (any(near /= near(1))) cycle stations
                 n_checked = n_checked + 1
-                call check(err, c%tab%state(i) == near(1), trim(decks(k))//': station state '// &
+                call check(err, c%stations%state(i) == near(1), trim(decks(k))// &
+                           ': station state '// &
                            'differs from the solver''s')
                 if (allocated(err)) return
             end do stations
@@ -394,15 +328,16 @@ contains
         logical, allocatable :: lifted(:)
         call solve_deck('input/plate_nondim.dat', 0, c, err)
         if (allocated(err)) return
-        lifted = c%tab%state == STATE_LIFTOFF
+        lifted = c%stations%state == STATE_LIFTOFF
         call check(err, count(lifted) >= 3, 'plate_nondim should lift off')
         if (allocated(err)) return
-        call check(err, all(c%tab%val(Q_GAP, :) > 0.0_dp .or. .not. lifted) .and. &
-                   all(c%tab%val(Q_GAP, :) == 0.0_dp .or. lifted), &
+        call check(err, all(c%stations%val(Q_GAP, :) > 0.0_dp .or. .not. lifted) .and. &
+                   all(c%stations%val(Q_GAP, :) == 0.0_dp .or. lifted), &
                        'gap: positive where lifted, 0 else')
         if (allocated(err)) return
-        call check(err, all(c%tab%flag == 0) .and. &
-                   all(c%tab%val(Q_SZ, :) >= -c%tab%tension_tol), 'tension or overlap at a station')
+        call check(err, all(c%stations%flag == 0) .and. &
+                   all(c%stations%val(Q_SZ, :) >= -c%stations%tension_tol), &
+                   'tension or overlap at a station')
     end subroutine test_liftoff_stations
 
     !> Largest alternation (two sign changes in a row of successive differences, the smallest of
@@ -429,12 +364,12 @@ contains
         type(case_t) :: c
         call solve_deck('input/strip_footing.dat', 0, c, err)
         if (allocated(err)) return
-        call check(err, zigzag(c%tab%val(Q_SZ_FE, :)) > 2.0e-2_dp .and. &
-                   zigzag(c%tab%val(Q_SX_FE, :)) > 1.0e-1_dp, &
+        call check(err, zigzag(c%stations%val(Q_SZ_FE, :)) > 2.0e-2_dp .and. &
+                   zigzag(c%stations%val(Q_SX_FE, :)) > 1.0e-1_dp, &
                        'the FE tractions no longer oscillate')
         if (allocated(err)) return
-        call check(err, zigzag(c%tab%val(Q_SZ, :)) < 5.0e-3_dp .and. &
-                   zigzag(c%tab%val(Q_SX, :)) < 4.0e-2_dp, 'recovered tractions oscillate')
+        call check(err, zigzag(c%stations%val(Q_SZ, :)) < 5.0e-3_dp .and. &
+                   zigzag(c%stations%val(Q_SX, :)) < 4.0e-2_dp, 'recovered tractions oscillate')
     end subroutine test_oscillation
 
     !> The recovered pressure at r = a/2 of the default raft converges: successive differences
@@ -447,8 +382,8 @@ contains
         do k = 1, 4
             call solve_deck('input/default.dat', 10*2**k, c, err)
             if (allocated(err)) return
-            i = minloc(abs(c%tab%val(Q_X, :) - 3.0_dp), dim=1)     ! a node at every N_e
-            p(k) = c%tab%val(Q_SZ, i)
+            i = minloc(abs(c%stations%val(Q_X, :) - 3.0_dp), dim=1)     ! a node at every N_e
+            p(k) = c%stations%val(Q_SZ, i)
         end do
         call check(err, &
             abs(p(3) - p(2)) < abs(p(2) - p(1)) .and. abs(p(4) - p(3)) < abs(p(3) - p(2)) &
@@ -464,20 +399,20 @@ contains
         type(summary_t) :: s
         call solve_deck('input/strip_footing.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check_close(err, s%mean_pressure, 200.0_dp, 1.0e-12_dp, 0.0_dp, 'strip mean pressure')
         if (allocated(err)) return
         call check_close(err, s%contact_length, 10.0_dp, 1.0e-12_dp, 0.0_dp, 'strip contact length')
         if (allocated(err)) return
         call solve_deck('input/tank_raft.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check_close(err, s%mean_pressure, 19133.0_dp/(pi*64.0_dp), 1.0e-12_dp, 0.0_dp, &
                          'raft mean pressure')
         if (allocated(err)) return
         call solve_deck('input/beam_physical.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check_close(err, s%utilisation, 0.2_dp, 1.0e-12_dp, 0.0_dp, 'H/(f V)')
     end subroutine test_summary_hand
 
@@ -490,11 +425,10 @@ contains
         type(summary_t) :: s
         real(dp) :: covered
         integer :: k
-        c%m = nondim_beam(1.0_dp, 0.05_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, &
-            x1=0.3_dp)], 40)
-        call solve_model(c, err)
+        call solve_case(nondim_beam(1.0_dp, 0.1_dp, 0.05_dp, 0.0_dp, ne=40, &
+                                    loads=[load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.3_dp)]), c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check(err, .not. s%intervals(1)%contact .and. s%intervals(1)%x1 == -0.5_dp .and. &
                    s%intervals(size(s%intervals))%contact, 'no lift-off interval at the left end')
         if (allocated(err)) return
@@ -505,10 +439,11 @@ contains
         call check_close(err, covered, 1.0_dp, 1.0e-12_dp, 0.0_dp, 'intervals tile the beam')
         if (allocated(err)) return
         ! the load is at 0.3 l: the centre x = 0 (node 20 of 40) has a pressure, its station's
-        k = minloc(abs(c%tab%val(Q_X, :)), dim=1)
-        call check(err, s%centre_defined .and. c%tab%val(Q_X, k) == 0.0_dp, 'no centre value')
+        k = minloc(abs(c%stations%val(Q_X, :)), dim=1)
+        call check(err, s%centre_defined .and. c%stations%val(Q_X, k) == 0.0_dp, 'no centre value')
         if (allocated(err)) return
-        call check_close(err, s%centre_pressure, c%tab%val(Q_SZ, k)/c%m%structure%b, 1.0e-14_dp, &
+        call check_close(err, s%centre_pressure, c%stations%val(Q_SZ, k)/c%model%structure%b, &
+            1.0e-14_dp, &
             0.0_dp, &
                          'pressure_centre is the station value at x = 0')
     end subroutine test_summary_liftoff
@@ -552,9 +487,11 @@ contains
         cb = 0.9_dp*log(3.0_dp - 0.4_dp)/0.8_dp
         do k = 1, 2
             do ne = 16, 32, 16
-                c%m = nondim_plate(1.0e3_dp, 0.1_dp, merge(0.0_dp, 1.0e3_dp, k == 1), 0.1_dp, &
-                                   [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.125_dp)], ne)
-                call solve_model(c, err)
+                call solve_case(nondim_plate(1.0e3_dp, 0.1_dp, 0.1_dp, &
+                                             merge(0.0_dp, 1.0e3_dp, k == 1), ne, &
+                                             [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, &
+                                                     x2=0.125_dp)]), &
+                                c, err)
                 if (allocated(err)) return
                 call estimated_entries(c, 'settlement_max', e, i)
                 exact = merge(250.0_dp, 250.0_dp/cb, k == 1)
@@ -585,10 +522,10 @@ contains
         call solve_deck('input/default.dat', 0, c, err)
         if (allocated(err)) return
         call check(err, minval(abs(c%d%msh%x - 0.4_dp)) > 1.0e-3_dp .and. &
-                   minval(abs(c%tab%val(Q_X, :) - 0.4_dp)) < 1.0e-12_dp, &
+                   minval(abs(c%stations%val(Q_X, :) - 0.4_dp)) < 1.0e-12_dp, &
                    'the patch edge r = 0.4 should be a station and not a node')
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check(err, abs(s%q_abs_max%x - 0.4_dp) < 1.0e-12_dp, &
             'max |Q_r| not at the column face')
         if (allocated(err)) return
@@ -598,7 +535,7 @@ contains
         if (allocated(err)) return
         call solve_deck('input/beam_physical.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         x = s%q_abs_max%x
         call check(err, abs(abs(x) - 0.25_dp) < 1.0e-12_dp, 'beam: max |Q| not at a column face')
         if (allocated(err)) return
@@ -623,25 +560,25 @@ contains
         real(dp) :: expect
         call solve_deck('input/beam_physical.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
-        call check(err, c%tab%state(1) == STATE_LIFTOFF .and. s%edge_point_in_contact(1), &
+        s = summarise(c%model, c%sol, c%stations)
+        call check(err, c%stations%state(1) == STATE_LIFTOFF .and. s%edge_point_in_contact(1), &
                    'beam: the left end should lift off and the point at d be in contact')
         if (allocated(err)) return
-        expect = station_interpolate(c%tab, Q_SZ, -6.0_dp + 0.8_dp)/c%m%structure%b
+        expect = station_interpolate(c%stations, Q_SZ, -6.0_dp + 0.8_dp)/c%model%structure%b
         call check_close(err, s%edge_pressure(1), expect, 1.0e-12_dp, 0.0_dp, &
                          'beam: pressure at d from the left end')
         if (allocated(err)) return
-        call check(err, any(c%tab%val(Q_X, :) == 0.0_dp), 'beam: no station at x = 0 exactly')
+        call check(err, any(c%stations%val(Q_X, :) == 0.0_dp), 'beam: no station at x = 0 exactly')
         if (allocated(err)) return
-        c%m = nondim_plate(1.0_dp, 0.6_dp, 0.0_dp, 0.3_dp, &
-                           [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)], 20)
-        call solve_model(c, err)
+        call solve_case(nondim_plate(1.0_dp, 0.6_dp, 0.3_dp, 0.0_dp, 20, &
+                                     [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=1.0_dp)]), &
+                        c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
-        call check(err, all(c%tab%state /= STATE_LIFTOFF) .and. s%edge_point_in_contact(2), &
+        s = summarise(c%model, c%sol, c%stations)
+        call check(err, all(c%stations%state /= STATE_LIFTOFF) .and. s%edge_point_in_contact(2), &
                    'thick pad: full contact and a pressure at d from the rim')
         if (allocated(err)) return
-        call check_close(err, s%edge_pressure(2), station_interpolate(c%tab, Q_SZ, 0.4_dp), &
+        call check_close(err, s%edge_pressure(2), station_interpolate(c%stations, Q_SZ, 0.4_dp), &
                          1.0e-12_dp, 0.0_dp, 'thick pad: pressure at d from the rim')
     end subroutine test_edge_pressure
 
@@ -657,14 +594,15 @@ contains
         integer :: i
         call solve_deck('input/default.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
-        call check(err, all(c%tab%val(Q_MT, :) <= 0.0_dp) .and. any(c%tab%val(Q_M, :) > 0.0_dp), &
+        s = summarise(c%model, c%sol, c%stations)
+        call check(err, all(c%stations%val(Q_MT, :) <= 0.0_dp) .and. &
+                   any(c%stations%val(Q_M, :) > 0.0_dp), &
                    'the default raft should sag everywhere in M_theta and hog somewhere in M_r')
         if (allocated(err)) return
         call check(err, .not. s%mt_hog%defined .and. s%mt_sag%defined .and. s%m_hog%defined &
                    .and. s%m_sag%defined .and. s%m_hog%value > 0.0_dp, 'defined moment extremes')
         if (allocated(err)) return
-        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%structure%length))
+        e = summary_entries(c%model, s, contact_extent(c%stations, c%model%structure%length))
         do i = 1, size(e)
             if (index(e(i)%key, 'hoop_moment_hogging') == 1) &
                 call check(err, .not. e(i)%defined, trim(e(i)%key)//' should be n/a')
@@ -691,12 +629,12 @@ contains
         real(dp) :: hog_nodes
         call solve_deck('input/plate_physical.dat', 0, c, err)
         if (allocated(err)) return
-        every = c%m
+        every = c%model
         every%output%stations = 0
         call tabulate(every, c%d, c%sol, nodes, err)
         if (allocated(err)) return
         hog_nodes = maxval(nodes%val(Q_M, :))
-        call check(err, c%m%output%stations == 21 .and. maxval(c%tab%val(Q_M, &
+        call check(err, c%model%output%stations == 21 .and. maxval(c%stations%val(Q_M, &
             :)) < 0.99_dp*hog_nodes, &
                    'plate_physical: the peak should lie between printed stations')
         if (allocated(err)) return
@@ -707,7 +645,7 @@ contains
         call check(err, status == EXIT_OK, 'plate_physical did not solve')
         if (allocated(err)) return
         call check_close(err, json_value(dir//'/plate_physical.json', '"moment_hogging":'), &
-                         max(hog_nodes, maxval(c%tab%val(Q_M, :))), 1.0e-5_dp, 0.0_dp, &
+                         max(hog_nodes, maxval(c%stations%val(Q_M, :))), 1.0e-5_dp, 0.0_dp, &
                          'moment_hogging (JSON) against every node and station')
     end subroutine test_design_every_node
 
@@ -728,7 +666,7 @@ contains
         do k = 1, 2
             call solve_deck('input/tank_raft.dat', 160*k, c, err)
             if (allocated(err)) return
-            s = summarise(c%m, c%sol, c%tab)
+            s = summarise(c%model, c%sol, c%stations)
             q(k) = s%m_sag%value
         end do
         reference = 2.0_dp*q(2) - q(1)
@@ -757,17 +695,18 @@ contains
         integer :: i, k
         call solve_deck('input/beam_physical.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
-        call check(err, c%tab%state(1) == STATE_LIFTOFF .and. c%tab%state(c%tab%n) == STATE_SLIP &
+        s = summarise(c%model, c%sol, c%stations)
+        call check(err, c%stations%state(1) == STATE_LIFTOFF .and. &
+                   c%stations%state(c%stations%n) == STATE_SLIP &
                    .and. size(s%slip_intervals) == 2, 'beam_physical: lift-off and two slip zones')
         if (allocated(err)) return
-        do i = 1, c%tab%n
-            x = c%tab%val(Q_X, i)
+        do i = 1, c%stations%n
+            x = c%stations%val(Q_X, i)
             inside = .false.
             do k = 1, size(s%slip_intervals)
                 inside = inside .or. (x >= s%slip_intervals(k)%x1 .and. x <= s%slip_intervals(k)%x2)
             end do
-            call check(err, inside .eqv. (c%tab%state(i) == STATE_SLIP), &
+            call check(err, inside .eqv. (c%stations%state(i) == STATE_SLIP), &
                        'a station and the slip intervals disagree')
             if (allocated(err)) return
         end do
@@ -804,7 +743,7 @@ contains
         do k = 1, 3
             call solve_deck('input/plate_nondim.dat', 10*2**k, c, err)
             if (allocated(err)) return
-            s = summarise(c%m, c%sol, c%tab)
+            s = summarise(c%model, c%sol, c%stations)
             w0(k) = s%w_max%value
         end do
         call check(err, w0(2) - w0(1) > 0.5_dp*(w0(3) - w0(2)) .and. w0(3) - w0(2) > &
@@ -823,13 +762,13 @@ contains
         end do
         call solve_deck('input/strip_footing.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check(err, s%pressure_max_singular .and. abs(abs(s%pressure_max%x) - 5.0_dp) < &
                    1.0e-12_dp, 'strip footing: the largest pressure is at an edge, singular')
         if (allocated(err)) return
         call solve_deck('input/default.dat', 0, c, err)
         if (allocated(err)) return
-        s = summarise(c%m, c%sol, c%tab)
+        s = summarise(c%model, c%sol, c%stations)
         call check(err, .not. s%pressure_max_singular .and. s%pressure_max%x == 0.0_dp, &
                    'default raft: the largest pressure is at the centre, regular')
     end subroutine test_singular_values
@@ -843,9 +782,9 @@ contains
         integer, intent(out) :: i
         type(summary_t) :: s
         integer :: k
-        s = summarise(c%m, c%sol, c%tab)
-        e = summary_entries(c%m, s, contact_extent(c%tab, c%m%structure%length))
-        call estimate_errors(c%m, c%d, e, c%sol%coarse, s%edge_in_contact)
+        s = summarise(c%model, c%sol, c%stations)
+        e = summary_entries(c%model, s, contact_extent(c%stations, c%model%structure%length))
+        call estimate_errors(c%model, c%d, e, c%sol%coarse, s%edge_in_contact)
         i = 0
         do k = 1, size(e)
             if (trim(e(k)%key) == key) i = k

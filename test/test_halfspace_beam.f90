@@ -13,19 +13,19 @@ module test_halfspace_beam
     use harness, only: unittest_t, new_unittest, check, check_close, error_t
     use quadrature, only: gauss_legendre
     use gsl_wrappers, only: integrand_t, integrate_qags
-    use mesh, only: mesh_t, new_mesh
-    use shape_functions, only: basis_t, new_basis, eval_basis, max_local, INTERP_P1, &
-                               INTERP_P2, INTERP_S2
+    use mesh, only: mesh_t
+    use shape_functions, only: basis_t, new_basis, INTERP_P1, INTERP_P2, INTERP_S2
     use halfspace_beam, only: assemble_beam_flexibility, beam_surface_displacement, &
                               strip_kernels
-    use lapack_interfaces, only: dpotrf
-    use halfspace_test_support, only: graded_rule, basis_value
+    use halfspace_test_support, only: basis_value, surface_t, strips, row_integrand_t, &
+                                      beam_length, make_bases, nested_flexibility, &
+                                      check_row_sums, check_symmetric, check_positive_definite, &
+                                      check_incompressible, check_fast_vs_reference
     implicit none
     private
     public :: collect_halfspace_beam
 
-
-    real(dp), parameter :: beam_length = 2.4_dp    !! l of every test mesh
+    type(surface_t), parameter :: strip = surface_t(plate=.false.)   !! meshes only (no width)
 
     !> Closed-form displacements of the module header, in a type to share the data.
     type :: soil_t
@@ -34,13 +34,12 @@ module test_halfspace_beam
 
     !> g_a(x) f(x) on one element, f a closed-form displacement (component 1..4 =
     !! w(p), u_x(p), w(q), u_x(q)).
-    type, extends(integrand_t) :: row_integrand_t
-        type(basis_t) :: basis
+    type, extends(row_integrand_t) :: closed_row_t
         type(soil_t) :: soil
-        integer :: element = 1, dof = 1, component = 1
+        integer :: component = 1
     contains
         procedure :: value => row_value
-    end type row_integrand_t
+    end type closed_row_t
 
     !> Boussinesq/Cerruti (B1), (B2) at (x_field, 0) due to a unit force at (xi, eta), for the
     !! component 1..3 = w(normal), u_x(tangential), w(tangential); integrated over eta.
@@ -82,18 +81,6 @@ contains
 
     ! ------------------------------------------------------------------ helpers
 
-    subroutine make_bases(ne, grading, fam_x, fam_z, bx, bz, err)
-        integer, intent(in) :: ne, fam_x, fam_z
-        character(len=*), intent(in) :: grading
-        type(basis_t), intent(out) :: bx, bz
-        type(error_t), allocatable, intent(out) :: err
-        type(mesh_t) :: msh
-        call new_mesh(msh, -0.5_dp*beam_length, 0.5_dp*beam_length, ne, grading, err)
-        if (allocated(err)) return
-        call new_basis(bx, msh, fam_x)
-        call new_basis(bz, msh, fam_z)
-    end subroutine make_bases
-
     pure real(dp) function anti_a(x, h)
         real(dp), intent(in) :: x, h
         anti_a = h*asinh(x/h)
@@ -132,7 +119,7 @@ contains
     end function closed_form
 
     function row_value(self, x) result(f)
-        class(row_integrand_t), intent(inout) :: self
+        class(closed_row_t), intent(inout) :: self
         real(dp), intent(in) :: x
         real(dp) :: f
         f = basis_value(self%basis, self%element, self%dof, x)* &
@@ -176,11 +163,6 @@ contains
     end function along_value
 
 
-    pure real(dp) function asymmetry(t)
-        real(dp), intent(in) :: t(:, :)
-        asymmetry = maxval(abs(t - transpose(t)))/maxval(abs(t))
-    end function asymmetry
-
     ! ------------------------------------------------------------------ tests
 
     !> (B9)–(B11) against QAGS integration of Boussinesq/Cerruti (B1), (B2) across the width
@@ -216,9 +198,10 @@ contains
     !! z^5/5, 1/sqrt(1+z^2) = 1 - z^2/2 + 3z^4/8 (z = h/X, omitted terms O(z^6) = 6e-17).
     subroutine test_jump_far_field(err)
         type(error_t), allocatable, intent(out) :: err
-        real(dp) :: k_zz, k_xx, k_zx, x_dist, z, point(3), corrected(3)
+        real(dp) :: k_zz, k_xx, k_zx, x_dist, z, point(3), corrected(3), k(3)
         real(dp), parameter :: g = 2.0_dp, nu = 0.15_dp, b = 0.3_dp
-        integer :: side
+        character(len=4), parameter :: names(3) = ['k_zz', 'k_xx', 'k_zx']
+        integer :: side, c
         sides: do side = -1, 1, 2
             call strip_kernels(real(side, dp)*1.0e-13_dp*b, g, nu, b, k_zz, k_xx, k_zx)
             call check_close(err, b*k_zx, real(side, dp)*(1.0_dp - 2.0_dp*nu)/(4.0_dp*g), &
@@ -233,18 +216,16 @@ contains
                            (1.0_dp - nu)*(1.0_dp - z**2/6.0_dp + 3.0_dp*z**4/40.0_dp) + &
                            nu*(1.0_dp - z**2/2.0_dp + 3.0_dp*z**4/8.0_dp), &
                            1.0_dp - z**2/3.0_dp + z**4/5.0_dp]
-        call check_close(err, k_zz, point(1), 1.5e-6_dp, 0.0_dp, 'far k_zz')
-        if (allocated(err)) return
-        call check_close(err, k_xx, point(2), 1.5e-6_dp, 0.0_dp, 'far k_xx')
-        if (allocated(err)) return
-        call check_close(err, k_zx, point(3), 1.5e-6_dp, 0.0_dp, 'far k_zx')
-        if (allocated(err)) return
-        call check_close(err, k_zz, corrected(1), 1.0e-13_dp, 0.0_dp, 'far k_zz, corrected')
-        if (allocated(err)) return
-        call check_close(err, k_xx, corrected(2), 1.0e-13_dp, 0.0_dp, 'far k_xx, corrected')
-        if (allocated(err)) return
-        call check_close(err, k_zx, corrected(3), 1.0e-13_dp, 0.0_dp, 'far k_zx, corrected')
-        if (allocated(err)) return
+        k = [k_zz, k_xx, k_zx]
+        point_values: do c = 1, 3
+            call check_close(err, k(c), point(c), 1.5e-6_dp, 0.0_dp, 'far '//names(c))
+            if (allocated(err)) return
+        end do point_values
+        corrected_values: do c = 1, 3
+            call check_close(err, k(c), corrected(c), 1.0e-13_dp, 0.0_dp, &
+                             'far '//names(c)//', corrected')
+            if (allocated(err)) return
+        end do corrected_values
     end subroutine test_jump_far_field
 
     !> Uniform line loads on the whole beam, all bases, uniform and graded meshes, widths from
@@ -263,7 +244,7 @@ contains
         character(len=80) :: what
         families: do fam = INTERP_P1, INTERP_S2
             meshes: do ig = 1, 2
-                call make_bases(8, trim(gradings(ig)), fam, fam, bx, bz, err)
+                call make_bases(strip, 8, trim(gradings(ig)), fam, fam, bx, bz, err)
                 if (allocated(err)) return
                 x = [0.0_dp, bx%x(0), bx%x(1), bx%x(3), 0.123_dp, 0.77_dp*bx%x(8), bx%x(8), &
                      1.4_dp*bx%x(8)]
@@ -317,7 +298,7 @@ contains
         real(dp) :: x(3), u(3), w(3), left, right, abserr, expected, got, scale
         integer :: i, c
         character(len=60) :: what
-        call make_bases(6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
+        call make_bases(strip, 6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
         if (allocated(err)) return
         f%soil = soil_t(g=0.8_dp, nu=0.35_dp, b=0.5_dp)
         x = [0.0_dp, 0.3_dp*beam_length, 0.5_dp*beam_length]
@@ -378,7 +359,7 @@ contains
             meshes: do ig = 1, 2
                 fam_x: do fx = INTERP_P1, INTERP_S2
                     fam_z: do fz = INTERP_P1, INTERP_S2
-                        call make_bases(5, trim(gradings(ig)), fx, fz, bx, bz, err)
+                        call make_bases(strip, 5, trim(gradings(ig)), fx, fz, bx, bz, err)
                         if (allocated(err)) return
                         call assemble_beam_flexibility(bx, bz, soil%g, soil%nu, soil%b, t, err)
                         if (allocated(err)) return
@@ -410,25 +391,10 @@ contains
             integer, intent(in) :: component
             character(len=*), intent(in) :: label
             type(error_t), allocatable, intent(out) :: err
-            type(row_integrand_t) :: f
-            real(dp) :: total, part, abserr
-            integer :: a, e
-            f%basis = basis
+            type(closed_row_t) :: f
             f%soil = soil
             f%component = component
-            rows: do a = 1, basis%n_dof
-                total = 0.0_dp
-                elements: do e = 1, basis%ne
-                    f%element = e
-                    f%dof = a
-                    call integrate_qags(f, basis%x(e - 1), basis%x(e), 1.0e-15_dp*scale, &
-                                        1.0e-13_dp, part, abserr, err)
-                    if (allocated(err)) return
-                    total = total + part
-                end do elements
-                call check_close(err, row_sum(a), total, 0.0_dp, 1.0e-10_dp*scale, label)
-                if (allocated(err)) return
-            end do rows
+            call check_row_sums(f, basis, row_sum, scale, label, err)
         end subroutine check_rows
     end subroutine test_row_sums
 
@@ -439,49 +405,18 @@ contains
     subroutine test_nested(err)
         type(error_t), allocatable, intent(out) :: err
         type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :), nodes(:), weights(:), x(:), wx(:), u(:), w(:), &
-                                 rx(:), rz(:), t_nested(:, :)
-        integer :: e, nx, nz, col, row, k, ib
+        real(dp), allocatable :: t(:, :), t_nested(:, :)
+        integer :: ib
         real(dp), parameter :: g = 1.7_dp, nu = 0.23_dp, widths(2) = [0.05_dp, 0.9_dp]
         character(len=60) :: what
-        call make_bases(4, 'EDGES', INTERP_P2, INTERP_P1, bx, bz, err)
+        call make_bases(strip, 4, 'EDGES', INTERP_P2, INTERP_P1, bx, bz, err)
         if (allocated(err)) return
-        nx = bx%n_dof
-        nz = bz%n_dof
-        allocate (x(0), wx(0))
-        elements: do e = 1, bx%ne
-            call graded_rule(bx%x(e - 1), bx%x(e), nodes, weights)
-            x = [x, nodes]
-            wx = [wx, weights]
-        end do elements
-        allocate (u(size(x)), w(size(x)), rx(nx), rz(nz), t_nested(nx + nz, nx + nz))
         widths_loop: do ib = 1, size(widths)
             call assemble_beam_flexibility(bx, bz, g, nu, widths(ib), t, err)
             if (allocated(err)) return
-            columns: do col = 1, nx + nz
-                rx = 0.0_dp
-                rz = 0.0_dp
-                if (col <= nx) then
-                    rx(col) = 1.0_dp
-                else
-                    rz(col - nx) = 1.0_dp
-                end if
-                call beam_surface_displacement(bx, bz, rx, rz, g, nu, widths(ib), x, u, w, err)
-                if (allocated(err)) return
-                rows: do row = 1, nx + nz
-                    t_nested(row, col) = 0.0_dp
-                    points: do k = 1, size(x)
-                        e = min(bx%ne, count(bx%x(1:bx%ne - 1) < x(k)) + 1)
-                        if (row <= nx) then
-                            t_nested(row, col) = t_nested(row, col) + wx(k)*u(k)* &
-                                                 basis_value(bx, e, row, x(k))
-                        else
-                            t_nested(row, col) = t_nested(row, col) + wx(k)*w(k)* &
-                                                 basis_value(bz, e, row - nx, x(k))
-                        end if
-                    end do points
-                end do rows
-            end do columns
+            call nested_flexibility(surface_t(plate=.false., b=widths(ib)), bx, bz, g, nu, &
+                                    t_nested, err)
+            if (allocated(err)) return
             write (what, '("max |T - T_nested| / max |T|, b = ",f4.2)') widths(ib)
             call check_close(err, maxval(abs(t - t_nested))/maxval(abs(t)), 0.0_dp, 0.0_dp, &
                              1.0e-12_dp, trim(what))
@@ -494,70 +429,25 @@ contains
     !! both triangles are checked independently by galerkin_vs_nested_displacement.)
     subroutine test_symmetric(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :)
-        integer :: fx, fz, ig, ib
-        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
         real(dp), parameter :: widths(2) = [0.01_dp, 2.0_dp]
+        integer :: ib
         widths_loop: do ib = 1, size(widths)
-            meshes: do ig = 1, 2
-                fam_x: do fx = INTERP_P1, INTERP_S2
-                    fam_z: do fz = INTERP_P1, INTERP_S2
-                        call make_bases(9, trim(gradings(ig)), fx, fz, bx, bz, err)
-                        if (allocated(err)) return
-                        call assemble_beam_flexibility(bx, bz, 3.0_dp, 0.1_dp, widths(ib), t, err)
-                        if (allocated(err)) return
-                        call check_close(err, asymmetry(t), 0.0_dp, 0.0_dp, 1.0e-12_dp, &
-                                         'beam T asymmetry')
-                        if (allocated(err)) return
-                    end do fam_z
-                end do fam_x
-            end do meshes
+            call check_symmetric(surface_t(plate=.false., b=widths(ib)), 'beam T asymmetry', err)
+            if (allocated(err)) return
         end do widths_loop
     end subroutine test_symmetric
 
     !> T positive definite: dpotrf succeeds for several meshes, bases, widths and nu.
     subroutine test_positive_definite(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :)
-        integer :: i, inu, info
-        real(dp), parameter :: nus(4) = [0.0_dp, 0.1_dp, 0.3_dp, 0.49_dp]
-        integer, parameter :: nes(4) = [1, 6, 15, 30]
         real(dp), parameter :: widths(4) = [0.5_dp, 0.02_dp, 3.0_dp, 0.1_dp]
-        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_S2, &
-            INTERP_S2, INTERP_P2, INTERP_P1, INTERP_S2], [2, 4])
-        character(len=7), parameter :: gradings(4) = ['UNIFORM', 'EDGES  ', 'UNIFORM', 'EDGES  ']
-        character(len=60) :: what
-        cases: do i = 1, size(nes)
-            call make_bases(nes(i), trim(gradings(i)), fams(1, i), fams(2, i), bx, bz, err)
-            if (allocated(err)) return
-            poisson: do inu = 1, size(nus)
-                call assemble_beam_flexibility(bx, bz, 1.0_dp, nus(inu), widths(i), t, err)
-                if (allocated(err)) return
-                call dpotrf('L', size(t, 1), t, size(t, 1), info)
-                write (what, '("dpotrf info = ",i0," (case ",i0,", nu = ",f4.2,")")') info, i, &
-                    nus(inu)
-                call check(err, info == 0, trim(what))
-                if (allocated(err)) return
-            end do poisson
-        end do cases
+        call check_positive_definite(strips(widths), [1, 6, 15, 30], err)
     end subroutine test_positive_definite
 
     !> nu_f = 0.5: the coupling blocks vanish identically (factor 1 - 2 nu, kernel ref. §0.1).
     subroutine test_incompressible(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :)
-        integer :: nx
-        call make_bases(6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
-        if (allocated(err)) return
-        call assemble_beam_flexibility(bx, bz, 1.0_dp, 0.5_dp, 0.3_dp, t, err)
-        if (allocated(err)) return
-        nx = bx%n_dof
-        call check(err, all(t(1:nx, nx + 1:) == 0.0_dp) .and. all(t(nx + 1:, 1:nx) == 0.0_dp), &
-                   'coupling blocks not zero for nu_f = 0.5')
-        if (allocated(err)) return
+        call check_incompressible(surface_t(plate=.false., b=0.3_dp), err)
     end subroutine test_incompressible
 
     !> The fixed-order assembly (galerkin_assembly) against the adaptive pair-by-pair reference
@@ -566,33 +456,9 @@ contains
     !! every entry within 1e-13 of the largest.
     subroutine test_fast_vs_reference(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :), t_ref(:, :)
-        integer :: ic, ig, inu
-        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_P2, &
-            INTERP_S2, INTERP_S2, INTERP_P2, INTERP_S2], [2, 4])
-        integer, parameter :: nes(4) = [12, 17, 17, 12]
-        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
         real(dp), parameter :: widths(3) = [0.0055_dp, 0.15_dp, 3.0_dp]
-        character(len=80) :: what
-        cases: do ic = 1, size(nes)
-            meshes: do ig = 1, 2
-                call make_bases(nes(ic), trim(gradings(ig)), fams(1, ic), fams(2, ic), bx, bz, err)
-                if (allocated(err)) return
-                widths_loop: do inu = 1, 3
-                    call assemble_beam_flexibility(bx, bz, 1.3_dp, 0.2_dp, widths(inu), t, err)
-                    if (allocated(err)) return
-                    call assemble_beam_flexibility(bx, bz, 1.3_dp, 0.2_dp, widths(inu), t_ref, &
-                                                   err, reference=.true.)
-                    if (allocated(err)) return
-                    write (what, '("fast vs reference, case ",i0,", ",a,", parameter ",i0)') ic, &
-                        trim(gradings(ig)), inu
-                    call check_close(err, maxval(abs(t - t_ref))/maxval(abs(t_ref)), 0.0_dp, &
-                                     0.0_dp, 1.0e-13_dp, trim(what))
-                    if (allocated(err)) return
-                end do widths_loop
-            end do meshes
-        end do cases
+        call check_fast_vs_reference(strips(widths), 1.3_dp, &
+                                     [0.2_dp, 0.2_dp, 0.2_dp], err)
     end subroutine test_fast_vs_reference
 
     !> The translated-pair reuse of galerkin_assembly on a mesh of two uniform zones (10

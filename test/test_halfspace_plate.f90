@@ -13,13 +13,14 @@ module test_halfspace_plate
     use errors, only: new_error, EXIT_INTERNAL
     use quadrature, only: gauss_legendre
     use gsl_wrappers, only: elliptic_ke_m1, integrand_t, integrate_qags
-    use mesh, only: mesh_t, new_mesh
-    use shape_functions, only: basis_t, new_basis, eval_basis, max_local, INTERP_P1, &
-                               INTERP_P2, INTERP_S2
+    use shape_functions, only: basis_t, INTERP_P1, INTERP_P2, INTERP_S2
     use halfspace_plate, only: assemble_plate_flexibility, plate_surface_displacement, &
                                ring_kernels, elliptic_ke_agm
     use lapack_interfaces, only: dpotrf
-    use halfspace_test_support, only: graded_rule, basis_value
+    use halfspace_test_support, only: basis_value, surface_t, row_integrand_t, make_bases, &
+                                      nested_flexibility, check_row_sums, check_symmetric, &
+                                      check_positive_definite, check_incompressible, &
+                                      check_fast_vs_reference
     use model, only: model_t, FIELD_SZ
     use discretization, only: discretization_t, new_discretization
     use halfspace_operator, only: assemble_flexibility
@@ -35,15 +36,15 @@ module test_halfspace_plate
     integer, parameter :: closed_u_pressure = 2   !! u_r(r) under uniform p = 1
     integer, parameter :: closed_w_shear = 3      !! u_z(r) under uniform q = 1
 
+    type(surface_t), parameter :: disk = surface_t(plate=.true.)   !! the disk r <= 1.3
+
     !> g_a(r) 2 pi r f(r) on one element, f one of the closed forms above.
-    type, extends(integrand_t) :: row_integrand_t
-        type(basis_t) :: basis
-        integer :: element = 1, dof = 1, kind = closed_w_pressure
+    type, extends(row_integrand_t) :: closed_row_t
+        integer :: kind = closed_w_pressure
         real(dp) :: g = 1.0_dp, nu = 0.3_dp, a = 1.0_dp
-        logical :: failed = .false.
     contains
         procedure :: value => row_value
-    end type row_integrand_t
+    end type closed_row_t
 
     !> Boussinesq/Cerruti (B1), (B2) integrand around a ring, theta in [0, pi] (doubled).
     type, extends(integrand_t) :: ring_theta_t
@@ -75,20 +76,8 @@ contains
 
     ! ------------------------------------------------------------------ helpers
 
-    subroutine make_bases(ne, grading, fam_x, fam_z, bx, bz, err)
-        integer, intent(in) :: ne, fam_x, fam_z
-        character(len=*), intent(in) :: grading
-        type(basis_t), intent(out) :: bx, bz
-        type(error_t), allocatable, intent(out) :: err
-        type(mesh_t) :: msh
-        call new_mesh(msh, 0.0_dp, 1.3_dp, ne, grading, err)
-        if (allocated(err)) return
-        call new_basis(bx, msh, fam_x)
-        call new_basis(bz, msh, fam_z)
-    end subroutine make_bases
-
     function row_value(self, x) result(f)
-        class(row_integrand_t), intent(inout) :: self
+        class(closed_row_t), intent(inout) :: self
         real(dp), intent(in) :: x
         real(dp) :: f
         real(dp) :: k_val, e_val, closed
@@ -136,12 +125,6 @@ contains
 
     !> sum over the points of a composite GL rule graded geometrically towards both ends of
     !! [a, b] (ratio 0.2, 12 levels, 20 points a piece): nodes and weights.
-
-    !> max |T - T^T| / max |T|.
-    pure real(dp) function asymmetry(t)
-        real(dp), intent(in) :: t(:, :)
-        asymmetry = maxval(abs(t - transpose(t)))/maxval(abs(t))
-    end function asymmetry
 
     ! ------------------------------------------------------------------ tests
 
@@ -213,7 +196,7 @@ contains
         e_f = 3.0e7_dp
         families: do fam = INTERP_P1, INTERP_S2
             meshes: do ig = 1, 2
-                call make_bases(7, trim(gradings(ig)), fam, fam, bx, bz, err)
+                call make_bases(disk, 7, trim(gradings(ig)), fam, fam, bx, bz, err)
                 if (allocated(err)) return
                 r = [0.0_dp, bz%x(1), 0.37_dp*a, 0.5_dp*a, bz%x(5), 0.999_dp*a, a]
                 allocate (rx(bx%n_dof), rz(bz%n_dof), u(size(r)), w(size(r)))
@@ -260,7 +243,7 @@ contains
         real(dp), allocatable :: rx(:), rz(:)
         real(dp) :: r(3), u(3), w(3), a, nu, e_f, g, k_val, e_val
         integer :: i
-        call make_bases(6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
+        call make_bases(disk, 6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
         if (allocated(err)) return
         a = bx%x(bx%ne)
         nu = 0.25_dp
@@ -303,7 +286,7 @@ contains
         meshes: do ig = 1, 2
             fam_x: do fx = INTERP_P1, INTERP_S2
                 fam_z: do fz = INTERP_P1, INTERP_S2
-                    call make_bases(5, trim(gradings(ig)), fx, fz, bx, bz, err)
+                    call make_bases(disk, 5, trim(gradings(ig)), fx, fz, bx, bz, err)
                     if (allocated(err)) return
                     call assemble_plate_flexibility(bx, bz, g, nu, t, err)
                     if (allocated(err)) return
@@ -334,29 +317,12 @@ contains
             integer, intent(in) :: kind
             character(len=*), intent(in) :: label
             type(error_t), allocatable, intent(out) :: err
-            type(row_integrand_t) :: f
-            real(dp) :: total, part, abserr
-            integer :: a, e
-            f%basis = basis
+            type(closed_row_t) :: f
             f%g = g
             f%nu = nu
             f%a = basis%x(basis%ne)
             f%kind = kind
-            rows: do a = 1, basis%n_dof
-                total = 0.0_dp
-                elements: do e = 1, basis%ne
-                    f%element = e
-                    f%dof = a
-                    call integrate_qags(f, basis%x(e - 1), basis%x(e), 1.0e-15_dp*scale, &
-                                        1.0e-13_dp, part, abserr, err)
-                    if (allocated(err)) return
-                    total = total + part
-                end do elements
-                call check(err, .not. f%failed, 'elliptic integral failed in the reference')
-                if (allocated(err)) return
-                call check_close(err, row_sum(a), total, 0.0_dp, 1.0e-10_dp*scale, label)
-                if (allocated(err)) return
-            end do rows
+            call check_row_sums(f, basis, row_sum, scale, label, err)
         end subroutine check_rows
     end subroutine test_row_sums
 
@@ -367,50 +333,16 @@ contains
     subroutine test_nested(err)
         type(error_t), allocatable, intent(out) :: err
         type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :), nodes(:), weights(:), r(:), wr(:), u(:), w(:), &
-                                 rx(:), rz(:), t_nested(:, :)
-        integer :: e, nx, nz, col, row, k
+        real(dp), allocatable :: t(:, :), t_nested(:, :)
         real(dp), parameter :: g = 1.7_dp, nu = 0.23_dp
-        call make_bases(3, 'EDGES', INTERP_P1, INTERP_S2, bx, bz, err)
+        call make_bases(disk, 3, 'EDGES', INTERP_P1, INTERP_S2, bx, bz, err)
         if (allocated(err)) return
         call assemble_plate_flexibility(bx, bz, g, nu, t, err)
         if (allocated(err)) return
-        nx = bx%n_dof
-        nz = bz%n_dof
-        allocate (r(0), wr(0))
-        elements: do e = 1, bx%ne
-            call graded_rule(bx%x(e - 1), bx%x(e), nodes, weights)
-            r = [r, nodes]
-            wr = [wr, weights]
-        end do elements
-        allocate (u(size(r)), w(size(r)), rx(nx), rz(nz), t_nested(nx + nz, nx + nz))
-        columns: do col = 1, nx + nz
-            rx = 0.0_dp
-            rz = 0.0_dp
-            if (col <= nx) then
-                rx(col) = 1.0_dp
-            else
-                rz(col - nx) = 1.0_dp
-            end if
-            call plate_surface_displacement(bx, bz, rx, rz, g, nu, r, u, w, err)
-            if (allocated(err)) return
-            rows: do row = 1, nx + nz
-                t_nested(row, col) = 0.0_dp
-                points: do k = 1, size(r)
-                    e = min(bx%ne, count(bx%x(1:bx%ne - 1) < r(k)) + 1)
-                    if (row <= nx) then
-                        t_nested(row, col) = t_nested(row, col) + wr(k)*2.0_dp*pi*r(k)*u(k)* &
-                                             basis_value(bx, e, row, r(k))
-                    else
-                        t_nested(row, col) = t_nested(row, col) + wr(k)*2.0_dp*pi*r(k)*w(k)* &
-                                             basis_value(bz, e, row - nx, r(k))
-                    end if
-                end do points
-            end do rows
-        end do columns
+        call nested_flexibility(disk, bx, bz, g, nu, t_nested, err)
+        if (allocated(err)) return
         call check_close(err, maxval(abs(t - t_nested))/maxval(abs(t)), 0.0_dp, 0.0_dp, &
                          1.0e-12_dp, 'max |T - T_nested| / max |T|')
-        if (allocated(err)) return
     end subroutine test_nested
 
     !> T symmetric, all base pairs, uniform and graded meshes: max |T - T^T| <= 1e-12 max |T|.
@@ -418,66 +350,19 @@ contains
     !! are checked independently by galerkin_vs_nested_displacement.)
     subroutine test_symmetric(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :)
-        integer :: fx, fz, ig
-        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
-        meshes: do ig = 1, 2
-            fam_x: do fx = INTERP_P1, INTERP_S2
-                fam_z: do fz = INTERP_P1, INTERP_S2
-                    call make_bases(9, trim(gradings(ig)), fx, fz, bx, bz, err)
-                    if (allocated(err)) return
-                    call assemble_plate_flexibility(bx, bz, 3.0_dp, 0.1_dp, t, err)
-                    if (allocated(err)) return
-                    call check_close(err, asymmetry(t), 0.0_dp, 0.0_dp, 1.0e-12_dp, &
-                                     'plate T asymmetry')
-                    if (allocated(err)) return
-                end do fam_z
-            end do fam_x
-        end do meshes
+        call check_symmetric(disk, 'plate T asymmetry', err)
     end subroutine test_symmetric
 
     !> T positive definite (elastic energy): dpotrf succeeds for several meshes, bases, nu.
     subroutine test_positive_definite(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :)
-        integer :: i, inu, info
-        real(dp), parameter :: nus(4) = [0.0_dp, 0.1_dp, 0.3_dp, 0.49_dp]
-        integer, parameter :: nes(4) = [1, 6, 15, 24]
-        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_S2, &
-            INTERP_S2, INTERP_P2, INTERP_P1, INTERP_S2], [2, 4])
-        character(len=7), parameter :: gradings(4) = ['UNIFORM', 'EDGES  ', 'UNIFORM', 'EDGES  ']
-        character(len=60) :: what
-        cases: do i = 1, size(nes)
-            call make_bases(nes(i), trim(gradings(i)), fams(1, i), fams(2, i), bx, bz, err)
-            if (allocated(err)) return
-            poisson: do inu = 1, size(nus)
-                call assemble_plate_flexibility(bx, bz, 1.0_dp, nus(inu), t, err)
-                if (allocated(err)) return
-                call dpotrf('L', size(t, 1), t, size(t, 1), info)
-                write (what, '("dpotrf info = ",i0," (case ",i0,", nu = ",f4.2,")")') info, i, &
-                    nus(inu)
-                call check(err, info == 0, trim(what))
-                if (allocated(err)) return
-            end do poisson
-        end do cases
+        call check_positive_definite([disk, disk, disk, disk], [1, 6, 15, 24], err)
     end subroutine test_positive_definite
 
     !> nu_f = 0.5: (1 - 2 nu) = 0, the coupling blocks vanish identically (kernel ref. §0.1).
     subroutine test_incompressible(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :)
-        integer :: nx
-        call make_bases(6, 'EDGES', INTERP_P2, INTERP_S2, bx, bz, err)
-        if (allocated(err)) return
-        call assemble_plate_flexibility(bx, bz, 1.0_dp, 0.5_dp, t, err)
-        if (allocated(err)) return
-        nx = bx%n_dof
-        call check(err, all(t(1:nx, nx + 1:) == 0.0_dp) .and. all(t(nx + 1:, 1:nx) == 0.0_dp), &
-                   'coupling blocks not zero for nu_f = 0.5')
-        if (allocated(err)) return
+        call check_incompressible(disk, err)
     end subroutine test_incompressible
 
     !> Mesh-independent quantity: stiffness of a rigid frictionless flat punch, P/delta =
@@ -497,7 +382,7 @@ contains
         previous = 0.0_dp
         levels: do level = 1, 4
             ne = 4*2**(level - 1)
-            call make_bases(ne, 'UNIFORM', INTERP_P1, INTERP_P1, bx, bz, err)
+            call make_bases(disk, ne, 'UNIFORM', INTERP_P1, INTERP_P1, bx, bz, err)
             if (allocated(err)) return
             call assemble_plate_flexibility(bx, bz, g, nu, t, err)
             if (allocated(err)) return
@@ -544,33 +429,7 @@ contains
     !! P1/P1, P2/P2, S2/S2, P2/S2, two nu; every entry within 1e-13 of the largest.
     subroutine test_fast_vs_reference(err)
         type(error_t), allocatable, intent(out) :: err
-        type(basis_t) :: bx, bz
-        real(dp), allocatable :: t(:, :), t_ref(:, :)
-        integer :: ic, ig, inu
-        integer, parameter :: fams(2, 4) = reshape([INTERP_P1, INTERP_P1, INTERP_P2, INTERP_P2, &
-            INTERP_S2, INTERP_S2, INTERP_P2, INTERP_S2], [2, 4])
-        integer, parameter :: nes(4) = [12, 17, 17, 12]
-        character(len=7), parameter :: gradings(2) = ['UNIFORM', 'EDGES  ']
-        real(dp), parameter :: nus(2) = [0.1_dp, 0.3_dp]
-        character(len=80) :: what
-        cases: do ic = 1, size(nes)
-            meshes: do ig = 1, 2
-                call make_bases(nes(ic), trim(gradings(ig)), fams(1, ic), fams(2, ic), bx, bz, err)
-                if (allocated(err)) return
-                poisson: do inu = 1, 2
-                    call assemble_plate_flexibility(bx, bz, 2.3_dp, nus(inu), t, err)
-                    if (allocated(err)) return
-                    call assemble_plate_flexibility(bx, bz, 2.3_dp, nus(inu), t_ref, err, &
-                                                    reference=.true.)
-                    if (allocated(err)) return
-                    write (what, '("fast vs reference, case ",i0,", ",a,", parameter ",i0)') ic, &
-                        trim(gradings(ig)), inu
-                    call check_close(err, maxval(abs(t - t_ref))/maxval(abs(t_ref)), 0.0_dp, &
-                                     0.0_dp, 1.0e-13_dp, trim(what))
-                    if (allocated(err)) return
-                end do poisson
-            end do meshes
-        end do cases
+        call check_fast_vs_reference([disk, disk], 2.3_dp, [0.1_dp, 0.3_dp], err)
     end subroutine test_fast_vs_reference
 
     !> The interpolated far blocks (galerkin_assembly, add_blocks) against the pair-by-pair
@@ -596,7 +455,8 @@ contains
         character(len=80) :: what
         cases: do ic = 1, size(nes)
             meshes: do ig = 1, 2
-                call make_bases(nes(ic), trim(gradings(ig)), fams(1, ic), fams(2, ic), bx, bz, err)
+                call make_bases(disk, nes(ic), trim(gradings(ig)), fams(1, ic), fams(2, ic), bx, &
+                                bz, err)
                 if (allocated(err)) return
                 call assemble_plate_flexibility(bx, bz, 2.3_dp, 0.2_dp, t, err)
                 if (allocated(err)) return
@@ -614,7 +474,7 @@ contains
                 !$ threads = omp_get_max_threads()
                 if (ic > 1 .or. ig > 1) cycle meshes
                 ! large enough for OpenBLAS to split a dgemm over its threads (P2, N_e = 700)
-                call make_bases(700, 'EDGES', INTERP_P2, INTERP_P2, bx, bz, err)
+                call make_bases(disk, 700, 'EDGES', INTERP_P2, INTERP_P2, bx, bz, err)
                 if (allocated(err)) return
                 blas = blas_thread_count()
                 !$ call omp_set_num_threads(1)

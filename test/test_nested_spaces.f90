@@ -9,7 +9,8 @@ module test_nested_spaces
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
     use model, only: model_t, load_t, MODEL_PLATE, MODEL_BEAM, LOAD_POINT, LOAD_RING, FIELD_SX, &
-                     FIELD_SZ, complete_model
+                     FIELD_SZ
+    use contact_test_support, only: nondim_plate, nondim_beam
     use discretization, only: discretization_t, new_discretization, discretise_mesh
     use applied_loads, only: load_positions
     use mesh, only: mesh_t
@@ -63,26 +64,19 @@ contains
         integer, intent(in) :: kind, family
         character(len=*), intent(in) :: grading
         type(model_t) :: m
-        m%structure%kind = kind
-        m%nondim = .true.
-        m%groups%rho = 0.01_dp
-        m%groups%zeta = 0.1_dp
-        m%groups%beta = 0.05_dp
-        m%ground%nu_f = 0.1_dp
-        m%mesh%ne = 41
-        m%mesh%grading = grading
-        m%mesh%interp(FIELD_SX) = family
-        m%mesh%interp(FIELD_SZ) = family
         if (kind == MODEL_PLATE) then
-            m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+            m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.0_dp, 41)
             if (grading == 'LOADS') m%loads = [load_t(kind=LOAD_RING, fz=1.0_dp, x1=0.37_dp), &
                                                load_t(kind=LOAD_RING, fz=0.5_dp, x1=0.71_dp)]
         else
-            m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.137_dp)]
+            m = nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.0_dp, ne=41, &
+                            loads=[load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.137_dp)])
             if (grading == 'LOADS') m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=-0.23_dp), &
                                                load_t(kind=LOAD_POINT, fz=0.5_dp, x1=0.31_dp)]
         end if
-        call complete_model(m)
+        m%mesh%grading = grading
+        m%mesh%interp(FIELD_SX) = family
+        m%mesh%interp(FIELD_SZ) = family
     end function case_model
 
     subroutine compare(m, err)

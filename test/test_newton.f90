@@ -21,13 +21,13 @@ module test_newton
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_ANALYSIS
-    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
-                     complete_model, &
+    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_PATCH, &
                      total_vertical_load, friction_compliance, METHOD_NEWTON, METHOD_TWOLOOP, &
                      FIELD_U, FIELD_SZ
     use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact
-    use station_results, only: station_table_t, tabulate
+    use contact_solver, only: solution_t
+    use station_results, only: station_table_t
+    use solved_case, only: case_t, solve_case
     use station_columns, only: Q_GAP, Q_SLIP, Q_W, Q_X
     use station_test_support, only: nd, nd_all
     use deck_reader, only: deck_t, read_deck, case_model
@@ -177,17 +177,8 @@ contains
         integer :: k, i
         frictions: do i = 1, size(fs)
             meshes_loop: do k = 1, size(meshes)
-                m = model_t()
-                m%structure%kind = MODEL_PLATE
-                m%nondim = .true.
-                m%groups%rho = 1.0e-6_dp
-                m%groups%zeta = 0.1_dp
-                m%structure%nu = 0.3_dp
-                m%ground%nu_f = 0.1_dp
-                m%interface%f = fs(i)
-                m%mesh%ne = meshes(k)
-                m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.1_dp)]
-                call complete_model(m)
+                m = nondim_plate(1.0e-6_dp, 0.1_dp, 0.1_dp, fs(i), meshes(k), &
+                                 [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, x2=0.1_dp)])
                 write (what, '(a,f3.1,a,i0)') 'soft plate, disk load, f ', fs(i), &
                     ', N_e = ', meshes(k)
                 call require_solved(m, trim(what), err)
@@ -399,8 +390,6 @@ contains
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
         type(model_t) :: m
-        type(discretization_t) :: d
-        type(solution_t) :: sol
         type(station_table_t) :: tab
         character(len=:), allocatable :: label
         call read_deck('input/paper/fig07_ref.dat', deck, err)
@@ -408,13 +397,7 @@ contains
         call case_model(deck, 5, m, label, err)
         if (allocated(err)) return
         m%solver%method = METHOD_NEWTON
-        call require_solved(m, 'fig07_ref case 5', err)
-        if (allocated(err)) return
-        call new_discretization(m, d, err)
-        if (allocated(err)) return
-        call solve_contact(m, d, sol, err)
-        if (allocated(err)) return
-        call tabulate(m, d, sol, tab, err)
+        call require_solved(m, 'fig07_ref case 5', err, tab_out=tab)
         if (allocated(err)) return
         call check_close(err, maxval(abs(nd_all(m, tab, 'Sigma_x^h'))), 1.386299_dp, &
                          1.0e-6_dp, 0.0_dp, 'fig07_ref case 5: max |Sigma_x|')
@@ -502,8 +485,7 @@ contains
     subroutine compare_schur_dense(m, err)
         type(model_t), intent(in) :: m
         type(error_t), allocatable, intent(out) :: err
-        type(discretization_t) :: d
-        type(solution_t) :: sol
+        type(case_t) :: c
         type(system_t) :: sys
         type(schur_t) :: sc
         type(schur_factor_t) :: fac
@@ -511,21 +493,20 @@ contains
         real(dp), allocatable :: sigma(:, :), b(:)
         integer :: i, flipped
         logical :: factorised
-        call new_discretization(m, d, err)
-        if (.not. allocated(err)) call solve_contact(m, d, sol, err)
-        if (.not. allocated(err)) call build_system(m, d, sol%pts, sys, err)
+        call solve_case(m, c, err)
+        if (.not. allocated(err)) call build_system(m, c%d, c%sol%pts, sys, err)
         if (allocated(err)) return
         call use_rigid_coordinates(sys)      ! as the solvers use it
-        call new_schur(d, sys, sc)
+        call new_schur(c%d, sys, sc)
         call check(err, sc%ready, 'the Schur complement is not ready')
         if (allocated(err)) return
-        b = [(sin(real(i, dp)), i=1, d%n)]
-        sigma = point_tractions(sol%pts, sol%z)
-        call set_terms(sys, sys%law, sol%pts, sigma, st)
+        b = [(sin(real(i, dp)), i=1, c%d%n)]
+        sigma = point_tractions(c%sol%pts, c%sol%z)
+        call set_terms(sys, sys%law, c%sol%pts, sigma, st)
         call schur_prepare(sc, st, fac, factorised, err)
         if (allocated(err)) return
         call check(err, factorised, 'first Schur step not factorised')
-        if (.not. allocated(err)) call compare_one(d, sys, sc, fac, sol, sigma, b, err)
+        if (.not. allocated(err)) call compare_one(c%d, sys, sc, fac, c%sol, sigma, b, err)
         if (allocated(err)) return
         ! two points in compression lift off: a low-rank change of the set terms
         flipped = 0
@@ -535,11 +516,11 @@ contains
             flipped = flipped + 1
             if (flipped == 2) exit points
         end do points
-        call set_terms(sys, sys%law, sol%pts, sigma, st)
+        call set_terms(sys, sys%law, c%sol%pts, sigma, st)
         call schur_prepare(sc, st, fac, factorised, err)
         if (allocated(err)) return
         call check(err, .not. factorised .and. fac%nu > 0, 'two changed points: no update')
-        if (.not. allocated(err)) call compare_one(d, sys, sc, fac, sol, sigma, b, err)
+        if (.not. allocated(err)) call compare_one(c%d, sys, sc, fac, c%sol, sigma, b, err)
     end subroutine compare_schur_dense
 
     subroutine compare_one(d, sys, sc, fac, sol, sigma, b, err)

@@ -4,12 +4,10 @@
 module test_paper
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
-    use errors, only: new_error, EXIT_INTERNAL
     use model, only: model_t
-    use deck_reader, only: deck_t, read_deck, case_count, case_model
-    use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact
-    use station_results, only: station_table_t, tabulate
+    use station_results, only: station_table_t
+    use solved_case, only: case_t
+    use contact_test_support, only: solve_deck
     use station_test_support, only: nd, nd_all
     implicit none
     private
@@ -30,30 +28,18 @@ contains
                  new_unittest('fig07_parabolic_interactions_error', test_parabolic_interactions)]
     end subroutine collect_paper
 
-    !> Solve case i of a deck: read, case_model, discretise, solve, tabulate at the stations.
+    !> Solve case i of a deck (contact_test_support::solve_deck): its model and stations.
     subroutine solve_deck_case(path, i, m, tab, err)
         character(len=*), intent(in) :: path
         integer, intent(in) :: i
         type(model_t), intent(out) :: m
         type(station_table_t), intent(out) :: tab
         type(error_t), allocatable, intent(out) :: err
-        type(deck_t) :: deck
-        type(discretization_t) :: d
-        type(solution_t) :: sol
-        character(len=:), allocatable :: label
-        call read_deck(path, deck, err)
+        type(case_t) :: c
+        call solve_deck(path, 0, c, err, case_no=i)
         if (allocated(err)) return
-        if (i > case_count(deck)) then
-            call new_error(err, EXIT_INTERNAL, path//' has fewer cases than the test expects')
-            return
-        end if
-        call case_model(deck, i, m, label, err)
-        if (allocated(err)) return
-        call new_discretization(m, d, err)
-        if (allocated(err)) return
-        call solve_contact(m, d, sol, err)
-        if (allocated(err)) return
-        call tabulate(m, d, sol, tab, err)
+        m = c%model
+        tab = c%stations
     end subroutine solve_deck_case
 
     !> Nondimensional W and the finite-element Sigma_x, Sigma_z (the values the paper prints)

@@ -15,9 +15,7 @@ module test_properties
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
                      LOAD_MOMENT, complete_model, total_vertical_load
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
-    use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact
-    use station_results, only: station_table_t, tabulate
+    use solved_case, only: case_t, solve_case
     use design_summary, only: summary_t, summarise
     implicit none
     private
@@ -162,9 +160,7 @@ contains
         character(len=*), intent(in) :: what
         integer, intent(inout) :: n_solved, n_refused
         type(error_t), allocatable, intent(out) :: err
-        type(discretization_t) :: d
-        type(solution_t) :: sol
-        type(station_table_t) :: tab
+        type(case_t) :: c
         type(summary_t) :: s
         type(error_t), allocatable :: run_err
         logical :: slides, overturns
@@ -173,9 +169,7 @@ contains
         slides = abs(sum(m%loads%fx)) > m%interface%f*v
         overturns = m%structure%kind == MODEL_BEAM .and. abs(resultant_arm(m)) >= 0.5_dp &
             *m%structure%length
-        call new_discretization(m, d, run_err)
-        if (.not. allocated(run_err)) call solve_contact(m, d, sol, run_err)
-        if (.not. allocated(run_err)) call tabulate(m, d, sol, tab, run_err)
+        call solve_case(m, c, run_err)
         if (allocated(run_err)) then
             n_refused = n_refused + 1
             call check(err, run_err%code == EXIT_ANALYSIS .and. (slides .or. overturns), &
@@ -192,14 +186,15 @@ contains
             what//': solved although the load slides '// &
                    'or overturns the structure')
         if (allocated(err)) return
-        call check(err, all(abs(sol%reaction - sol%applied) <= 1.0e-8_dp*v*[1.0_dp, 1.0_dp, &
+        call check(err, all(abs(c%sol%reaction - c%sol%applied) <= 1.0e-8_dp*v*[1.0_dp, 1.0_dp, &
                                                                              m%structure%length]), &
                    what//': statics violated')
         if (allocated(err)) return
-        call check(err, all(tab%val == tab%val) .and. all(abs(tab%val) <= huge(1.0_dp)), &
+        call check(err, all(c%stations%val == c%stations%val) .and. &
+                   all(abs(c%stations%val) <= huge(1.0_dp)), &
                    what//': a station value is NaN or infinite')
         if (allocated(err)) return
-        s = summarise(m, sol, tab)
+        s = summarise(m, c%sol, c%stations)
         block
             character(len=80) :: numbers
             write (numbers, '(a,es10.3,a,es10.3)') ' excess ', s%admissibility, ' tol ', &

@@ -13,11 +13,12 @@
 module test_simplifications
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, LOAD_PATCH, &
-                     LOAD_MOMENT, complete_model
+    use model, only: model_t, load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t, solve_contact
-    use station_results, only: station_table_t, tabulate
+    use station_results, only: station_table_t
+    use solved_case, only: case_t, solve_case
+    use contact_test_support, only: nondim_beam, nondim_plate
     use station_columns, only: Q_X, Q_W, Q_PSI, Q_SZ, Q_STATE, Q_Q, Q_M
     use model_reduction, only: reduction_t, plan_reduction
     use method_notes, only: simplification_text
@@ -40,37 +41,14 @@ contains
                  new_unittest('lift_off_decoupled_plate', test_lift_off_decoupled)]
     end subroutine collect_simplifications
 
-    !> NONDIM beam (l = 1, F = 1, beta 0.05, zeta 0.1) with the given loads.
+    !> The suite's NONDIM beam (contact_test_support: zeta 0.1, beta 0.05), loads given.
     function beam(rho, f, ne, loads) result(m)
         real(dp), intent(in) :: rho, f
         integer, intent(in) :: ne
         type(load_t), intent(in) :: loads(:)
         type(model_t) :: m
-        m%structure%kind = MODEL_BEAM
-        m%nondim = .true.
-        m%groups%rho = rho
-        m%groups%zeta = 0.1_dp
-        m%groups%beta = 0.05_dp
-        m%interface%f = f
-        m%mesh%ne = ne
-        m%loads = loads
-        call complete_model(m)
+        m = nondim_beam(rho, 0.1_dp, 0.05_dp, f, ne=ne, loads=loads)
     end function beam
-
-    !> NONDIM plate (a = 1, F = 1, zeta 0.1), central point load.
-    function plate(rho, f, ne) result(m)
-        real(dp), intent(in) :: rho, f
-        integer, intent(in) :: ne
-        type(model_t) :: m
-        m%structure%kind = MODEL_PLATE
-        m%nondim = .true.
-        m%groups%rho = rho
-        m%groups%zeta = 0.1_dp
-        m%interface%f = f
-        m%mesh%ne = ne
-        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
-        call complete_model(m)
-    end function plate
 
     !> Stations of m solved with and without the simplifications; the largest difference of
     !! any column relative to that column's largest value; red: the plan of the simplified run.
@@ -113,19 +91,17 @@ contains
         end do quantities
     end subroutine compare
 
+    !> The stations of m (solved_case) and the plan of its simplifications.
     subroutine stations(m, tab, red, err)
         type(model_t), intent(in) :: m
         type(station_table_t), intent(out) :: tab
         type(reduction_t), intent(out) :: red
         type(error_t), allocatable, intent(out) :: err
-        type(discretization_t) :: d
-        type(solution_t) :: sol
-        call new_discretization(m, d, err)
+        type(case_t) :: c
+        call solve_case(m, c, err)
         if (allocated(err)) return
-        red = plan_reduction(m, d)
-        call solve_contact(m, d, sol, err)
-        if (allocated(err)) return
-        call tabulate(m, d, sol, tab, err)
+        red = plan_reduction(m, c%d)
+        tab = c%stations
     end subroutine stations
 
     function discretised(m) result(d)
@@ -242,7 +218,8 @@ contains
 
     subroutine test_frictionless_plate(err)
         type(error_t), allocatable, intent(out) :: err
-        call require_frictionless(plate(0.01_dp, 0.0_dp, 40), 'plate rho 0.01', err)
+        call require_frictionless(nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.0_dp, 40), &
+                                  'plate rho 0.01', err)
     end subroutine test_frictionless_plate
 
     !> Off-centre load: frictionless only (no half beam).
@@ -278,7 +255,7 @@ contains
         character(len=:), allocatable :: text
         character(len=200) :: line
         real(dp) :: diff
-        m = plate(0.01_dp, 0.5_dp, 200)
+        m = nondim_plate(0.01_dp, 0.1_dp, 0.1_dp, 0.5_dp, 200)
         full = m
         full%solver%simplify = .false.
         call new_discretization(m, d, err)
