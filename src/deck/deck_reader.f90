@@ -1,10 +1,12 @@
 !> Input decks (SPEC §8): card images -> the problem (`model_t`, physical units) and its SWEEP
 !! cards. Every input error of the deck is collected and reported at once, in line order, as
 !! `deck:line:columns: what was expected, got what was found`, followed by the line and a caret
-!! marker (the fpm file_parse_error pattern); the run is then refused (EXIT_INPUT). Library code: never prints or stops.
+!! marker (the fpm file_parse_error pattern); the run is then refused (EXIT_INPUT). Library
+!! code: never prints or stops.
 !!
-!! Cards (columns 1-10 the name, fields f1..f7 in columns 11-20, 21-30, ..., 71-80; README and
-!! doc/deck_cards.md list every field, default, unit and message):
+!! Cards (columns 1-10 the name, fields f1..f7 in columns 11-20, 21-30, ..., 71-80; README's
+!! "Input decks: reference" lists every field with its default, unit and rule, doc/ERRORS.md
+!! every message):
 !!
 !!     *...+....1....+....2....+....3....+....4....+....5....+....6....+....7....+....8
 !!     TITLE     Circular concrete raft, 8000 kN column load, elastic half-space
