@@ -167,9 +167,7 @@ contains
         !> T of d, restricted from a finer mesh (nested_spaces): moved in, not assembled
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(discretization_t), intent(in), optional :: nested   !! a mesh nested in d, and
-        !> its T (P^T T P). inout, not out: with intent(out), one -O3 build (gfortran 12)
-        !! crashed in build_system whenever it was absent (plate_nondim.dat); a clean rebuild
-        !! by review did not reproduce it; inout is legal either way
+        !> its T (P^T T P). inout, not out (doc/CHOICES.md, "intent(inout) of t_nested")
         real(dp), allocatable, intent(inout), optional :: t_nested(:, :)
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         real(dp), allocatable :: t_mat(:, :), b0(:)

@@ -1,4 +1,4 @@
-!> Model only what a scene needs (issue 8 item 4): the discrete contact problem restricted to a
+!> Model only what a scene needs (doc/CHOICES.md, Simplifications): the discrete contact problem restricted to a
 !! subspace of the full one that provably holds its solution, solved there, and expanded back
 !! to the full coefficient vector, so that every later stage (stations, summary, files,
 !! checks) sees the full model's numbering.

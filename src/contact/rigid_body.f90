@@ -1,4 +1,5 @@
-!> Rigid-body coordinates of the structure (issue 7 item 4: stiff structures).
+!> Rigid-body coordinates of the structure: stiff structures (rho up to 1e6 with zeta down to
+!! 0.001) solved with the equilibrium check at 1e-8 (doc/CHOICES.md, Stiff thin structures).
 !!
 !! K annihilates the structure's rigid-body modes (translations; for the beam also the
 !! rotation psi = 1, w = x). For a structure much stiffer than the soil the displacement is a

@@ -1,5 +1,6 @@
-!> Operations on a given mesh for adaptive refinement (issue 8 item 3): bisect marked
-!! elements, keep neighbouring elements within a size ratio of 2, move (snap) a node onto a
+!> Operations on a given mesh for adaptive refinement (ADAPT; doc/CHOICES.md, Adaptive
+!! meshing): bisect marked elements, keep neighbouring elements within a size ratio of 2, move
+!! (snap) a node onto a
 !! located boundary, and coarsen by removing every other node between pinned nodes.
 !!
 !! Pinned nodes are positions the mesh must keep: the ends of the interface, the load

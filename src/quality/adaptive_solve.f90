@@ -1,4 +1,4 @@
-!> Adaptive meshing to a tolerance (ADAPT card, issue 8 item 3). The case is solved on the
+!> Adaptive meshing to a tolerance (ADAPT card; README, ADAPT). The case is solved on the
 !! MESH card's mesh, then in cycles:
 !!
 !!  1. the error of every key result (error_estimate's keys) is estimated from the same case

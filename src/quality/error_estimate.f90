@@ -114,7 +114,7 @@ contains
     !!    any family: 1 for every key. The Mindlin structure's slope jumps there, and no
     !!    element polynomial has a kink inside the element: an S2 basis is made C0 at a node
     !!    with such a load (shape_functions), but between nodes C1 shape functions smear the
-    !!    jump over the elements at the load (work_precision beam before the C0 knots: order
+    !!    jump over the elements at the load (work_precision beam with C1 knots at the load: order
     !!    1.00 in W(0) on uniform meshes; adapted to 1e-4, three coarsened meshes showed 2.5
     !!    and an estimate 10 times low), and P1 or P2 ones cannot place it either
     !!    (input/tank_raft.dat, P1, ring at r = 7.5 m between the nodes of N_e = 40, 20, 10:
