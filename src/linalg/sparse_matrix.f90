@@ -6,7 +6,7 @@
 !! and the coupling M have a few nonzeros per column, and of the dense half-space block only
 !! one triangle is stored, so that a case of N_e = 1000 holds about two dense copies of its
 !! largest block rather than the whole n x n matrix (the memory target of doc/CHOICES.md,
-!! "Issue 7's performance targets").
+!! "The solver's performance targets").
 module sparse_matrix
     use kinds, only: dp, xp
     use lapack_interfaces, only: dspmv
