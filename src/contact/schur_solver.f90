@@ -115,9 +115,9 @@ contains
     !> Order, factorise K_ii and form S0. sc%ready stays false (dense fallback) when K_ii is
     !! not positive definite (no rigid-body description of the structure fits).
     subroutine new_schur(d, sys, sc)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(schur_t), intent(out) :: sc
+        type(discretization_t), intent(in) :: d   !! the discretisation
+        type(system_t), intent(in) :: sys         !! the assembled system (A0, q)
+        type(schur_t), intent(out) :: sc          !! the Schur set-up (ordering, factor of K_ii, S0)
         integer, allocatable :: pinned(:)
         integer :: i
         allocate (sc%fixed(d%n))
@@ -295,10 +295,10 @@ contains
     !! fresh fac; the kept positions marked in decoupled (if any) factorised as a block of
     !! their own, their couplings to the others dropped.
     subroutine schur_factorise(sc, st, fac, err, decoupled)
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(out) :: fac
-        type(error_t), allocatable, intent(out) :: err
+        type(schur_t), intent(in) :: sc                 !! the Schur set-up (factor of K_ii, S0)
+        type(set_terms_t), intent(in) :: st             !! the set-dependent entries of the Jacobian
+        type(schur_factor_t), intent(out) :: fac        !! the factorised kept block
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         logical, intent(in), optional :: decoupled(:)   !! (nk)
         integer :: i
         logical :: split
@@ -423,11 +423,12 @@ contains
     !! Decoupling only replaces new factorisations: refactorising the reduced block at every
     !! step instead of updating was measured slower (output/bench/simplifications.md).
     subroutine schur_prepare(sc, st, fac, factorised, err, candidates)
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(inout) :: fac
-        logical, intent(out) :: factorised
-        type(error_t), allocatable, intent(out) :: err
+        type(schur_t), intent(in) :: sc                  !! the Schur set-up (factor of K_ii, S0)
+        type(set_terms_t), intent(in) :: st   !! the set-dependent entries of the Jacobian
+        type(schur_factor_t), intent(inout) :: fac   !! the factorised kept block: updated or new
+        logical, intent(out) :: factorised               !! a new factorisation was made
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        !> per global unknown: a settled lift-off traction
         logical, intent(in), optional :: candidates(:)
         logical, allocatable :: changed(:), decoupled(:)
         factorised = .true.
@@ -710,13 +711,14 @@ contains
     !! N_e = 20 but costs linear solves on a Newton path that cycles near a kink (doc/CHOICES.md,
     !! Newton solver).
     subroutine schur_solve(sys, sc, st, fac, b, x, err, accurate)
-        type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(in) :: fac
-        real(dp), intent(in) :: b(:)
-        real(dp), intent(out) :: x(:)
-        type(error_t), allocatable, intent(out) :: err
+        type(system_t), intent(in) :: sys                !! the assembled system (A0, q)
+        type(schur_t), intent(in) :: sc                  !! the Schur set-up (factor of K_ii, S0)
+        type(set_terms_t), intent(in) :: st   !! the set-dependent entries of the Jacobian
+        type(schur_factor_t), intent(in) :: fac          !! the factorised kept block
+        real(dp), intent(in) :: b(:)                     !! right-hand side
+        real(dp), intent(out) :: x(:)                    !! the solution of J x = b
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        !> the refinement converged (else factorise afresh)
         logical, intent(out), optional :: accurate
         real(dp), parameter :: refine_limit = 1.0e-10_dp
         real(dp), parameter :: floor_limit = 1.0e-9_dp
