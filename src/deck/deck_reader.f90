@@ -150,7 +150,7 @@ contains
     subroutine read_deck(path, deck, err)
         character(len=*), intent(in) :: path       !! file name, as given by the user
         type(deck_t), intent(out) :: deck          !! the deck (partial on error)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(text_line_t), allocatable :: raw(:)
         character(len=:), allocatable :: lines(:)
         character(len=256) :: msg
@@ -221,7 +221,7 @@ contains
         character(len=*), intent(in) :: name            !! deck name for messages and the stem
         character(len=*), intent(in) :: text_lines(:)   !! the lines, any length
         type(deck_t), intent(out) :: deck               !! the deck (partial on error)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         type(state_t) :: st
         character(len=len(text_lines)), allocatable :: lines(:)
         integer :: i
@@ -273,7 +273,7 @@ contains
         integer, intent(in) :: i                               !! case number 1..case_count
         type(model_t), intent(out) :: m                        !! the problem of case i
         character(len=:), allocatable, intent(out) :: label    !! e.g. 'RHO=0.0025 F=0.6'
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err         !! allocated on failure
         type(diagnostics_t) :: diag
         integer, allocatable :: pick(:)
         integer :: s
