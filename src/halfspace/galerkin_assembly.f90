@@ -194,12 +194,12 @@ contains
 
     !> T (module header); n_kernel returns the number of kernel evaluations (point pairs).
     subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits, pairwise)
-        class(split_kernel_t), intent(in) :: kernel
+        class(split_kernel_t), intent(in) :: kernel         !! the surface kernel in split form
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z, same mesh
-        real(dp), allocatable, intent(out) :: t_mat(:, :)
-        type(error_t), allocatable, intent(out) :: err
-        integer(int64), intent(out), optional :: n_kernel
+        real(dp), allocatable, intent(out) :: t_mat(:, :)   !! T (nr x nr)
+        type(error_t), allocatable, intent(out) :: err      !! allocated on failure
+        integer(int64), intent(out), optional :: n_kernel   !! kernel evaluations (point pairs)
         real(dp), intent(in), optional :: far_digits  !! accuracy studies only: digits of the
                                                       !! far rules (far_points) instead of
                                                       !! default_far_digits
