@@ -1,10 +1,11 @@
-!> Interpolated far blocks of the plate's half-space flexibility (issue 7, item 3): T assembled
-!! with the interpolated blocks (galerkin_assembly, add_blocks) against T assembled pair by
-!! pair (`pairwise`: the assembly of main fc09087), PLATE on uniform and graded (EDGES) meshes,
-!! P1/P1, P2/P2 and S2/S2, N_e 20 to 1000. Prints a Markdown table: processor seconds of both
-!! (least of repeated runs, one thread advised), kernel evaluations and max|dT|/max|T|.
-!! Usage: `fpm run --profile release --example accuracy_blocks [-- max_ne [profile]]`; with a
-!! second argument the pairwise assembly runs once only (profiles of the blocks).
+!> Interpolated far blocks of the plate's half-space flexibility (doc/METHOD.md, Assembly of the
+!! half-space flexibility T): T assembled with the interpolated blocks (galerkin_assembly,
+!! add_blocks) against T assembled pair by pair (`pairwise`: the assembly of main fc09087), PLATE on
+!! uniform and graded (EDGES) meshes, P1/P1, P2/P2 and S2/S2, N_e 20 to 1000. Prints a Markdown
+!! table: processor seconds of both (least of repeated runs, one thread advised), kernel evaluations
+!! and max|dT|/max|T|. Usage: `fpm run --profile release --example accuracy_blocks [-- max_ne
+!! [profile]]`; with a second argument the pairwise assembly runs once only (profiles of the
+!! blocks).
 program accuracy_blocks
     use iso_fortran_env, only: int64, output_unit
     use kinds, only: dp

@@ -1,14 +1,13 @@
-!> Accuracy of the far rules of the half-space assembly (issue 7, item 3): T assembled with the
-!! default far rules, with the far rules of 15 digits (the rules of main c75ff9c) and with
-!! rules of 20 digits (a reference for the far pairs: every other pair is integrated by the
-!! same rules in all three), on PLATE and BEAM meshes, uniform and graded (EDGES), P1/P1 and
-!! P2/S2. Prints a Markdown table: kernel evaluations, max |T - T_20| / max |T_20| (the
-!! accuracy contract: entries to about 1e-14 of the largest), the largest error of an entry
-!! relative to itself (entries above 1e-8 of the largest), and for N_e <= ref_max_ne the
-!! distance from the adaptive reference (assemble_split_kernel_reference).
-!! Usage: `fpm run --profile release --example accuracy_far_rules [-- max_ne [ref_max_ne
-!! [digits]]]`; with digits the first column is that of far rules of `digits` digits instead of
-!! the default rules.
+!> Accuracy of the far rules of the half-space assembly (doc/METHOD.md, Assembly of the half-space
+!! flexibility T): T assembled with the default far rules, with the far rules of 15 digits (the
+!! rules of main c75ff9c) and with rules of 20 digits (a reference for the far pairs: every other
+!! pair is integrated by the same rules in all three), on PLATE and BEAM meshes, uniform and graded
+!! (EDGES), P1/P1 and P2/S2. Prints a Markdown table: kernel evaluations, max |T - T_20| / max
+!! |T_20| (the accuracy contract: entries to about 1e-14 of the largest), the largest error of an
+!! entry relative to itself (entries above 1e-8 of the largest), and for N_e <= ref_max_ne the
+!! distance from the adaptive reference (assemble_split_kernel_reference). Usage: `fpm run --profile
+!! release --example accuracy_far_rules [-- max_ne [ref_max_ne [digits]]]`; with digits the first
+!! column is that of far rules of `digits` digits instead of the default rules.
 program accuracy_far_rules
     use iso_fortran_env, only: int64, output_unit
     use kinds, only: dp

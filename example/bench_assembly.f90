@@ -1,10 +1,10 @@
-!> Benchmark of the half-space flexibility assembly (issue 7, item 3): times the assembly of T
-!! for PLATE and BEAM meshes, the fast fixed-order assembly and the adaptive reference
-!! (assemble_split_kernel_reference) in the same run, and prints a Markdown table with the
-!! number of unknowns, processor seconds and wall seconds of the fast assembly (least of
-!! repeated runs; with OMP_NUM_THREADS > 1 the processor time is that of all threads), kernel
-!! evaluations and max |T_fast - T_ref| / max |T_ref|.
-!! Usage: `fpm run --profile release --example bench_assembly [-- max_ne [ref_max_ne]]`.
+!> Benchmark of the half-space flexibility assembly (doc/METHOD.md, Assembly of the half-space
+!! flexibility T): times the assembly of T for PLATE and BEAM meshes, the fast fixed-order assembly
+!! and the adaptive reference (assemble_split_kernel_reference) in the same run, and prints a
+!! Markdown table with the number of unknowns, processor seconds and wall seconds of the fast
+!! assembly (least of repeated runs; with OMP_NUM_THREADS > 1 the processor time is that of all
+!! threads), kernel evaluations and max |T_fast - T_ref| / max |T_ref|. Usage: `fpm run --profile
+!! release --example bench_assembly [-- max_ne [ref_max_ne]]`.
 program bench_assembly
     use iso_fortran_env, only: int64, output_unit, error_unit
     !$ use omp_lib, only: omp_get_max_threads

@@ -1,5 +1,5 @@
 !> bench_linalg: time per phase of the default (Newton) solve of one deck at several N_e
-!! (issue 7 item 2). Not a test: it measures.
+!! (doc/METHOD.md, Solution methods). Not a test: it measures.
 !!
 !!     OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
 !!         fpm run --profile release --example bench_linalg -- \
@@ -8,8 +8,8 @@
 !! Phases (processor time, least of repeated runs for small cases): assembly of T; of K and M;
 !! build_system (T, K, M and the base matrix); the whole solve_contact (build included), so
 !! iterations = solve - build; the linear solves it counts; one dense factorisation (LDL^T or
-!! LU of the complete n x n Jacobian, the pre-issue-7 path) of the final system; the set-up
-!! of the Schur complement onto the tractions (schur_solver: banded Cholesky of K_ii, S0) and
+!! LU of the complete n x n Jacobian, the path before the Schur complement) of the final system; the
+!! set-up of the Schur complement onto the tractions (schur_solver: banded Cholesky of K_ii, S0) and
 !! one factorisation of the final system's Schur complement (the path of every Newton step).
 program bench_linalg
     use kinds, only: dp

@@ -1,6 +1,6 @@
 !> bench_phases: processor time of each phase of one case, from the deck to the written
-!! report, at several N_e, with the fitted exponent p of time ~ N_e^p per phase (issue 8
-!! item 1, "a time breakdown by phase for N_e = 20, 100, 1000 with the fitted exponent of each
+!! report, at several N_e, with the fitted exponent p of time ~ N_e^p per phase (the
+!! requirement: "a time breakdown by phase for N_e = 20, 100, 1000 with the fitted exponent of each
 !! phase"). Not a test: it measures.
 !!
 !!     OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 fpm run --profile release \
@@ -254,9 +254,10 @@ contains
     !> contact_solver::solve_contact for a Newton case without model reduction, in its
     !! order: the system (build_system: T, K, M, packed B0, loads; then the
     !! change to rigid coordinates), the Newton iterations (nested_prediction: the solves on
-    !! the nested coarser meshes, then solve_newton: Schur set-up, the start, the steps with their factorisations, updates, line searches and
-    !! residuals, a continuation if it stalls), and the final checks (the complete problem's
-    !! sets, residuals, equilibrium, admissibility; back to absolute coordinates).
+    !! the nested coarser meshes, then solve_newton: Schur set-up, the start, the steps with their
+    !! factorisations, updates, line searches and residuals, a continuation if it stalls), and the
+    !! final checks (the complete problem's sets, residuals, equilibrium, admissibility; back to
+    !! absolute coordinates).
     subroutine time_solve(m, d, sys, sol, t_build, t_newton, t_checks)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -500,10 +501,10 @@ contains
         call write_targets(u, r)
     end subroutine write_case_tables
 
-    !> Issue 7's targets at each mesh, as read in doc/CHOICES.md ("Issue 7's performance
-    !! targets"): T under 10 % of the case (item 3); the solve without T at most 3 times one
-    !! linear solve of the final system from scratch (Schur set-up + factorisation; item 2);
-    !! the whole solve_contact under 5 ms at N_e = 20 and under 2 s at N_e = 1000 (item 2).
+    !> The solver's performance targets at each mesh, as read in doc/CHOICES.md ("The solver's
+    !! performance targets"): T under 10 % of the case (item 3); the solve without T at most 3 times
+    !! one linear solve of the final system from scratch (Schur set-up + factorisation; item 2); the
+    !! whole solve_contact under 5 ms at N_e = 20 and under 2 s at N_e = 1000 (item 2).
     subroutine write_targets(u, r)
         integer, intent(in) :: u
         type(case_times_t), intent(in) :: r
@@ -540,7 +541,7 @@ contains
         call put(u, time_row)
     end subroutine write_targets
 
-    !> Issue 7's "total solve time against one factorisation of the final system" at mesh i:
+    !> The target "total solve time against one factorisation of the final system" at mesh i:
     !! the solve is the case less the discretisation and T (item 3 times T on its own); one
     !! linear solve of the final system from scratch is the Schur set-up plus one factorisation.
     pure real(dp) function solve_ratio(r, i)

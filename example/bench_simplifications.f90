@@ -1,11 +1,10 @@
-!> Benchmark of "model only what a scene needs" (issue 8 item 4, model_reduction): each case
-!! solved with the full model (model_t%simplify = .false.) and with the simplifications, on
-!! the same discretisation; prints a Markdown table: unknowns solved, linear solves,
-!! processor seconds of the whole solve_contact and of its assembly (build_system, the same
-!! for both: T is assembled for the full model), and the largest station difference
-!! relative to the column's kind (test_simplifications).
-!! Usage: `fpm run --profile release --example bench_simplifications [-- N_e ...]`
-!! (default N_e 40 and 160).
+!> Benchmark of "model only what a scene needs" (model_reduction; doc/CHOICES.md, Simplifications):
+!! each case solved with the full model (model_t%simplify = .false.) and with the simplifications,
+!! on the same discretisation; prints a Markdown table: unknowns solved, linear solves, processor
+!! seconds of the whole solve_contact and of its assembly (build_system, the same for both: T is
+!! assembled for the full model), and the largest station difference relative to the column's kind
+!! (test_simplifications). Usage: `fpm run --profile release --example bench_simplifications [-- N_e
+!! ...]` (default N_e 40 and 160).
 program bench_simplifications
     use iso_fortran_env, only: output_unit
     use kinds, only: dp

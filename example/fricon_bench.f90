@@ -1,5 +1,5 @@
 !> fricon_bench: linear solves, time and outcome of both solution methods (SOLVER f7) over
-!! decks and a hard-case grid (issue 7). Not a test: it measures.
+!! decks and a hard-case grid (doc/METHOD.md, Benchmark). Not a test: it measures.
 !!
 !!     fpm run --profile release --example fricon_bench -- input/paper/*.dat
 !!
@@ -81,7 +81,7 @@ contains
     end subroutine bench_deck
 
     !> Hard-case grid: beam (b/l = 0.05, H = f V/4) and plate, central load; rho 1e-6 .. 1e3,
-    !! zeta 0.001 .. 0.5, f 0 .. 2, N_e 40; and the practical failures of issue 7.
+    !! zeta 0.001 .. 0.5, f 0 .. 2, N_e 40; and the practical cases the two-loop iteration failed.
     subroutine bench_grid(runs)
         type(run_t), allocatable, intent(inout) :: runs(:)
         real(dp), parameter :: rhos(4) = [1.0e-6_dp, 1.0e-3_dp, 1.0_dp, 1.0e3_dp]

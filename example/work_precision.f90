@@ -1,7 +1,7 @@
-!> Work-precision benchmark (issue 8 items 1 and 3): for a PLATE and a BEAM case with lift-off
-!! and friction, each discretisation (interpolation x mesh family) over N_e = 10 ... 160 (uniform
-!! P1 on to 1280), and the two ADAPT families (P1, and S2 displacements with P1 tractions, from
-!! 16 elements, tol 1e-2 ... 1e-4), the error of W(0), the centre and peak pressure, max |M|
+!> Work-precision benchmark (doc/OUTPUT.md, Error estimates): for a PLATE and a BEAM case with
+!! lift-off and friction, each discretisation (interpolation x mesh family) over N_e = 10 ... 160
+!! (uniform P1 on to 1280), and the two ADAPT families (P1, and S2 displacements with P1 tractions,
+!! from 16 elements, tol 1e-2 ... 1e-4), the error of W(0), the centre and peak pressure, max |M|
 !! and the contact extent against a reference, versus in-process time and versus unknowns.
 !!
 !! Reference (subroutine reference): per quantity the better of two Richardson extrapolations,
@@ -39,7 +39,7 @@ program work_precision
         'S2w-P1tr-UNIFORM', 'P1-ADAPT', 'S2w-P1tr-ADAPT']
     integer, parameter :: adapt_families(2) = [8, 9]   !! the ADAPT discretisations
     integer, parameter :: long_families(2) = [1, 7]    !! continued over ne_long
-    !> the error level of the issue's target, in both W(0) and Sigma_z(0)
+    !> the error level of the work-precision target, in both W(0) and Sigma_z(0)
     real(dp), parameter :: target_error = 1.0e-4_dp
     integer, parameter :: ne_list(5) = [10, 20, 40, 80, 160]
     !> the adaptive families: ADAPT tolerances, from a 16-element uniform mesh
@@ -49,7 +49,7 @@ program work_precision
     !! twice; with the centre pressure among ADAPT's key results, P1 at 1e-4 would go on to
     !! adapt_max, and 4 adapt_max elements cannot be solved here)
     integer, parameter :: reference_max = 700
-    !> uniform P1 continued to where it reaches 1e-4 (the issue's comparison)
+    !> uniform P1 continued to where it reaches 1e-4 (the work-precision comparison)
     integer, parameter :: ne_long(3) = [320, 640, 1280]
     integer, parameter :: all_ne(size(ne_list) + size(ne_long)) = [ne_list, ne_long]
     character(len=256) :: out_dir
@@ -65,8 +65,8 @@ program work_precision
 
 contains
 
-    !> The case: plate rho 0.001, zeta 0.1, f 0.6, disk load r <= 0.1 a (issue 8's plate), or
-    !! beam rho 0.001, zeta 0.1, beta 0.05, f 0.6, central point load with H = 0.1 V.
+    !> The case: plate rho 0.001, zeta 0.1, f 0.6, disk load r <= 0.1 a (the work-precision plate),
+    !! or beam rho 0.001, zeta 0.1, beta 0.05, f 0.6, central point load with H = 0.1 V.
     function base_model(plate) result(m)
         logical, intent(in) :: plate
         type(model_t) :: m

@@ -1,4 +1,4 @@
-!> Adaptive meshing (ADAPT, issue 8 item 3): the mesh operations, and the adapted result and
+!> Adaptive meshing (ADAPT card, README): the mesh operations, and the adapted result and
 !! its error estimate against closed forms.
 !!
 !! Closed forms (as in test_convergence and design_values/error_estimate_bounds_closed_forms):

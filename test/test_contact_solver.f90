@@ -1,4 +1,4 @@
-!> Contact solver against closed forms and physical laws (issue 2, part 4).
+!> Contact solver against closed forms and physical laws (doc/SPEC.md §4).
 module test_contact_solver
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
@@ -296,8 +296,9 @@ contains
     end subroutine test_soft_beam
 
     !> rho = 1e4 on a 150-element EDGES mesh: the linear solves lose all accuracy (found by the
-    !! convergence study: it used to end "solved" with every point lifted off and a reaction of
-    !! -1e-4 F). It must end with status 2, never with a result that fails equilibrium.
+    !! convergence study: a solver without the accuracy guard ends "solved" with every point
+    !! lifted off and a reaction of -1e-4 F). It must end with status 2, never with a result
+    !! that fails equilibrium.
     subroutine test_ill_conditioned(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m
@@ -315,9 +316,9 @@ contains
         end if
         call check(err, run_err%code == EXIT_ANALYSIS, 'expected status 2')
     end subroutine test_ill_conditioned
-    !> Issue 10: SOLVER max inner = 1e9 crashed allocating 320 GB (the two-loop method kept
-    !! every set pattern). Both methods must solve with such a cap: nothing is allocated in
-    !! proportion to it.
+    !> Limits refused, not crashed into: SOLVER max inner = 1e9 (a method that kept every set
+    !! pattern would allocate 320 GB). Both methods must solve with such a cap: nothing is
+    !! allocated in proportion to it.
     subroutine test_iteration_cap(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m

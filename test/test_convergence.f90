@@ -1,4 +1,4 @@
-!> Convergence under mesh refinement, with observed orders (issue 3, part 3).
+!> Convergence under mesh refinement, with observed orders (doc/CHOICES.md, Convergence orders).
 !!
 !! Three NONDIM plates (a = 1, F = 1, nu = 0.3, nu_f = 0.1, zeta = 0.1); the measured quantity is
 !! the centre settlement W(0) = D w(0)/(F a^2), its relative error e = W_h(0)/W(0) - 1 against a
@@ -50,11 +50,10 @@
 !! Floors that limit the meshes:
 !!  * rigid punches, rho = 1e4: the plate's own deflection under the point load and the punch
 !!    pressure adds O(1) to W(0) (0.031 in fricon, independent of rho to leading order), i.e.
-!!    ~1.2e-5 relative, below 10 % of every asserted error. (These limits were set when the
-!!    solvers worked in absolute displacements, which lost about rho (a/h_e) zeta^-2 eps to
-!!    round-off; they now work in rigid coordinates, src/contact/rigid_body.f90, and the
-!!    limits are kept as they were.) N_e <= 64 (UNIFORM), <= 32 (EDGES), <= 8 (radical) for
-!!    the asserted orders.
+!!    ~1.2e-5 relative, below 10 % of every asserted error. N_e <= 64 (UNIFORM), <= 32
+!!    (EDGES), <= 8 (radical) for the asserted orders: limits against the round-off of
+!!    solvers in absolute displacements, about rho (a/h_e) zeta^-2 eps; the solvers work in
+!!    rigid coordinates, src/contact/rigid_body.f90 (doc/CHOICES.md, Convergence orders).
 !!  * bonded punch: the bonded solution's pressure changes sign within ~1e-4 a of the rim (the
 !!    oscillation of cos(epsilon ln d)); a mesh that resolves this (EDGES from N_e = 64) asks the
 !!    unilateral solver for tension there (no convergence, status 2), so EDGES stops at 32.

@@ -954,8 +954,9 @@ contains
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:3:17: TAB'], err)
     end subroutine test_tab
 
-    !> Issue 9: a 76-character comment holding 'kN/m²' (77 bytes, the ² is two) is accepted,
-    !! an 81-character one is not; a UTF-8 byte-order mark before the first card is ignored.
+    !> Comment width in characters (UTF-8): a 76-character comment holding 'kN/m²' (77 bytes, the ²
+    !! is two) is accepted, an 81-character one is not; a UTF-8 byte-order mark before the first
+    !! card is ignored.
     subroutine test_utf8_bom(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
@@ -1016,10 +1017,10 @@ contains
                           'cannot carry a horizontal force'], err)
     end subroutine test_pressure_load
 
-    !> Issue 9's plausible slips: FRICTION 30.0 (an angle: tan 30 degrees = 0.577), E in GPa
-    !! with E_f in MPa (30 and 30: E/E_f = 1), a settlement beyond the thickness (0.6 m on a
-    !! 0.5 m beam): warnings, and none for the sound example deck; f = 1000 (no angle) is named
-    !! a bonded base.
+    !> Plausible slips (README, Plausibility warnings): FRICTION 30.0 (an angle: tan 30 degrees =
+    !! 0.577), E in GPa with E_f in MPa (30 and 30: E/E_f = 1), a settlement beyond the thickness
+    !! (0.6 m on a 0.5 m beam): warnings, and none for the sound example deck; f = 1000 (no angle)
+    !! is named a bonded base.
     subroutine test_plausibility(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
@@ -1088,9 +1089,9 @@ contains
                           'test/bad.dat:2:1: unknown card', 'a comment starts with * or $'], err)
     end subroutine test_hash_hint
 
-    !> Issue 9: a free-format deck gave 15 errors including a misleading 'missing MODEL card'.
-    !! Now each line says that fields are 10 columns wide, and no card it contains is reported
-    !! missing as well.
+    !> A free-format deck: each line says that fields are 10 columns wide, and no card it
+    !! contains is reported missing as well (a reader without these hints gives 15 errors,
+    !! among them a misleading 'missing MODEL card').
     subroutine test_free_format(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=w), allocatable :: lines(:)

@@ -1,4 +1,4 @@
-!> Design values (issue 6): stress resultants against statics, station values against the
+!> Design values (doc/OUTPUT.md): stress resultants against statics, station values against the
 !! solver, the design summary against hand calculations. Every expected number says where it
 !! comes from; none is copied from fricon's output.
 module test_design_values
@@ -79,9 +79,10 @@ contains
         end do elements
     end function traction_integral
 
-    !> Issue 6 measured input/beam_physical.dat by statics (load minus the soil pressure
-    !! integrated up to the section): Q = 955 kN at x = -1.22 m and about 1190 kN at the node
-    !! next to the column (x = -0.64 m); the old table printed 346 and 366 kN. Both stations are
+    !> An engineer's review measured input/beam_physical.dat by statics (load minus the soil
+    !! pressure integrated up to the section): Q = 955 kN at x = -1.22 m and about 1190 kN at
+    !! the node next to the column (x = -0.64 m); a shear force not from statics prints 346 and
+    !! 366 kN there (doc/OUTPUT.md, How the station values are evaluated). Both stations are
     !! nodes of the deck's EDGES mesh.
     subroutine test_beam_issue_statics(err)
         type(error_t), allocatable, intent(out) :: err
@@ -199,7 +200,8 @@ contains
 
     !> The finite-element shear kGbh (w' - psi) at the one-point (reduced) integration points of
     !! a fine mesh (N_e = 320) agrees with the statics Q of the deck's mesh (N_e = 40) to within
-    !! the discretisation error: 2 % of max |Q| (issue 6: "with 200 elements it matches statics").
+    !! the discretisation error: 2 % of max |Q| (the review: "with 200 elements it matches
+    !! statics").
     subroutine test_fine_mesh_shear(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: coarse, fine
@@ -288,8 +290,8 @@ contains
 
     !> Where the solver's Gauss points in the elements on both sides of a station all share one
     !! state (lift-off, stick or slip), the station has that state too: the station table and the
-    !! solver apply the same interface law (issue 6: an edge node labelled stick while its
-    !! element slips). Decks with lift-off and slip: beam_physical and beam_nondim.
+    !! solver apply the same interface law (a station rule of its own labels an edge node stick
+    !! while its element slips). Decks with lift-off and slip: beam_physical and beam_nondim.
     subroutine test_states_match_solver(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=*), parameter :: decks(2) = ['input/beam_physical.dat', &
@@ -355,10 +357,10 @@ contains
         zigzag = zigzag/maxval(abs(v))
     end function zigzag
 
-    !> Issue 6: the strip footing's tractions zig-zagged between stations (sigma_z 339, 121,
-    !! 136, 117; sigma_x -40, +22, 2, 12). The finite-element nodal values alternate by up to
-    !! 3 % (sigma_z) and 12 % (sigma_x) of their maximum; the recovered station values by less
-    !! than 0.5 % and 4 % (measured: 0.0 % and 3.2 %, README "Station values").
+    !> The strip footing's nodal tractions zig-zag between stations (sigma_z 339, 121, 136, 117;
+    !! sigma_x -40, +22, 2, 12, as the review found them printed). The finite-element nodal values
+    !! alternate by up to 3 % (sigma_z) and 12 % (sigma_x) of their maximum; the recovered station
+    !! values by less than 0.5 % and 4 % (measured: 0.0 % and 3.2 %, README "Station values").
     subroutine test_oscillation(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: c
@@ -417,8 +419,8 @@ contains
     end subroutine test_summary_hand
 
     !> A stiff beam loaded near its right end (x = 0.3 l, beyond the kern) lifts off at the left
-    !! end: the summary must list a lift-off interval starting at x = -l/2 (issue 6: lift-off on
-    !! the negative side was not reported), and the intervals must tile [-l/2, l/2].
+    !! end: the summary must list a lift-off interval starting at x = -l/2 (lift-off on the
+    !! negative side must be reported too), and the intervals must tile [-l/2, l/2].
     subroutine test_summary_liftoff(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: c
@@ -475,9 +477,10 @@ contains
     !! rho = 1e3, i.e. a rigid punch; N_e = 16 and 32): the frictionless punch, W(0) = rho/4
     !! (Boussinesq; Johnson 1985 3.8), and the bonded one (f = 1e3), W(0) = rho/(4 c) with
     !! c = (1 - nu_f) ln(3 - 4 nu_f)/(1 - 2 nu_f) (Mossakovskii 1954; Spence 1968). A rigid
-    !! punch settles the same under any distribution of the load; a POINT load, used before,
-    !! makes the Mindlin plate's W(0) singular (it has no estimate now). Measured ratios
-    !! estimate/true: 1.27, 1.19 and 1.30, 1.21 (1.27, 1.18 and 1.29, 1.20 under the point load).
+    !! punch settles the same under any distribution of the load; a POINT load makes the
+    !! Mindlin plate's W(0) singular (it gets no estimate). Measured ratios estimate/true:
+    !! 1.27, 1.19 and 1.30, 1.21 (1.27, 1.18 and 1.29, 1.20 under a point load, measured when
+    !! a singular W(0) still got an estimate).
     subroutine test_error_estimate(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: c
@@ -511,7 +514,8 @@ contains
     !! r = 0.4 is not a node: asserted) has a station there and its largest |Q_r| is that one,
     !! with the value of the statics of the disk r <= 0.4 by an independent 7-point rule:
     !! 2 pi r Q_r = int_0^r sigma_z 2 pi s ds - 8000 (an engineer's statics gave -3141 kN/m;
-    !! the largest node value, -2784 at r = 0.45, used to be printed: 11 % low). The same for a
+    !! the largest node value, -2784 at r = 0.45, is 11 % low; doc/CHOICES.md, Where the
+    !! design values are read). The same for a
     !! beam (input/beam_physical.dat, column 3000 kN over |x| <= 0.25 m): the largest |Q| at a
     !! column face, Q(x) = int_-6^x sigma_z - the load left of x.
     subroutine test_shear_at_patch_edge(err)
@@ -548,11 +552,11 @@ contains
     !> The pressure at d = h from an edge is defined where that point lies on the base and in
     !! contact, and it is the station pressures interpolated there. input/beam_physical.dat
     !! (d = 0.8 m): the left end lifts off (asserted, the rule is exercised), the point at
-    !! x = -5.2 m is in contact: defined (it used to be n/a whenever the end lifted off). Its
+    !! x = -5.2 m is in contact: defined (not n/a because the end lifts off). Its
     !! mesh's middle node, -8.9e-16 m by the sum of its element lengths, is the station x = 0.
     !! A thick pad in full contact (NONDIM plate, h = 0.6 a > a/2, uniform pressure over the
     !! whole raft): the point r = 0.4 a is on the base, so it is defined (the beam's test
-    !! 2h < a used to make it n/a).
+    !! 2h < a would make it n/a).
     subroutine test_edge_pressure(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: c
@@ -584,7 +588,7 @@ contains
 
     !> "max hogging" needs a hogging moment. The default raft's M_theta is sagging (<= 0) at
     !! every station (asserted: the rule is exercised), so its largest hogging M_theta is not
-    !! defined (n/a, null; it used to print the least negative sagging moment, -186 kN m/m),
+    !! defined (n/a, null; not the least negative sagging moment, -186 kN m/m),
     !! while M_r, which hogs near the rim, has both; the entries follow.
     subroutine test_moment_signs(err)
         type(error_t), allocatable, intent(out) :: err
@@ -650,8 +654,8 @@ contains
     end subroutine test_design_every_node
 
     !> A ring between nodes (input/tank_raft.dat, P1 UNIFORM: r = 7.5 m between the nodes of
-    !! N_e = 40, 20 and 10): those meshes showed order 3.2 for the largest sagging M_r, and the
-    !! estimate was 9 times below the error. Every family now credits order 1 there
+    !! N_e = 40, 20 and 10): those meshes show order 3.2 for the largest sagging M_r, and an
+    !! estimate with that order is 9 times below the error. Every family credits order 1 there
     !! (error_estimate::formal_order). Reference: N_e = 160 and 320, whose nodes hold the ring
     !! and which converge at first order there (80 ... 640: differences 0.26, 0.11, 0.06),
     !! extrapolated, q = 2 q(320) - q(160). The estimate at N_e = 40 is within a factor 2

@@ -1,4 +1,4 @@
-!> Malformed decks (issue 10 item 2): every file in test/data/malformed/ is read with the
+!> Malformed decks (doc/ERRORS.md): every file in test/data/malformed/ is read with the
 !! public API (read_deck) and must be refused with EXIT_INPUT, a message naming the deck, its
 !! first error at the line and columns where the fault really is (`path:LINE:COLS: text`,
 !! worked out by hand from the deck: columns 1-10 the card name, f1 = 11-20, f2 = 21-30,
@@ -188,8 +188,8 @@ contains
         ! line 6 'GEOMETRY  10.0' is 14 columns; the NUL byte is column 15
         call add('characters', 'nul_byte.dat', ':6:15:', &
                  'control character (code 0) in column 15')
-        ! gzip data: 34 of its 52 bytes are not printable text, one message for the file (it
-        ! used to give one per line, each echoing the bytes)
+        ! gzip data: 34 of its 52 bytes are not printable text, one message for the file (not
+        ! one per line, each echoing the bytes)
         call add('characters', 'binary_garbage.dat', ': ', 'not a text file')
         ! a BOM, then zip bytes: 10 of its 48 bytes are control characters, one message for
         ! the file (a UTF-8 text deck has none, or a stray one reported at its line and column)

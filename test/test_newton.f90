@@ -1,5 +1,5 @@
-!> The globalised semismooth Newton method (issue 7): the practical cases the two-loop
-!! iteration failed, a hard-case grid, and agreement with the two-loop method.
+!> The globalised semismooth Newton method (doc/METHOD.md, Solution methods): the practical cases
+!! the two-loop iteration failed, a hard-case grid, and agreement with the two-loop method.
 !!
 !! Every case must end solved with its checks inside tolerance. The expected values are not
 !! fricon output; each comes from statics or from the interface law itself:
@@ -108,22 +108,24 @@ contains
         if (present(tab_out)) tab_out = tab
     end subroutine require_solved
 
-    !> Issue 7: a beam with H = 0.3 V and f = 0.6 (utilisation H/(fV) = 0.5).
+    !> A practical case the two-loop iteration failed: a beam with H = 0.3 V and f = 0.6
+    !! (utilisation H/(fV) = 0.5).
     subroutine test_beam_horizontal(err)
         type(error_t), allocatable, intent(out) :: err
         call require_solved(nondim_beam(0.01_dp, 0.1_dp, 0.05_dp, 0.6_dp, 0.3_dp, 40), &
                             'beam H = 0.3 V, f = 0.6', err)
     end subroutine test_beam_horizontal
 
-    !> Issue 7: a wide beam, b/l = 1.
+    !> A practical case the two-loop iteration failed: a wide beam, b/l = 1.
     subroutine test_wide_beam(err)
         type(error_t), allocatable, intent(out) :: err
         call require_solved(nondim_beam(0.01_dp, 0.1_dp, 1.0_dp, 0.6_dp, 0.1_dp, 40), &
                             'wide beam b/l = 1', err)
     end subroutine test_wide_beam
 
-    !> Issue 7: input/beam_physical.dat with its MESH card changed to EDGES and 60, 80, 100,
-    !! 120 elements (refining must never turn a solved case into a failure).
+    !> A practical case the two-loop iteration failed: input/beam_physical.dat with its MESH
+    !! card set to EDGES and 60, 80, 100, 120 elements (refining must never turn a solved case into
+    !! a failure).
     subroutine test_beam_physical_edges(err)
         type(error_t), allocatable, intent(out) :: err
         integer, parameter :: meshes(4) = [60, 80, 100, 120]
@@ -145,8 +147,8 @@ contains
         end do meshes_loop
     end subroutine test_beam_physical_edges
 
-    !> Issue 7: P2 meshes (every field P2) at N_e = 20 and 80 on a plate with rho = 0.001,
-    !! zeta = 0.1, f = 0.6.
+    !> A practical case the two-loop iteration failed: P2 meshes (every field P2) at N_e = 20 and 80
+    !! on a plate with rho = 0.001, zeta = 0.1, f = 0.6.
     subroutine test_plate_p2(err)
         type(error_t), allocatable, intent(out) :: err
         integer, parameter :: meshes(2) = [20, 80]
@@ -187,7 +189,8 @@ contains
         end do frictions
     end subroutine test_soft_plate_meshes
 
-    !> S2 displacements under a point load (issue 8): the slope of w jumps there by
+    !> S2 displacements under a point load (doc/CHOICES.md, S2 displacements at concentrated
+    !! loads): the slope of w jumps there by
     !! F/(k G A), which C1 splines cannot follow; shape_functions makes the S2 displacement
     !! bases C0 at a node where a concentrated load acts. Beam rho = 0.001, zeta = 0.1,
     !! b/l = 0.05, f = 0.6, V = 1 with H = 0.1 V at the centre (the work-precision beam): W(0)
@@ -230,7 +233,8 @@ contains
     !> Hard-case grid: beam and plate, rho 1e-6, 1e-2, 1e4, 1e6; zeta 0.001, 0.1, 0.5; f 0,
     !! 0.6, 2 (beam: H = f V/4, utilisation 0.25; b/l = 0.05); N_e 20 and 40 alternating.
     !! The stiff corners (rho >= 1e4 with zeta = 0.001) are solved in rigid coordinates
-    !! (issue 7 item 4); test_stiff_structures asserts their 4.2a residual as well.
+    !! (doc/CHOICES.md, Stiff thin structures); test_stiff_structures asserts their 4.2a residual as
+    !! well.
     subroutine test_hard_grid(err)
         type(error_t), allocatable, intent(out) :: err
         real(dp), parameter :: rhos(4) = [1.0e-6_dp, 1.0e-2_dp, 1.0e4_dp, 1.0e6_dp]
@@ -262,7 +266,7 @@ contains
         end do kinds_loop
     end subroutine test_hard_grid
 
-    !> Issue 7 item 4: stiff structures, rho up to 1e6 with zeta down to 0.001 (a structure
+    !> Stiff structures, rho up to 1e6 with zeta down to 0.001 (a structure
     !! 1e6 times stiffer than the soil in bending and far stiffer still in shear), plate and
     !! beam, both methods, P1 and S2: solved with the checks of require_solved (reactions =
     !! loads to 1e-8) and, for the Newton method, the residual of 4.2a (the structure's
@@ -303,14 +307,14 @@ contains
         end do kinds_loop
     end subroutine test_stiff_structures
 
-    !> Issue 7 item 4 on a finer mesh: rho 1e6, zeta 1e-3, f 0.6, N_e 160. No double v'
+    !> Stiff structures on a finer mesh: rho 1e6, zeta 1e-3, f 0.6, N_e 160. No double v'
     !! meets 4.2a there better than about eps |K| |v'|, which grows like N_e (doc/METHOD.md):
-    !! at commit e7d0b97, before the Newton method held its answer in double-double, the 4.2a
-    !! residual was 4.4e-8 (plate P1), 1.7e-7 (plate P2) and 2.0e-9 (beam P1) of the load. Now
-    !! it must be below 1e-8 (the discrete equations themselves), with the statics,
-    !! complementarity and friction checks of require_solved. (How far the answer moved
-    !! against e7d0b97 is measured in doc/METHOD.md, not pinned here: a test's expected values
-    !! do not come from the program's own output.)
+    !! a Newton method that holds its answer in double only (commit e7d0b97) leaves 4.2a
+    !! residuals of 4.4e-8 (plate P1), 1.7e-7 (plate P2) and 2.0e-9 (beam P1) of the load; with
+    !! the answer in double-double it must be below 1e-8 (the discrete equations themselves), with
+    !! the statics, complementarity and friction checks of require_solved. (How far the answer moved
+    !! against e7d0b97 is measured in doc/METHOD.md, not pinned here: a test's expected values do
+    !! not come from the program's own output.)
     subroutine test_stiff_fine_mesh(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: cases(3)
@@ -381,9 +385,9 @@ contains
                          what//': Newton and two-loop, relative difference of [v; r]')
     end subroutine require_two_loop_agrees
 
-    !> input/paper/fig07_ref.dat case 5 (issue 7): the "second converged state" with
-    !! max |Sigma_x| = 1.449 failed the complete problem (4.2b residual 7e2); every method the
-    !! issue's authors tried independently (two-loop from 7 starts, Newton with and without
+    !> input/paper/fig07_ref.dat case 5: the "second converged state" with
+    !! max |Sigma_x| = 1.449 fails the complete problem (4.2b residual 7e2); every method the
+    !! reviewers of the solver tried independently (two-loop from 7 starts, Newton with and without
     !! continuation, a smoothing Newton without active sets) reaches max |Sigma_x| = 1.386299
     !! to 6e-11. The Newton method must reach it too, with the checks of require_solved.
     subroutine test_fig07_case5(err)
@@ -466,7 +470,7 @@ contains
         end do loads
     end subroutine test_flip_rounding
 
-    !> Issue 7 item 2: a Newton step by the Schur complement onto the tractions (fresh, then
+    !> A Newton step by the Schur complement onto the tractions (fresh, then
     !! by a low-rank update after two contact points change state) solves J x = b as the dense
     !! LDL^T / LU of the complete Jacobian does, to 1e-9 of max |x| (both are backward stable;
     !! the margin is round-off times the condition number of these small systems).

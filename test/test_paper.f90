@@ -1,6 +1,6 @@
-!> The paper's studies (issue 3, part 6): the Table 1 deck and the parabolic interactions of
-!! Fig. 7, solved from the decks in input/paper/ (no output file is written).
-!! Run from the project root (fpm test -- paper): the decks are read by relative path.
+!> The paper's studies (output/paper/FINDINGS.md): the Table 1 deck and the parabolic interactions
+!! of Fig. 7, solved from the decks in input/paper/ (no output file is written). Run from the
+!! project root (fpm test -- paper): the decks are read by relative path.
 module test_paper
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close

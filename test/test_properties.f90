@@ -1,12 +1,12 @@
-!> Property tests of the whole analysis (issue 10 item 4): seeded random, physically valid
+!> Property tests of the whole analysis: seeded random, physically valid
 !! problems — beam or plate, stiffness, thickness, soil Poisson ratio, friction, regularisation,
 !! loads with horizontal forces up to 1.2 f V and moments, gradings and interpolations. For
 !! each: either it is solved and its own checks hold (statics to 1e-8 of the load, no NaN in
 !! any station value, the friction law within what the regularisation allows), or it ends
 !! with status 2 for a reason that is true of the problem — "sliding" exactly when H > f V,
 !! "overturning" exactly when the load resultant lies outside the base. A well-posed problem
-!! that fails is a test failure. The generator is Park-Miller's (explicit), so every run sees the same
-!! cases on every compiler.
+!! that fails is a test failure. The generator is Park-Miller's (explicit), so every run sees the
+!! same cases on every compiler.
 module test_properties
     use iso_fortran_env, only: int64
     use kinds, only: dp

@@ -234,8 +234,8 @@ contains
 
     !> LOADS grading needs an element for each piece between the load positions: a beam with a
     !! patch and a point load (4 pieces) on MESH 2 LOADS is a deck error at the MESH card's
-    !! N_e field (line 8, columns 11-20), before anything is solved (it used to fail while
-    !! meshing, after the other cases of a sweep had been solved and written).
+    !! N_e field (line 8, columns 11-20), before anything is solved (not a failure while
+    !! meshing, after the other cases of a sweep have been solved and written).
     subroutine test_loads_mesh(err)
         type(error_t), allocatable, intent(out) :: err
         type(error_t), allocatable :: refusal
@@ -668,7 +668,7 @@ contains
 
     !> A sweep solved on one thread, on two (OpenMP), and in two shards merged by
     !! scripts/merge_shards.sh gives byte-identical summaries and case files: a case's result
-    !! does not depend on the thread or the run that solved it (issue 9).
+    !! does not depend on the thread or the run that solved it (README, Sweeps on all cores).
     subroutine test_parallel_sweep(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
@@ -709,9 +709,10 @@ contains
     end subroutine test_parallel_sweep
 
     !> A single case gives the same files, byte for byte, whatever number of threads OpenBLAS
-    !! was given before the run: the driver runs every case's BLAS on one thread. Before it
-    !! did, a plate on N_e = 100 differed in the last printed digit of 39 data rows between one
-    !! and two BLAS threads (the threaded LDL^T sums in another order). set_blas_threads(2)
+    !! was given before the run: the driver runs every case's BLAS on one thread. Otherwise a
+    !! plate on N_e = 100 differs in the last printed digit of 39 data rows between one and two
+    !! BLAS threads (the threaded LDL^T sums in another order; doc/CHOICES.md, One BLAS thread
+    !! per case). set_blas_threads(2)
     !! gives OpenBLAS two threads even on one core, so the test tells on any machine.
     subroutine test_blas_threads(err)
         type(error_t), allocatable, intent(out) :: err

@@ -1,4 +1,5 @@
-!> Model only what a scene needs (issue 8 item 4, model_reduction): each simplification against
+!> Model only what a scene needs (model_reduction; doc/CHOICES.md, Simplifications): each
+!! simplification against
 !! the full model (model_t%simplify = .false.), on the whole station table.
 !! - half beam: the same discrete problem restricted to its symmetric subspace, so the same
 !!   answer to round-off: every station value within 1e-8 of the column's largest value;

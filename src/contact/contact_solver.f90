@@ -58,10 +58,10 @@ contains
 
     !> Solve one case. Fails with EXIT_ANALYSIS when there is no equilibrium or no convergence.
     recursive subroutine solve_contact(m, d, sol, err, progress_unit, t_given, cache)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(solution_t), intent(out) :: sol
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                   !! the model
+        type(discretization_t), intent(in) :: d          !! the discretisation
+        type(solution_t), intent(out) :: sol             !! the solution
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer, intent(in), optional :: progress_unit   !! a unit for one line per Newton step
         !> T of d when it is known (the restriction of a finer mesh's): moved in
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
@@ -160,9 +160,9 @@ contains
     !> The nested coarser mesh of d (every other node, the ends and the load positions kept),
     !! discretised as d: true for the Newton method on more than nested_from elements.
     function nested_discretisation(m, d, dc) result(nest)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(discretization_t), intent(out) :: dc
+        type(model_t), intent(in) :: m              !! the model
+        type(discretization_t), intent(in) :: d     !! the discretisation
+        type(discretization_t), intent(out) :: dc   !! the nested coarser mesh, discretised as d
         logical :: nest
         type(mesh_t) :: coarse
         logical, allocatable :: pinned_c(:)
@@ -180,10 +180,12 @@ contains
     !! starts from the adhesive solution). Its linear solves are counted in
     !! sol%n_nested_solves.
     recursive subroutine nested_prediction(m, dc, t_c, sol, sigma)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: dc
+        type(model_t), intent(in) :: m             !! the model
+        type(discretization_t), intent(in) :: dc   !! the nested coarser discretisation
+        !> its T (restricted from the fine one), moved in
         real(dp), allocatable, intent(inout) :: t_c(:, :)
-        type(solution_t), intent(inout) :: sol
+        type(solution_t), intent(inout) :: sol     !! the solution, updated
+        !> (sigma_x, sigma_z) at sol's contact points
         real(dp), allocatable, intent(out) :: sigma(:, :)
         type(solution_t) :: sol_c
         type(error_t), allocatable :: err_c
@@ -206,7 +208,7 @@ contains
     !> Tractions, threshold tau0 = f max(sigma_z, 0), sets and states of the complete problem.
     subroutine classify_complete(interface, sol)
         type(interface_t), intent(in) :: interface   !! the interface part of the model
-        type(solution_t), intent(inout) :: sol
+        type(solution_t), intent(inout) :: sol       !! the solution, updated
         sol%sigma = point_tractions(sol%pts, sol%z)
         sol%tau0 = friction_threshold(interface%f, sol%sigma(2, :))
         sol%state = contact_state(sol%sigma(1, :), sol%sigma(2, :), sol%tau0)

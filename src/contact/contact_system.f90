@@ -159,17 +159,15 @@ contains
 
     !> K, M, T, S0 and q assembled once per case into the base matrix.
     subroutine build_system(m, d, pts, sys, err, t_given, nested, t_nested, cache)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(contact_points_t), intent(in) :: pts
-        type(system_t), intent(out) :: sys
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                           !! the model
+        type(discretization_t), intent(in) :: d                  !! the discretisation
+        type(contact_points_t), intent(in) :: pts                !! the contact points
+        type(system_t), intent(out) :: sys                       !! the assembled system (A0, q)
+        type(error_t), allocatable, intent(out) :: err           !! allocated on failure
         !> T of d, restricted from a finer mesh (nested_spaces): moved in, not assembled
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(discretization_t), intent(in), optional :: nested   !! a mesh nested in d, and
-        !> its T (P^T T P). inout, not out: with intent(out), one -O3 build (gfortran 12)
-        !! crashed in build_system whenever it was absent (plate_nondim.dat); a clean rebuild
-        !! by review did not reproduce it; inout is legal either way
+        !> its T (P^T T P). inout, not out (doc/CHOICES.md, "intent(inout) of t_nested")
         real(dp), allocatable, intent(inout), optional :: t_nested(:, :)
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         real(dp), allocatable :: t_mat(:, :), b0(:)
@@ -211,10 +209,10 @@ contains
 
     !> The base matrix from the entries of K and M and the packed B0 (moved in).
     subroutine set_base_matrix(sys, nv, k, mm, b0)
-        type(system_t), intent(inout) :: sys
-        integer, intent(in) :: nv
-        type(triplets_t), intent(in) :: k, mm
-        real(dp), allocatable, intent(inout) :: b0(:)
+        type(system_t), intent(inout) :: sys            !! the assembled system, changed in place
+        integer, intent(in) :: nv                       !! displacement unknowns
+        type(triplets_t), intent(in) :: k, mm           !! the entries of K and of M
+        real(dp), allocatable, intent(inout) :: b0(:)   !! B0, packed lower triangle (moved in)
         sys%nv = nv
         sys%nr = mm%nrow
         sys%k = compressed(k)
@@ -225,7 +223,7 @@ contains
 
     !> 1/sqrt|a_ii| (1 where a_ii = 0): the fixed row scaling of the residual.
     pure function diagonal_scaling(dg) result(scale)
-        real(dp), intent(in) :: dg(:)
+        real(dp), intent(in) :: dg(:)   !! the diagonal of A0
         real(dp) :: scale(size(dg))
         scale = 1.0_dp
         where (dg /= 0.0_dp) scale = 1.0_dp/sqrt(abs(dg))
@@ -253,7 +251,7 @@ contains
     !! methods then solve for z in rigid coordinates, which to_absolute maps back. The row
     !! scaling stays that of the absolute coordinates.
     subroutine use_rigid_coordinates(sys)
-        type(system_t), intent(inout) :: sys
+        type(system_t), intent(inout) :: sys   !! the assembled system, changed in place
         type(triplets_t) :: k, mm
         real(dp), allocatable :: no_b0(:)
         if (sys%rigid_coordinates) return
@@ -266,7 +264,8 @@ contains
 
     !> A0 times x_top in the displacement rows and times x_bottom in the traction rows.
     pure function a0_times(sys, x_top, x_bottom) result(y)
-        type(system_t), intent(in) :: sys
+        type(system_t), intent(in) :: sys   !! the assembled system (A0, q)
+        !> the displacement and the traction part of x
         real(dp), intent(in) :: x_top(:), x_bottom(:)
         real(dp) :: y(size(x_top))
         associate (nv => sys%nv)
@@ -278,8 +277,8 @@ contains
 
     !> Column j of A0.
     pure function a0_column(sys, j) result(col)
-        type(system_t), intent(in) :: sys
-        integer, intent(in) :: j
+        type(system_t), intent(in) :: sys   !! the assembled system (A0, q)
+        integer, intent(in) :: j            !! the column
         real(dp) :: col(sys%nv + sys%nr)
         associate (nv => sys%nv)
             if (j <= nv) then
@@ -300,10 +299,10 @@ contains
     !! more than the Schur complement's other set-up work at N_e = 1000
     !! (output/bench/linalg_before_after.md): the rows below j are what is read.
     pure subroutine a0_lower_column(sys, j, col, clear)
-        type(system_t), intent(in) :: sys
-        integer, intent(in) :: j
+        type(system_t), intent(in) :: sys   !! the assembled system (A0, q)
+        integer, intent(in) :: j            !! the column
         real(dp), intent(inout) :: col(:)   !! (nv + nr), zero on entry
-        logical, intent(in) :: clear
+        logical, intent(in) :: clear        !! zero the column's entries instead of writing them
         associate (nv => sys%nv)
             if (j <= nv) then
                 call scatter_column(sys%k, j, col(1:nv), clear)
@@ -323,7 +322,7 @@ contains
 
     !> A0 as a dense array (n^2 numbers: only for the methods that factorise it whole).
     pure function a0_dense(sys) result(a)
-        type(system_t), intent(in) :: sys
+        type(system_t), intent(in) :: sys   !! the assembled system (A0, q)
         real(dp), allocatable :: a(:, :)
         integer :: j
         allocate (a(sys%nv + sys%nr, sys%nv + sys%nr))
@@ -334,7 +333,7 @@ contains
 
     !> The diagonal of A0.
     pure function a0_diagonal(sys) result(dg)
-        type(system_t), intent(in) :: sys
+        type(system_t), intent(in) :: sys   !! the assembled system (A0, q)
         real(dp) :: dg(sys%nv + sys%nr)
         integer :: j
         do j = 1, sys%nv
@@ -362,11 +361,11 @@ contains
     !> a(i,j) += factor * wt g_i g_j at contact point p for traction field k (1: x, 2: z);
     !! a holds the unknowns from shift + 1 on (default 0: all of them).
     pure subroutine add_point_mass(pts, p, k, factor, a, shift)
-        type(contact_points_t), intent(in) :: pts
-        integer, intent(in) :: p, k
-        real(dp), intent(in) :: factor
-        real(dp), intent(inout) :: a(:, :)
-        integer, intent(in), optional :: shift
+        type(contact_points_t), intent(in) :: pts   !! the contact points
+        integer, intent(in) :: p, k                 !! contact point, traction field (1: x, 2: z)
+        real(dp), intent(in) :: factor              !! the factor of wt g_i g_j
+        real(dp), intent(inout) :: a(:, :)          !! the matrix added to
+        integer, intent(in), optional :: shift      !! a(1, 1) is unknown shift + 1
         integer :: i, j, s
         s = 0
         if (present(shift)) s = shift
@@ -382,7 +381,7 @@ contains
     !> Gauss points per element: (highest traction degree + 1), exact for the masses.
     pure function contact_points(structure, d) result(pts)
         type(structure_t), intent(in) :: structure   !! the structure part of the model
-        type(discretization_t), intent(in) :: d
+        type(discretization_t), intent(in) :: d      !! the discretisation
         type(contact_points_t) :: pts
         real(dp), allocatable :: xg(:), wg(:)
         integer :: ng, e, g, p
@@ -429,8 +428,8 @@ contains
 
     !> (sigma_x, sigma_z) at every contact point for the unknowns z = [v; r].
     pure function point_tractions(pts, z) result(sigma)
-        type(contact_points_t), intent(in) :: pts
-        real(dp), intent(in) :: z(:)
+        type(contact_points_t), intent(in) :: pts   !! the contact points
+        real(dp), intent(in) :: z(:)                !! the unknowns [v; r]
         real(dp) :: sigma(2, pts%n)
         integer :: p, k, i
         ! scalar loops: z(idx(...)) as an array section makes a temporary per point
@@ -470,13 +469,13 @@ contains
     !> F(z) of the complete problem for the law `law`; lin = A0 z - [q; 0] may be passed
     !! when known (the line search evaluates F along a ray from its affine part).
     pure subroutine complete_residual(d, sys, law, pts, z, res, lin)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(law_t), intent(in) :: law
-        type(contact_points_t), intent(in) :: pts
-        real(dp), intent(in) :: z(:)
-        real(dp), intent(out) :: res(:)
-        real(dp), intent(in), optional :: lin(:)
+        type(discretization_t), intent(in) :: d     !! the discretisation
+        type(system_t), intent(in) :: sys           !! the assembled system (A0, q)
+        type(law_t), intent(in) :: law              !! the interface law of this stage
+        type(contact_points_t), intent(in) :: pts   !! the contact points
+        real(dp), intent(in) :: z(:)                !! the unknowns [v; r]
+        real(dp), intent(out) :: res(:)             !! F(z)
+        real(dp), intent(in), optional :: lin(:)    !! A0 z - [q; 0], when known
         if (present(lin)) then
             res = lin
         else
@@ -495,8 +494,8 @@ contains
     !! double is that large too (doc/METHOD.md, double-double refinement). M^T r is summed
     !! in double: its round-off, eps |M^T| |r|, is that of the load itself.
     pure function equilibrium_residual(d, sys, z, z_lo) result(res)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
+        type(discretization_t), intent(in) :: d   !! the discretisation
+        type(system_t), intent(in) :: sys       !! the assembled system (A0, q)
         real(dp), intent(in) :: z(:), z_lo(:)   !! [v; r] = z + z_lo
         real(dp) :: res(d%nv)
         integer :: i
@@ -513,13 +512,13 @@ contains
     !! interface_law): A0 plus the set-dependent entries of set_terms, fixed unknowns with
     !! identity rows and columns. symmetric is false when the d tau0/d sigma_z block is present.
     pure subroutine complete_jacobian(d, sys, law, pts, sigma, a, symmetric)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(law_t), intent(in) :: law
-        type(contact_points_t), intent(in) :: pts
-        real(dp), intent(in) :: sigma(:, :)
-        real(dp), allocatable, intent(out) :: a(:, :)
-        logical, intent(out) :: symmetric
+        type(discretization_t), intent(in) :: d         !! the discretisation
+        type(system_t), intent(in) :: sys               !! the assembled system (A0, q)
+        type(law_t), intent(in) :: law                  !! the interface law of this stage
+        type(contact_points_t), intent(in) :: pts       !! the contact points
+        real(dp), intent(in) :: sigma(:, :)             !! (sigma_x, sigma_z) at the contact points
+        real(dp), allocatable, intent(out) :: a(:, :)   !! the Jacobian (n x n)
+        logical, intent(out) :: symmetric               !! no d tau0/d sigma_z block
         type(set_terms_t) :: st
         call set_terms(sys, law, pts, sigma, st)
         symmetric = st%symmetric
@@ -529,10 +528,10 @@ contains
     !> A0 plus the set terms st (duplicates add), fixed unknowns with identity rows and
     !! columns: the dense Jacobian.
     pure subroutine jacobian_with_terms(d, sys, st, a)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(set_terms_t), intent(in) :: st
-        real(dp), allocatable, intent(out) :: a(:, :)
+        type(discretization_t), intent(in) :: d         !! the discretisation
+        type(system_t), intent(in) :: sys               !! the assembled system (A0, q)
+        type(set_terms_t), intent(in) :: st             !! the set-dependent entries of the Jacobian
+        real(dp), allocatable, intent(out) :: a(:, :)   !! the Jacobian (n x n)
         integer :: i
         a = a0_dense(sys)
         entries: do i = 1, st%n
@@ -550,11 +549,11 @@ contains
     !! where it differs from the deck's, the penalty on the tension set, the slip terms and
     !! d tau0/d sigma_z on the slip set. All live on the interface's Gauss points.
     pure subroutine set_terms(sys, law, pts, sigma, st)
-        type(system_t), intent(in) :: sys
-        type(law_t), intent(in) :: law
-        type(contact_points_t), intent(in) :: pts
-        real(dp), intent(in) :: sigma(:, :)
-        type(set_terms_t), intent(out) :: st
+        type(system_t), intent(in) :: sys           !! the assembled system (A0, q)
+        type(law_t), intent(in) :: law              !! the interface law of this stage
+        type(contact_points_t), intent(in) :: pts   !! the contact points
+        real(dp), intent(in) :: sigma(:, :)         !! (sigma_x, sigma_z) at the contact points
+        type(set_terms_t), intent(out) :: st        !! the set-dependent entries
         real(dp) :: tau0, coupling
         integer :: p, nx, nz
         nx = pts%nl(1)
@@ -600,9 +599,9 @@ contains
 
     !> A0 z (in rigid coordinates K acts on the flexural part only: see rigid_body).
     pure function linear_part(d, sys, z) result(lin)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        real(dp), intent(in) :: z(:)
+        type(discretization_t), intent(in) :: d   !! the discretisation
+        type(system_t), intent(in) :: sys         !! the assembled system (A0, q)
+        real(dp), intent(in) :: z(:)              !! the unknowns [v; r]
         real(dp) :: lin(d%n)
         lin = a0_times(sys, z, z)
     end function linear_part
@@ -633,11 +632,11 @@ contains
     !> The diagonal of complete_jacobian at the tractions sigma (the off-diagonal
     !! d tau0/d sigma_z block does not touch it).
     pure function jacobian_diagonal(d, sys, law, pts, sigma) result(dg)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(law_t), intent(in) :: law
-        type(contact_points_t), intent(in) :: pts
-        real(dp), intent(in) :: sigma(:, :)
+        type(discretization_t), intent(in) :: d     !! the discretisation
+        type(system_t), intent(in) :: sys           !! the assembled system (A0, q)
+        type(law_t), intent(in) :: law              !! the interface law of this stage
+        type(contact_points_t), intent(in) :: pts   !! the contact points
+        real(dp), intent(in) :: sigma(:, :)         !! (sigma_x, sigma_z) at the contact points
         real(dp) :: dg(d%n)
         real(dp) :: fx, fz
         integer :: i, p
@@ -669,15 +668,15 @@ contains
 
     !> || row_scale * res ||_2: the merit norm (fixed scaling from the diagonal of A0).
     pure real(dp) function scaled_norm(sys, res)
-        type(system_t), intent(in) :: sys
-        real(dp), intent(in) :: res(:)
+        type(system_t), intent(in) :: sys   !! the assembled system (A0, q)
+        real(dp), intent(in) :: res(:)      !! a residual F(z)
         scaled_norm = norm2(sys%row_scale*res)
     end function scaled_norm
 
     !> max over displacement and traction blocks of |dz|_inf / |z|_inf.
     pure real(dp) function relative_change(d, z_new, z_old) result(incr)
-        type(discretization_t), intent(in) :: d
-        real(dp), intent(in) :: z_new(:), z_old(:)
+        type(discretization_t), intent(in) :: d      !! the discretisation
+        real(dp), intent(in) :: z_new(:), z_old(:)   !! the new and the previous unknowns [v; r]
         incr = max(maxval(abs(z_new(1:d%nv) - z_old(1:d%nv))) &
                    /max(maxval(abs(z_new(1:d%nv))), tiny(1.0_dp)), &
                    maxval(abs(z_new(d%nv + 1:) - z_old(d%nv + 1:))) &

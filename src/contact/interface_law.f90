@@ -25,12 +25,13 @@ contains
 
     !> The tension set of the penalty (paper 4.6b/4.7b): sigma_z <= 0.
     elemental logical function in_tension(sigma_z)
-        real(dp), intent(in) :: sigma_z
+        real(dp), intent(in) :: sigma_z   !! normal traction, compression positive
         in_tension = sigma_z <= 0.0_dp
     end function in_tension
 
     !> The slip set (paper 4.6a/4.7a): |sigma_x| > tau0.
     elemental logical function is_slipping(sigma_x, tau0)
+        !> shear traction; friction threshold f max(sigma_z, 0)
         real(dp), intent(in) :: sigma_x, tau0
         is_slipping = abs(sigma_x) > tau0
     end function is_slipping
@@ -39,6 +40,7 @@ contains
     !! shear exceeds the threshold or there is no threshold (f = 0: nothing resists sliding,
     !! also where the frictionless model's sigma_x is exactly 0), else stick.
     elemental integer function contact_state(sigma_x, sigma_z, tau0) result(state)
+        !> shear and normal traction; friction threshold
         real(dp), intent(in) :: sigma_x, sigma_z, tau0
         if (in_tension(sigma_z)) then
             state = STATE_LIFTOFF
@@ -52,6 +54,7 @@ contains
     !> (|sigma_x| - tau0)^+ sign(sigma_x): the part of the shear beyond the threshold, which the
     !! slip branch of the law turns into slip (SPEC §4; nonzero exactly on the slip set).
     elemental real(dp) function slip_excess(sigma_x, tau0)
+        !> shear traction; friction threshold f max(sigma_z, 0)
         real(dp), intent(in) :: sigma_x, tau0
         slip_excess = 0.0_dp
         if (is_slipping(sigma_x, tau0)) slip_excess = sign(abs(sigma_x) - tau0, sigma_x)
@@ -71,7 +74,7 @@ contains
     !> The tensile part of sigma_z that the exterior penalty acts on (paper 3.7-3.9): sigma_z on
     !! the tension set, else 0.
     elemental real(dp) function tensile_part(sigma_z)
-        real(dp), intent(in) :: sigma_z
+        real(dp), intent(in) :: sigma_z   !! normal traction, compression positive
         tensile_part = 0.0_dp
         if (in_tension(sigma_z)) tensile_part = sigma_z
     end function tensile_part
@@ -79,6 +82,7 @@ contains
     !> d tau0 / d sigma_z of friction_threshold: f in compression, 0 on the tension set (the
     !! one-sided derivative the semismooth Newton method uses at sigma_z = 0).
     elemental real(dp) function threshold_slope(f, sigma_z)
+        !> friction coefficient; normal traction, compression positive
         real(dp), intent(in) :: f, sigma_z
         threshold_slope = f
         if (in_tension(sigma_z)) threshold_slope = 0.0_dp

@@ -1,4 +1,4 @@
-!> Model only what a scene needs (issue 8 item 4): the discrete contact problem restricted to a
+!> Model only what a scene needs (doc/CHOICES.md, Simplifications): the discrete contact problem restricted to a
 !! subspace of the full one that provably holds its solution, solved there, and expanded back
 !! to the full coefficient vector, so that every later stage (stations, summary, files,
 !! checks) sees the full model's numbering.
@@ -53,8 +53,8 @@ contains
 
     !> The simplifications that apply to case m on discretisation d, and their map.
     pure function plan_reduction(m, d) result(red)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
+        type(model_t), intent(in) :: m            !! the model
+        type(discretization_t), intent(in) :: d   !! the discretisation
         type(reduction_t) :: red
         if (m%solver%simplify .and. m%solver%method == METHOD_NEWTON) then
             red%frictionless = m%interface%f == 0.0_dp
@@ -67,7 +67,7 @@ contains
 
     !> Any simplification in use.
     elemental logical function is_active(red)
-        type(reduction_t), intent(in) :: red
+        type(reduction_t), intent(in) :: red   !! the simplifications in use and their map P
         is_active = red%frictionless .or. red%half
     end function is_active
 
@@ -168,8 +168,8 @@ contains
     !> The numbering of the reduced problem (the mesh and bases stay the full ones: the
     !! Newton method only uses nv, nr, n and fixed).
     pure function reduced_discretization(d, red) result(dr)
-        type(discretization_t), intent(in) :: d
-        type(reduction_t), intent(in) :: red
+        type(discretization_t), intent(in) :: d   !! the discretisation
+        type(reduction_t), intent(in) :: red      !! the simplifications in use and their map P
         type(discretization_t) :: dr
         integer :: field, i
         dr = d
@@ -186,9 +186,9 @@ contains
 
     !> P^T A0 P (by blocks), P^T q and the rigid-body bookkeeping of the reduced problem.
     function reduced_system(sys, d, dr, red) result(sr)
-        type(system_t), intent(in) :: sys
-        type(discretization_t), intent(in) :: d, dr
-        type(reduction_t), intent(in) :: red
+        type(system_t), intent(in) :: sys             !! the assembled system (A0, q)
+        type(discretization_t), intent(in) :: d, dr   !! the full and the reduced discretisation
+        type(reduction_t), intent(in) :: red          !! the simplifications in use and their map P
         type(system_t) :: sr
         real(dp), allocatable :: b0(:, :), b0_packed(:)
         integer :: i, j
@@ -255,8 +255,8 @@ contains
     !! that map to the same reduced unknown merged, so no index repeats within a point;
     !! unused slots padded with value 0 at distinct indices).
     pure function reduced_points(pts, red) result(pr)
-        type(contact_points_t), intent(in) :: pts
-        type(reduction_t), intent(in) :: red
+        type(contact_points_t), intent(in) :: pts   !! the contact points
+        type(reduction_t), intent(in) :: red        !! the simplifications in use and their map P
         type(contact_points_t) :: pr
         integer :: p, k, l, n, c, g
         pr = pts
@@ -289,8 +289,8 @@ contains
 
     !> z = P y.
     pure function expand(red, y) result(z)
-        type(reduction_t), intent(in) :: red
-        real(dp), intent(in) :: y(:)
+        type(reduction_t), intent(in) :: red   !! the simplifications in use and their map P
+        real(dp), intent(in) :: y(:)           !! the unknowns of the reduced problem
         real(dp) :: z(red%n_full)
         integer :: j
         do j = 1, red%n_full

@@ -100,11 +100,11 @@ contains
     !> Solve the complete problem from the predicted or adhesive start; continuation if the
     !! plain method stalls. Fails with EXIT_ANALYSIS when neither converges.
     subroutine solve_newton(m, d, sys, sol, err, sigma_start)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(solution_t), intent(inout) :: sol
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                          !! the model
+        type(discretization_t), intent(in) :: d                 !! the discretisation
+        type(system_t), intent(in) :: sys                       !! the assembled system (A0, q)
+        type(solution_t), intent(inout) :: sol                  !! the solution, updated
+        type(error_t), allocatable, intent(out) :: err          !! allocated on failure
         real(dp), allocatable, intent(in) :: sigma_start(:, :)  !! tractions at the contact
                                             !! points predicting the sets (else: adhesive)
         real(dp), allocatable :: z_start(:)

@@ -1,4 +1,5 @@
-!> Rigid-body coordinates of the structure (issue 7 item 4: stiff structures).
+!> Rigid-body coordinates of the structure: stiff structures (rho up to 1e6 with zeta down to
+!! 0.001) solved with the equilibrium check at 1e-8 (doc/CHOICES.md, Stiff thin structures).
 !!
 !! K annihilates the structure's rigid-body modes (translations; for the beam also the
 !! rotation psi = 1, w = x). For a structure much stiffer than the soil the displacement is a
@@ -38,10 +39,11 @@ contains
     !! range). Pinned: the first unknown of each translation; with the rotation also the last
     !! w, the two w modes then being the end values of a rigid w = alpha + beta x.
     pure function new_rigid(nv, translation, psi_range, rotation_w) result(rb)
-        integer, intent(in) :: nv
+        integer, intent(in) :: nv                         !! displacement unknowns
+        !> first and last unknown of each translated field
         integer, intent(in) :: translation(:, :)
-        integer, intent(in) :: psi_range(2)
-        real(dp), intent(in), optional :: rotation_w(:)
+        integer, intent(in) :: psi_range(2)   !! first and last unknown of psi (beam rotation)
+        real(dp), intent(in), optional :: rotation_w(:)   !! the coefficients of w = x (beam)
         type(rigid_t) :: rb
         integer :: k
         real(dp) :: span
@@ -74,9 +76,10 @@ contains
     !! M (nr x nv); B is unchanged. K R = 0 and R^T K = 0 exactly: the entries of K in the
     !! pinned rows and columns are set to 0; the pinned columns of M become M R.
     pure subroutine to_rigid_coordinates(rb, k, mm, q)
-        type(rigid_t), intent(in) :: rb
+        type(rigid_t), intent(in) :: rb   !! the rigid-body modes and pinned unknowns
+        !> the entries of K and of M, transformed in place
         type(triplets_t), intent(inout) :: k, mm
-        real(dp), intent(inout) :: q(:)
+        real(dp), intent(inout) :: q(:)   !! the structural loads, transformed in place
         real(dp), allocatable :: mr(:, :), rq(:)
         logical, allocatable :: pinned(:)
         integer :: i, e
@@ -101,8 +104,8 @@ contains
 
     !> The absolute unknowns of z in rigid coordinates (the tractions are unchanged).
     pure function to_absolute(rb, z) result(z_abs)
-        type(rigid_t), intent(in) :: rb
-        real(dp), intent(in) :: z(:)
+        type(rigid_t), intent(in) :: rb   !! the rigid-body modes and pinned unknowns
+        real(dp), intent(in) :: z(:)      !! the unknowns in rigid coordinates
         real(dp) :: z_abs(size(z))
         real(dp), allocatable :: amplitude(:)
         integer :: nv

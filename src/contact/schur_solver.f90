@@ -1,4 +1,5 @@
-!> Newton steps by a Schur complement onto the traction unknowns (issue 7 item 2).
+!> Newton steps by a Schur complement onto the traction unknowns (doc/METHOD.md, Solution
+!! methods).
 !!
 !! The Jacobian of the complete problem is J = [K M^T; M B(sets)]: K (the structure) is
 !! banded and constant, M constant, and only B = -(T + c eps0 S0) + (set terms at the
@@ -16,7 +17,7 @@
 !! flops of factorising J; v follows by two banded solves. Two steps of iterative refinement
 !! with the complete J, as the dense solves do.
 !!
-!! Settled lift-off (issue 8 item 4): the traction unknowns of a region that stays in the
+!! Settled lift-off (doc/CHOICES.md, Simplifications): the traction unknowns of a region that stays in the
 !! tension set have rows dominated by the penalty c/eta_bar (and, for sigma_x, the slip term
 !! c/eps_bar) and barely couple to the rest. When the caller names them (candidates), the
 !! step's factorisation drops the couplings between them and the other kept unknowns: two
@@ -114,9 +115,9 @@ contains
     !> Order, factorise K_ii and form S0. sc%ready stays false (dense fallback) when K_ii is
     !! not positive definite (no rigid-body description of the structure fits).
     subroutine new_schur(d, sys, sc)
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(schur_t), intent(out) :: sc
+        type(discretization_t), intent(in) :: d   !! the discretisation
+        type(system_t), intent(in) :: sys         !! the assembled system (A0, q)
+        type(schur_t), intent(out) :: sc          !! the Schur set-up (ordering, factor of K_ii, S0)
         integer, allocatable :: pinned(:)
         integer :: i
         allocate (sc%fixed(d%n))
@@ -294,10 +295,10 @@ contains
     !! fresh fac; the kept positions marked in decoupled (if any) factorised as a block of
     !! their own, their couplings to the others dropped.
     subroutine schur_factorise(sc, st, fac, err, decoupled)
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(out) :: fac
-        type(error_t), allocatable, intent(out) :: err
+        type(schur_t), intent(in) :: sc                 !! the Schur set-up (factor of K_ii, S0)
+        type(set_terms_t), intent(in) :: st             !! the set-dependent entries of the Jacobian
+        type(schur_factor_t), intent(out) :: fac        !! the factorised kept block
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         logical, intent(in), optional :: decoupled(:)   !! (nk)
         integer :: i
         logical :: split
@@ -422,11 +423,12 @@ contains
     !! Decoupling only replaces new factorisations: refactorising the reduced block at every
     !! step instead of updating was measured slower (output/bench/simplifications.md).
     subroutine schur_prepare(sc, st, fac, factorised, err, candidates)
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(inout) :: fac
-        logical, intent(out) :: factorised
-        type(error_t), allocatable, intent(out) :: err
+        type(schur_t), intent(in) :: sc                  !! the Schur set-up (factor of K_ii, S0)
+        type(set_terms_t), intent(in) :: st   !! the set-dependent entries of the Jacobian
+        type(schur_factor_t), intent(inout) :: fac   !! the factorised kept block: updated or new
+        logical, intent(out) :: factorised               !! a new factorisation was made
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        !> per global unknown: a settled lift-off traction
         logical, intent(in), optional :: candidates(:)
         logical, allocatable :: changed(:), decoupled(:)
         factorised = .true.
@@ -564,7 +566,7 @@ contains
     !> W = S_base^-1 E from the columns computed for earlier updates of the same base, the
     !! missing ones by one multi-column solve (the sets of later Newton steps overlap). The
     !! cache grows as columns come (doubling), up to capacity columns: allocated at capacity
-    !! at once it was 19 MB at N_e = 1000 (plate: 1201 columns of 2002) for the 10 to 20
+    !! at once it would be 19 MB at N_e = 1000 (plate: 1201 columns of 2002) for the 10 to 20
     !! columns a case uses, the largest item of the peak memory after T's copies.
     subroutine cached_columns(fac, err)
         type(schur_factor_t), intent(inout) :: fac
@@ -705,17 +707,18 @@ contains
     !! between 1e-10 and 3e-10, and demanding 1e-10 there cost a fresh factorisation, 130 ms,
     !! where a step costs 3 ms), up to max_update_steps; accurate is false if neither
     !! happened, and the caller factorises afresh.
-    !! Stopping after one converged step was tried (fifth session): 10 % less work at
-    !! N_e = 20, but paper case fig07_s2#3, whose Newton path cycles near a kink and is
-    !! sensitive to rounding, went from 29 to 32 linear solves (issue 7: at most 30).
+    !! Refinement does not stop after one converged step: that saves 10 % of the work at
+    !! N_e = 20 but costs linear solves on a Newton path that cycles near a kink (doc/CHOICES.md,
+    !! Newton solver).
     subroutine schur_solve(sys, sc, st, fac, b, x, err, accurate)
-        type(system_t), intent(in) :: sys
-        type(schur_t), intent(in) :: sc
-        type(set_terms_t), intent(in) :: st
-        type(schur_factor_t), intent(in) :: fac
-        real(dp), intent(in) :: b(:)
-        real(dp), intent(out) :: x(:)
-        type(error_t), allocatable, intent(out) :: err
+        type(system_t), intent(in) :: sys                !! the assembled system (A0, q)
+        type(schur_t), intent(in) :: sc                  !! the Schur set-up (factor of K_ii, S0)
+        type(set_terms_t), intent(in) :: st   !! the set-dependent entries of the Jacobian
+        type(schur_factor_t), intent(in) :: fac          !! the factorised kept block
+        real(dp), intent(in) :: b(:)                     !! right-hand side
+        real(dp), intent(out) :: x(:)                    !! the solution of J x = b
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        !> the refinement converged (else factorise afresh)
         logical, intent(out), optional :: accurate
         real(dp), parameter :: refine_limit = 1.0e-10_dp
         real(dp), parameter :: floor_limit = 1.0e-9_dp

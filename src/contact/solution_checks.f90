@@ -22,8 +22,8 @@ contains
 
     !> Loads that no unilateral frictional support can carry (SPEC §4): EXIT_ANALYSIS.
     subroutine check_load_admissible(m, err)
-        type(model_t), intent(in) :: m
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                   !! the model
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         real(dp) :: v, h_total, arm
         character(len=240) :: text
         v = total_vertical_load(m%loads)
@@ -78,11 +78,11 @@ contains
     !! final state, whatever the method), equilibrium, admissibility. 4.2a is evaluated in
     !! extended precision for the solution as held, z + z_lo (equilibrium_residual).
     subroutine final_checks(m, d, sys, sol, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(solution_t), intent(inout) :: sol
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                   !! the model
+        type(discretization_t), intent(in) :: d          !! the discretisation
+        type(system_t), intent(in) :: sys                !! the assembled system (A0, q)
+        type(solution_t), intent(inout) :: sol           !! the solution, updated
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         real(dp), allocatable :: res(:), v_only(:), mv(:), z_lo(:)
         integer :: p
         allocate (res(d%n), z_lo(d%n))

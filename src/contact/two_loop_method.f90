@@ -27,11 +27,11 @@ contains
 
     !> Solve with the two-loop iteration from adhesive contact.
     subroutine solve_two_loop(m, d, sys, sol, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(system_t), intent(in) :: sys
-        type(solution_t), intent(inout) :: sol
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                   !! the model
+        type(discretization_t), intent(in) :: d          !! the discretisation
+        type(system_t), intent(in) :: sys                !! the assembled system (A0, q)
+        type(solution_t), intent(inout) :: sol           !! the solution, updated
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         sol%method = 'TWOLOOP'
         call friction_loop(m, d, sys, sol, err)
     end subroutine solve_two_loop

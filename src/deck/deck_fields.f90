@@ -280,7 +280,7 @@ contains
 
     !> Upper-case copy (ASCII letters only).
     pure function to_upper(s) result(u)
-        character(len=*), intent(in) :: s
+        character(len=*), intent(in) :: s   !! any text
         character(len=len(s)) :: u
         integer :: i, c
         u = s
@@ -292,7 +292,7 @@ contains
 
     !> Decimal text of an integer.
     pure function int_text(i) result(text)
-        integer, intent(in) :: i
+        integer, intent(in) :: i   !! the integer
         character(len=:), allocatable :: text
         character(len=12) :: buf
         write (buf, '(i0)') i
@@ -301,7 +301,7 @@ contains
 
     !> Short text of a real with up to 10 significant digits: 0.0025, 6, -1.5E-12, 3.0E7.
     pure function format_real(x) result(text)
-        real(dp), intent(in) :: x
+        real(dp), intent(in) :: x   !! the number
         character(len=:), allocatable :: text
         character(len=24) :: buf
         character(len=:), allocatable :: digits

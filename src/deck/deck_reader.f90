@@ -1,10 +1,12 @@
 !> Input decks (SPEC §8): card images -> the problem (`model_t`, physical units) and its SWEEP
 !! cards. Every input error of the deck is collected and reported at once, in line order, as
 !! `deck:line:columns: what was expected, got what was found`, followed by the line and a caret
-!! marker (the fpm file_parse_error pattern); the run is then refused (EXIT_INPUT). Library code: never prints or stops.
+!! marker (the fpm file_parse_error pattern); the run is then refused (EXIT_INPUT). Library
+!! code: never prints or stops.
 !!
-!! Cards (columns 1-10 the name, fields f1..f7 in columns 11-20, 21-30, ..., 71-80; README and
-!! doc/deck_cards.md list every field, default, unit and message):
+!! Cards (columns 1-10 the name, fields f1..f7 in columns 11-20, 21-30, ..., 71-80; README's
+!! "Input decks: reference" lists every field with its default, unit and rule, doc/ERRORS.md
+!! every message):
 !!
 !!     *...+....1....+....2....+....3....+....4....+....5....+....6....+....7....+....8
 !!     TITLE     Circular concrete raft, 8000 kN column load, elastic half-space
@@ -148,7 +150,7 @@ contains
     subroutine read_deck(path, deck, err)
         character(len=*), intent(in) :: path       !! file name, as given by the user
         type(deck_t), intent(out) :: deck          !! the deck (partial on error)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(text_line_t), allocatable :: raw(:)
         character(len=:), allocatable :: lines(:)
         character(len=256) :: msg
@@ -219,7 +221,7 @@ contains
         character(len=*), intent(in) :: name            !! deck name for messages and the stem
         character(len=*), intent(in) :: text_lines(:)   !! the lines, any length
         type(deck_t), intent(out) :: deck               !! the deck (partial on error)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         type(state_t) :: st
         character(len=len(text_lines)), allocatable :: lines(:)
         integer :: i
@@ -271,7 +273,7 @@ contains
         integer, intent(in) :: i                               !! case number 1..case_count
         type(model_t), intent(out) :: m                        !! the problem of case i
         character(len=:), allocatable, intent(out) :: label    !! e.g. 'RHO=0.0025 F=0.6'
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err         !! allocated on failure
         type(diagnostics_t) :: diag
         integer, allocatable :: pick(:)
         integer :: s

@@ -24,7 +24,7 @@ contains
 
     !> Warnings about the input of one case.
     pure function input_warnings(m) result(w)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model
         character(len=warning_length), allocatable :: w(:)
         character(len=warning_length) :: text
         real(dp) :: ratio
@@ -53,7 +53,7 @@ contains
 
     !> Warnings about a solved case: a settlement larger than the thickness or l/10.
     pure function settlement_warnings(m, w_max) result(w)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m         !! the model
         real(dp), intent(in) :: w_max          !! largest settlement [length]
         character(len=warning_length), allocatable :: w(:)
         character(len=warning_length) :: text
@@ -76,7 +76,7 @@ contains
     !! flag count grows with the stations, the tension falls with eta_bar).
     pure function tension_warnings(m, n_flags, n_lifted, n_stations, most_tensile, &
                                    tension_tol) result(w)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m             !! the model
         integer, intent(in) :: n_flags             !! stations flagged !T
         integer, intent(in) :: n_lifted            !! of them lifted off
         integer, intent(in) :: n_stations          !! stations of the table

@@ -44,11 +44,12 @@ contains
     !! result does not depend on the thread that solved it, and the console lines, files and
     !! summary rows come in case order.
     subroutine run_analysis(deck, out_dir, log_unit, err_unit, status, options)
-        type(deck_t), intent(in) :: deck
+        type(deck_t), intent(in) :: deck           !! the read deck: its cases and sweeps
         character(len=*), intent(in) :: out_dir    !! e.g. 'output'
         integer, intent(in) :: log_unit            !! where each case's outcome is written
         integer, intent(in) :: err_unit            !! errors, warnings and progress
-        integer, intent(out) :: status
+        integer, intent(out) :: status             !! the worst exit status of the cases
+        !> threads, shard, estimates, figures (defaults: run_options_t)
         type(run_options_t), intent(in), optional :: options
         type(run_options_t) :: opt
         integer(int64) :: clock_start

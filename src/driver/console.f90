@@ -15,10 +15,11 @@ contains
 
     !> The console line (or error) and the warnings of one case; status: the worst so far.
     subroutine report_case(log_unit, err_unit, deck_path, out_dir, r, status)
+        !> the outcome's unit; the unit of errors and warnings
         integer, intent(in) :: log_unit, err_unit
-        character(len=*), intent(in) :: deck_path, out_dir
-        type(case_result_t), intent(in) :: r
-        integer, intent(inout) :: status
+        character(len=*), intent(in) :: deck_path, out_dir   !! the deck as given; the output folder
+        type(case_result_t), intent(in) :: r                 !! the case's outcome
+        integer, intent(inout) :: status   !! the worst exit status so far, raised by this case's
         integer :: k
         if (r%status == EXIT_OK) then
             write (log_unit, '(a)') r%name//': solved  '//console_summary(r%entries)// &
@@ -37,9 +38,9 @@ contains
     !> Standard-error progress: cases done of n, the elapsed time and an estimate of the time
     !! left (the mean time per case so far).
     subroutine report_progress(unit, done, n, name, clock_start)
-        integer, intent(in) :: unit, done, n
-        character(len=*), intent(in) :: name
-        integer(int64), intent(in) :: clock_start
+        integer, intent(in) :: unit, done, n   !! standard error's unit; cases done; cases in all
+        character(len=*), intent(in) :: name        !! the deck's name
+        integer(int64), intent(in) :: clock_start   !! system_clock count at the start of the run
         integer(int64) :: now, rate
         real(dp) :: elapsed
         character(len=80) :: eta
@@ -53,7 +54,7 @@ contains
     end subroutine report_progress
 
     pure function seconds(t) result(text)
-        real(dp), intent(in) :: t
+        real(dp), intent(in) :: t   !! a time [s]
         character(len=:), allocatable :: text
         character(len=16) :: buf
         write (buf, '(f12.1)') t

@@ -32,9 +32,9 @@ contains
 
     !> Mesh and bases from the MESH card; plate symmetry u_s(0) = psi(0) = 0.
     subroutine new_discretization(m, d, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(out) :: d
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                   !! the model
+        type(discretization_t), intent(out) :: d         !! the discretisation
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(mesh_t) :: msh
         real(dp) :: x_left, x_right
 
@@ -47,7 +47,7 @@ contains
     !> The fewest elements the model's MESH grading can make: one per piece between the load
     !! positions for LOADS, else 1 (the deck reader checks N_e against it).
     pure integer function fewest_elements(m) result(n)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model
         real(dp) :: x_left, x_right
         n = 1
         if (trim(m%mesh%grading) /= 'LOADS') return
@@ -58,9 +58,9 @@ contains
     !> Bases, numbering and constraints of the model's fields on a given mesh (any nodes:
     !! the MESH card's, or an adapted mesh). The one place these rules live.
     subroutine discretise_mesh(m, msh, d)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m              !! the model
         type(mesh_t), intent(in) :: msh             !! nodes spanning the whole interface
-        type(discretization_t), intent(out) :: d
+        type(discretization_t), intent(out) :: d    !! the discretisation
         integer :: field
         d%msh = msh
         do field = FIELD_U, FIELD_SZ
@@ -109,7 +109,7 @@ contains
     !! node of msh, so that an S2 displacement basis has its slope jump there.
     pure logical function loads_on_nodes(loads, msh)
         type(load_t), intent(in) :: loads(:)   !! the loads part of the model
-        type(mesh_t), intent(in) :: msh
+        type(mesh_t), intent(in) :: msh        !! the mesh
         real(dp) :: tol
         integer :: i
         tol = 1.0e-9_dp*(msh%x(msh%ne) - msh%x(0))
@@ -125,10 +125,10 @@ contains
 
     !> Element containing x and the local coordinate there (x clipped to the mesh).
     pure subroutine locate_element(msh, x, e, xi)
-        type(mesh_t), intent(in) :: msh
-        real(dp), intent(in) :: x
-        integer, intent(out) :: e
-        real(dp), intent(out) :: xi
+        type(mesh_t), intent(in) :: msh   !! the mesh
+        real(dp), intent(in) :: x         !! a position on the structure [L]
+        integer, intent(out) :: e         !! the element holding x
+        real(dp), intent(out) :: xi       !! the local coordinate of x in e, in [-1, 1]
         integer :: lo, hi, mid
         lo = 1
         hi = msh%ne

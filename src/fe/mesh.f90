@@ -33,7 +33,7 @@ contains
         real(dp), intent(in) :: x_left, x_right       !! ends of the interface [length]
         integer, intent(in) :: ne                     !! number of elements >= 1
         character(len=*), intent(in) :: grading       !! UNIFORM, EDGES or LOADS
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         real(dp), intent(in), optional :: attractors(:)  !! load positions (LOADS) [length]
         real(dp), allocatable :: sizes(:), breaks(:)
         integer :: e
@@ -88,8 +88,8 @@ contains
     !> Sorted distinct cut points: the ends and the attractors strictly inside.
     !> The pieces LOADS grading cuts [x_left, x_right] into (it needs an element for each).
     pure integer function loads_pieces(x_left, x_right, attractors) result(n)
-        real(dp), intent(in) :: x_left, x_right
-        real(dp), intent(in) :: attractors(:)
+        real(dp), intent(in) :: x_left, x_right   !! the ends of the range cut [L]
+        real(dp), intent(in) :: attractors(:)     !! load positions [L], any order
         n = size(break_points(x_left, x_right, attractors)) - 1
     end function loads_pieces
 
@@ -151,8 +151,8 @@ contains
 
     !> Length of element e.
     pure real(dp) function element_length(msh, e)
-        type(mesh_t), intent(in) :: msh
-        integer, intent(in) :: e
+        type(mesh_t), intent(in) :: msh   !! the mesh
+        integer, intent(in) :: e          !! the element
         element_length = msh%x(e) - msh%x(e - 1)
     end function element_length
 end module mesh

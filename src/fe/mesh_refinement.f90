@@ -1,5 +1,6 @@
-!> Operations on a given mesh for adaptive refinement (issue 8 item 3): bisect marked
-!! elements, keep neighbouring elements within a size ratio of 2, move (snap) a node onto a
+!> Operations on a given mesh for adaptive refinement (ADAPT; doc/CHOICES.md, Adaptive
+!! meshing): bisect marked elements, keep neighbouring elements within a size ratio of 2, move
+!! (snap) a node onto a
 !! located boundary, and coarsen by removing every other node between pinned nodes.
 !!
 !! Pinned nodes are positions the mesh must keep: the ends of the interface, the load
@@ -21,7 +22,7 @@ contains
 
     !> The mesh with every marked element cut in two equal halves.
     pure function bisected(msh, marked) result(fine)
-        type(mesh_t), intent(in) :: msh
+        type(mesh_t), intent(in) :: msh            !! the mesh
         logical, intent(in) :: marked(:)           !! (ne) element e is cut
         type(mesh_t) :: fine
         integer :: e, k
@@ -43,8 +44,8 @@ contains
     !! neighbour: a graded mesh without jumps, so that refinement towards a singular end or a
     !! boundary stays a smooth geometric grading (and the interpolation error stays local).
     pure subroutine balance_marks(msh, marked)
-        type(mesh_t), intent(in) :: msh
-        logical, intent(inout) :: marked(:)
+        type(mesh_t), intent(in) :: msh       !! the mesh
+        logical, intent(inout) :: marked(:)   !! per element: to be bisected; marks added
         real(dp), allocatable :: h_new(:)
         logical :: changed
         integer :: e
@@ -67,8 +68,8 @@ contains
 
     !> Index of the node nearest to x.
     pure integer function nearest_node(msh, x) result(i)
-        type(mesh_t), intent(in) :: msh
-        real(dp), intent(in) :: x
+        type(mesh_t), intent(in) :: msh   !! the mesh
+        real(dp), intent(in) :: x         !! a position [L]
         i = minloc(abs(msh%x - x), dim=1) - 1
     end function nearest_node
 
@@ -77,10 +78,10 @@ contains
     !! length. The node moves inside that element, so nodes keep their order and the element
     !! keeps at least a quarter of its length. node: the node moved (-1 if none could be).
     pure subroutine snap_node(msh, x, pinned, node)
-        type(mesh_t), intent(inout) :: msh
-        real(dp), intent(in) :: x
+        type(mesh_t), intent(inout) :: msh          !! the mesh, one node moved
+        real(dp), intent(in) :: x                   !! the position (a located boundary) [L]
         logical, intent(in) :: pinned(0:)           !! (0:ne) nodes that must stay
-        integer, intent(out) :: node
+        integer, intent(out) :: node                !! the node moved (-1: none)
         integer :: e, near, far
         real(dp) :: h
         node = -1
@@ -101,8 +102,8 @@ contains
 
     !> Nodes at the given positions (to within 1e-9 of the length) and the two ends.
     pure function pinned_nodes(msh, positions) result(pinned)
-        type(mesh_t), intent(in) :: msh
-        real(dp), intent(in) :: positions(:)
+        type(mesh_t), intent(in) :: msh        !! the mesh
+        real(dp), intent(in) :: positions(:)   !! positions whose nodes stay (load positions) [L]
         logical :: pinned(0:msh%ne)
         real(dp) :: tol
         integer :: k, i
@@ -120,10 +121,10 @@ contains
     !! of elements keeps its last element whole): about half the elements, the pinned nodes
     !! kept. pinned_out: the pinned flags on the coarse mesh.
     pure subroutine coarsened(msh, pinned, coarse, pinned_out)
-        type(mesh_t), intent(in) :: msh
-        logical, intent(in) :: pinned(0:)
-        type(mesh_t), intent(out) :: coarse
-        logical, allocatable, intent(out) :: pinned_out(:)
+        type(mesh_t), intent(in) :: msh                      !! the mesh
+        logical, intent(in) :: pinned(0:)                    !! per node: pinned (kept)
+        type(mesh_t), intent(out) :: coarse                  !! the coarser mesh
+        logical, allocatable, intent(out) :: pinned_out(:)   !! per node of coarse: pinned
         logical :: keep(0:msh%ne)
         integer :: i, last_pin, k
         keep = .false.

@@ -41,23 +41,23 @@ contains
 
     !> Structural stiffness K (nv x nv) in the numbering of d, dense (tests, benchmarks).
     pure subroutine assemble_stiffness(sec, d, k)
-        type(section_t), intent(in) :: sec
-        type(discretization_t), intent(in) :: d
+        type(section_t), intent(in) :: sec   !! the section stiffnesses
+        type(discretization_t), intent(in) :: d   !! the discretisation
         real(dp), intent(out) :: k(:, :)     !! nv x nv
         k = dense_of(compressed(stiffness_entries(sec, d)))
     end subroutine assemble_stiffness
 
     !> The element contributions to K as triplets (they add where they meet).
     pure function stiffness_entries(sec, d) result(k)
-        type(section_t), intent(in) :: sec
-        type(discretization_t), intent(in) :: d
+        type(section_t), intent(in) :: sec        !! the section stiffnesses
+        type(discretization_t), intent(in) :: d   !! the discretisation
         type(triplets_t) :: k
         integer :: e, n_full, n_shear
         real(dp), allocatable :: xi_full(:), w_full(:), xi_shear(:), w_shear(:)
         k = new_triplets(d%nv, d%nv, 4*d%msh%ne*(2*max_local)**2)
         n_full = maxval(d%basis(FIELD_U:FIELD_PSI)%degree) + merge(2, 1, sec%plate)
         n_shear = max(d%basis(FIELD_W)%degree, d%basis(FIELD_PSI)%degree)
-        ! the rules once, not once per element (they were 4 % of a small case's time)
+        ! the rules once, not once per element (once per element they cost 4 % of a small case's time)
         allocate (xi_full(n_full), w_full(n_full), xi_shear(n_shear), w_shear(n_shear))
         call gauss_legendre(n_full, xi_full, w_full)
         call gauss_legendre(n_shear, xi_shear, w_shear)
@@ -144,8 +144,8 @@ contains
     !> Coupling M (nr x nv) between tractions and bottom-face displacements (paper 2.2b),
     !! dense (tests, benchmarks).
     pure subroutine assemble_coupling(m, d, mm)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
+        type(model_t), intent(in) :: m       !! the model
+        type(discretization_t), intent(in) :: d   !! the discretisation
         real(dp), intent(out) :: mm(:, :)    !! nr x nv
         mm = dense_of(compressed(coupling_entries(m%structure, d)))
     end subroutine assemble_coupling
@@ -153,7 +153,7 @@ contains
     !> The element contributions to M as triplets.
     pure function coupling_entries(structure, d) result(mm)
         type(structure_t), intent(in) :: structure   !! the structure part of the model
-        type(discretization_t), intent(in) :: d
+        type(discretization_t), intent(in) :: d      !! the discretisation
         type(triplets_t) :: mm
         integer, parameter :: n = 4    ! exact for degree 2 x degree 2 x r
         real(dp) :: xi(n), w(n)
@@ -195,10 +195,10 @@ contains
 
     !> Generalised top-face loads q (paper 2.2a): F_z on w, F_x on u_s + (h/2) psi.
     subroutine assemble_loads(m, d, q, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
+        type(model_t), intent(in) :: m       !! the model
+        type(discretization_t), intent(in) :: d          !! the discretisation
         real(dp), intent(out) :: q(:)        !! nv
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: i
         q = 0.0_dp
         loads: do i = 1, size(m%loads)
@@ -267,10 +267,10 @@ contains
 
     !> u_s, w, psi and their derivatives at local xi of element e.
     pure function displacement_at(d, v, e, xi) result(p)
-        type(discretization_t), intent(in) :: d
+        type(discretization_t), intent(in) :: d   !! the discretisation
         real(dp), intent(in) :: v(:)       !! displacement coefficients (nv)
-        integer, intent(in) :: e
-        real(dp), intent(in) :: xi
+        integer, intent(in) :: e           !! the element
+        real(dp), intent(in) :: xi         !! local coordinate in [-1, 1]
         type(field_point_t) :: p
         integer :: field, idx(max_local), n
         real(dp) :: val(max_local), der(max_local)
@@ -284,10 +284,10 @@ contains
 
     !> sigma_x, sigma_z at local xi of element e from the traction coefficients r (nr).
     pure function traction_at(d, r, e, xi) result(s)
-        type(discretization_t), intent(in) :: d
-        real(dp), intent(in) :: r(:)
-        integer, intent(in) :: e
-        real(dp), intent(in) :: xi
+        type(discretization_t), intent(in) :: d   !! the discretisation
+        real(dp), intent(in) :: r(:)              !! the traction coefficients (nr)
+        integer, intent(in) :: e                  !! the element
+        real(dp), intent(in) :: xi                !! local coordinate in [-1, 1]
         real(dp) :: s(2)
         integer :: field, idx(max_local), n
         real(dp) :: val(max_local), der(max_local), x
@@ -302,8 +302,8 @@ contains
     !! (per unit length of circumference / radius). At r = 0, u/r and psi/r take their limits
     !! u' and psi' (both vanish at the axis).
     pure function resultants(sec, p) result(res)
-        type(section_t), intent(in) :: sec
-        type(field_point_t), intent(in) :: p
+        type(section_t), intent(in) :: sec     !! the section stiffnesses
+        type(field_point_t), intent(in) :: p   !! u_s, w, psi and their derivatives at the point
         real(dp) :: res(5)
         real(dp) :: u_r, psi_r
         res = 0.0_dp

@@ -43,7 +43,7 @@ contains
         type(discretization_t), intent(in) :: df       !! the fine discretisation
         type(discretization_t), intent(in) :: dc       !! the coarse one, nested in df
         real(dp), allocatable, intent(out) :: t_c(:, :)  !! coarse operator, dc%nr x dc%nr
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(prolongation_t) :: px, pz, p
         call prolongation(df%basis(FIELD_SX), dc%basis(FIELD_SX), px, err)
         if (allocated(err)) return

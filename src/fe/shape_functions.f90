@@ -40,8 +40,8 @@ contains
 
     !> Build the basis of the given family on the mesh.
     pure subroutine new_basis(basis, msh, family, c0_nodes)
-        type(basis_t), intent(out) :: basis
-        type(mesh_t), intent(in) :: msh
+        type(basis_t), intent(out) :: basis    !! the basis
+        type(mesh_t), intent(in) :: msh        !! the mesh
         integer, intent(in) :: family          !! INTERP_P1, INTERP_P2 or INTERP_S2
         integer, intent(in), optional :: c0_nodes(:)  !! S2: interior nodes made C0
         integer :: ne
@@ -98,7 +98,7 @@ contains
 
     !> Values and x-derivatives of the functions nonzero on element e at local xi in [-1, 1].
     pure subroutine eval_basis(basis, e, xi, idx, val, der, x)
-        type(basis_t), intent(in) :: basis
+        type(basis_t), intent(in) :: basis        !! the basis
         integer, intent(in) :: e                  !! element, 1..ne
         real(dp), intent(in) :: xi                !! local coordinate in [-1, 1]
         integer, intent(out) :: idx(max_local)    !! global coefficient numbers (first n_local)
@@ -150,7 +150,7 @@ contains
 
     !> Deck word of an interpolation code.
     pure function interp_name(family) result(name)
-        integer, intent(in) :: family
+        integer, intent(in) :: family   !! interpolation code (INTERP_P1, INTERP_P2, INTERP_S2)
         character(len=2) :: name
         select case (family)
         case (INTERP_P2)
@@ -164,7 +164,7 @@ contains
 
     !> Interpolation code of a deck word (P1, P2, S2); 0 when unknown.
     pure integer function interp_code(word)
-        character(len=*), intent(in) :: word
+        character(len=*), intent(in) :: word   !! a deck word
         select case (trim(adjustl(word)))
         case ('P1')
             interp_code = INTERP_P1

@@ -61,7 +61,7 @@ contains
         real(dp), intent(in) :: m1          !! 1 - k^2, 0 < m1 <= 1
         real(dp), intent(out) :: k_val      !! K(k)
         real(dp), intent(out) :: e_val      !! E(k)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(gsl_sf_result) :: rf, rd, rd_swap
         integer(c_int) :: status
         real(dp) :: big_l
@@ -105,7 +105,7 @@ contains
         real(dp), intent(in) :: epsabs, epsrel          !! requested accuracy
         real(dp), intent(out) :: result                 !! integral
         real(dp), intent(out) :: abserr                 !! QAGS error estimate
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         type(integrand_box_t), target :: box
         type(gsl_function) :: gf
         type(c_ptr) :: workspace
@@ -144,7 +144,7 @@ contains
 
     !> gsl_strerror copied into a Fortran string.
     function gsl_status_text(status) result(text)
-        integer(c_int), intent(in) :: status
+        integer(c_int), intent(in) :: status   !! a GSL status code
         character(len=:), allocatable :: text
         character(kind=c_char), pointer :: chars(:)
         type(c_ptr) :: p

@@ -34,7 +34,7 @@ contains
 
     !> The tables of every order (module header).
     pure subroutine new_chebyshev(cheb)
-        type(chebyshev_t), intent(out) :: cheb
+        type(chebyshev_t), intent(out) :: cheb   !! the tables
         real(dp) :: theta, rho
         integer :: i, k, m
         by_order: do k = 1, n_orders
@@ -54,8 +54,8 @@ contains
     !> t(i, q + 1) = T_q(xi(i)), q = 0, ..., size(t, 2) - 1, by the three-term recurrence
     !! (stable on [-1, 1]), on the vector of points.
     pure subroutine chebyshev_values(xi, t)
-        real(dp), intent(in) :: xi(:)
-        real(dp), intent(out) :: t(:, :)
+        real(dp), intent(in) :: xi(:)      !! points in [-1, 1]
+        real(dp), intent(out) :: t(:, :)   !! t(i, q + 1) = T_q(xi(i))
         integer :: q
         t(:, 1) = 1.0_dp
         if (size(t, 2) >= 2) t(:, 2) = xi
@@ -67,8 +67,8 @@ contains
     !> The lowest order (its index k in orders) accurate for a cluster at gap / length =
     !! ratio; 0 if none is.
     pure integer function order_for(cheb, ratio) result(k)
-        type(chebyshev_t), intent(in) :: cheb
-        real(dp), intent(in) :: ratio
+        type(chebyshev_t), intent(in) :: cheb   !! the tables
+        real(dp), intent(in) :: ratio           !! gap / length of the cluster
         by_order: do k = 1, n_orders
             if (ratio >= cheb%min_ratio(k)) return
         end do by_order

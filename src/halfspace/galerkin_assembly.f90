@@ -26,7 +26,8 @@
 !!    formed from differences of node coordinates (1 - t or x - a rounded from absolute
 !!    positions would cost eps |x|/h, 1e-13 at N_e = 1000);
 !!  * other kernels: the two-dimensional pair rules of `singular_quadrature`.
-!! Interpolated blocks (ring kernels, N_e >= min_blocks; issue 7 item 3): the elements are
+!! Interpolated blocks (ring kernels, N_e >= min_blocks; doc/METHOD.md, Assembly of the
+!! half-space flexibility T): the elements are
 !! grouped in a binary tree of clusters (contiguous elements halved by count down to leaf_max)
 !! and a pair of clusters X left of Y with gap >= block_ratio times the longer, whose
 !! interpolation needs fewer than block_cost kernel values per element pair, is one block: the
@@ -42,9 +43,9 @@
 !! threads). The kernel values fall by 3 to 9 times at N_e 200 to 1000; T
 !! moves by 1e-15 to 3.2e-15 of its largest entry (pairwise = .true.: no blocks, the assembly
 !! of fc09087, output/bench/assembly_before_after.md). Below min_blocks elements the blocks
-!! did not pay (most pairs are near or nearly near). Issue 7 item 3, "T share" step: the
-!! blocks start at N_e = 50 (was 128), with leaves of up to 6 elements (was 4) and up to 24
-!! kernel values per element pair (was 16), and the Chebyshev moments of a leaf form T_q at
+!! do not pay (most pairs are near or nearly near). The blocks start at N_e = 50, with leaves
+!! of up to 6 elements and up to 24 kernel values per element pair (doc/METHOD.md, "T share"
+!! step; doc/CHOICES.md, Assembly of T), and the Chebyshev moments of a leaf form T_q at
 !! its GL nodes once per element and a function repeating another (bx and bz of one family)
 !! once (`leaf_moments`): T 10 to 25 % faster at N_e = 50 to 128 (1.8e-15 of its largest
 !! entry from the pairwise T), 5 % at 200, the same at 500 and 1000 (the same blocks there).
@@ -193,12 +194,12 @@ contains
 
     !> T (module header); n_kernel returns the number of kernel evaluations (point pairs).
     subroutine assemble_split_kernel(kernel, bx, bz, t_mat, err, n_kernel, far_digits, pairwise)
-        class(split_kernel_t), intent(in) :: kernel
+        class(split_kernel_t), intent(in) :: kernel         !! the surface kernel in split form
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z, same mesh
-        real(dp), allocatable, intent(out) :: t_mat(:, :)
-        type(error_t), allocatable, intent(out) :: err
-        integer(int64), intent(out), optional :: n_kernel
+        real(dp), allocatable, intent(out) :: t_mat(:, :)   !! T (nr x nr)
+        type(error_t), allocatable, intent(out) :: err      !! allocated on failure
+        integer(int64), intent(out), optional :: n_kernel   !! kernel evaluations (point pairs)
         real(dp), intent(in), optional :: far_digits  !! accuracy studies only: digits of the
                                                       !! far rules (far_points) instead of
                                                       !! default_far_digits
@@ -635,7 +636,7 @@ contains
     !! for the worst (Legendre) polynomial of degree p <= 3, as measured with 40-digit
     !! arithmetic at ratios 2 to 3000. The contract of T is its entries to about 1e-14 of the
     !! LARGEST entry, and the kernels here are logarithmic (milder than 1/d, for which the
-    !! estimate was made): far_digits = 13 (15 before, 16.5 before that) moves T by at most
+    !! estimate was made): far_digits = 13 (doc/CHOICES.md, Assembly of T) moves T by at most
     !! 1.0e-15 of its largest entry against rules of 20 digits (1.4e-15 for the beam), the
     !! round-off level of the assembly (3e-16 to 7e-16 with 15 digits), for 20 % fewer kernel
     !! evaluations; an entry far below the largest may move by more relative to itself

@@ -51,7 +51,7 @@ contains
         real(dp), intent(in) :: nu_f                    !! soil Poisson's ratio, [0, 0.5]
         real(dp), intent(in) :: width                   !! beam width b [length]
         real(dp), allocatable, intent(out) :: t_mat(:, :)  !! (nx+nz)^2 [length/force]
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
         integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
         real(dp), intent(in), optional :: far_digits    !! accuracy studies: digits of the far
@@ -83,7 +83,7 @@ contains
         real(dp), intent(in) :: x_eval(:)          !! evaluation points [length]
         real(dp), intent(out) :: u_x(:)            !! horizontal displacement, +x [length]
         real(dp), intent(out) :: u_z(:)            !! settlement, down positive [length]
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(strip_kernel_t) :: kernel
         call new_strip_kernel(kernel, g_f, nu_f, width, err)
         if (allocated(err)) return

@@ -15,10 +15,10 @@ contains
 
     !> T (nr x nr), blocks [T_xx T_xz; T_zx T_zz] in the traction numbering of d.
     subroutine assemble_flexibility(m, d, t_mat, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        real(dp), allocatable, intent(out) :: t_mat(:, :)
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                      !! the model
+        type(discretization_t), intent(in) :: d             !! the discretisation
+        real(dp), allocatable, intent(out) :: t_mat(:, :)   !! T (nr x nr)
+        type(error_t), allocatable, intent(out) :: err      !! allocated on failure
         if (m%structure%kind == MODEL_BEAM) then
             call assemble_beam_flexibility(d%basis(FIELD_SX), d%basis(FIELD_SZ), &
                                            soil_shear_modulus(m%ground), m%ground%nu_f, &
@@ -31,12 +31,13 @@ contains
 
     !> Surface displacements (u_x or u_r, w) of the half-space at x_eval under the tractions r.
     subroutine surface_displacement(m, d, r, x_eval, u_f, w_f, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
+        type(model_t), intent(in) :: m        !! the model
+        type(discretization_t), intent(in) :: d          !! the discretisation
         real(dp), intent(in) :: r(:)          !! traction coefficients [r_x; r_z]
-        real(dp), intent(in) :: x_eval(:)
+        real(dp), intent(in) :: x_eval(:)     !! evaluation points on the surface [L]
+        !> tangential and normal (down positive) displacement there
         real(dp), intent(out) :: u_f(:), w_f(:)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: nx
         nx = d%basis(FIELD_SX)%n_dof
         if (m%structure%kind == MODEL_BEAM) then

@@ -68,7 +68,7 @@ contains
         real(dp), intent(in) :: g_f                     !! soil shear modulus [force/length^2]
         real(dp), intent(in) :: nu_f                    !! soil Poisson's ratio, [0, 0.5]
         real(dp), allocatable, intent(out) :: t_mat(:, :)  !! (nx+nz)^2 [length^3/force]
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         logical, intent(in), optional :: reference      !! slow pair-by-pair reference assembly
         integer(int64), intent(out), optional :: n_kernel  !! kernel evaluations (point pairs)
         real(dp), intent(in), optional :: far_digits    !! accuracy studies: digits of the far
@@ -109,7 +109,7 @@ contains
         real(dp), intent(in) :: r_eval(:)          !! radii >= 0 [length]
         real(dp), intent(out) :: u_r(:)            !! radial displacement, outward [length]
         real(dp), intent(out) :: u_z(:)            !! settlement, down positive [length]
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(ring_kernel_t) :: kernel
         real(dp), allocatable :: r_use(:)
         real(dp) :: a
@@ -137,7 +137,7 @@ contains
         real(dp), intent(out) :: g_rr       !! (C4) u_r due to radial ring
         real(dp), intent(out) :: g_rz       !! (C2) u_r due to normal ring
         real(dp), intent(out) :: g_zr       !! (C3) w due to radial ring
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(ring_kernel_t) :: kernel
         real(dp) :: f(2, 2), p(2, 2)
         call new_ring_kernel(kernel, g_f, nu_f, err)

@@ -80,7 +80,7 @@ contains
     !! E_bottom = E_top is a constant layer; otherwise sublayers (module header).
     pure subroutine new_layered_ground(ground, thickness, e_top, e_bottom, poisson, base, &
                                        e_base, nu_base, err)
-        type(layered_ground_t), intent(out) :: ground
+        type(layered_ground_t), intent(out) :: ground    !! the resolved ground
         real(dp), intent(in) :: thickness(:)   !! input layers' thicknesses, surface first
         real(dp), intent(in) :: e_top(:)       !! Young's modulus at each layer's top
         real(dp), intent(in) :: e_bottom(:)    !! Young's modulus at each layer's bottom
@@ -88,7 +88,7 @@ contains
         integer, intent(in) :: base            !! BASE_ROUGH, BASE_SMOOTH or BASE_HALFSPACE
         real(dp), intent(in) :: e_base         !! base modulus (BASE_HALFSPACE)
         real(dp), intent(in) :: nu_base        !! base Poisson's ratio (BASE_HALFSPACE)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: j, n_sub(size(thickness))
         call check_layers(thickness, e_top, e_bottom, poisson, err)
         if (allocated(err)) return
@@ -205,20 +205,20 @@ contains
 
     !> Depth of the base below the surface [length].
     pure real(dp) function total_depth(ground)
-        type(layered_ground_t), intent(in) :: ground
+        type(layered_ground_t), intent(in) :: ground   !! the layered ground
         total_depth = sum(ground%thickness)
     end function total_depth
 
     !> s C of the homogeneous half-space (G, nu): zz, zh, hh, SH (module header).
     pure function halfspace_phi(g, nu) result(phi)
-        real(dp), intent(in) :: g, nu
+        real(dp), intent(in) :: g, nu   !! shear modulus G [F/L^2]; Poisson's ratio nu
         real(dp) :: phi(4)
         phi = [1.0_dp - nu, 0.5_dp*(1.0_dp - 2.0_dp*nu), 1.0_dp - nu, 1.0_dp]/g
     end function halfspace_phi
 
     !> The four compliances C_zz, C_zh, C_hh, C_SH at the wavenumbers s > 0 (module header).
     pure subroutine surface_compliance(ground, s, c_zz, c_zh, c_hh, c_sh)
-        type(layered_ground_t), intent(in) :: ground
+        type(layered_ground_t), intent(in) :: ground   !! the layered ground
         real(dp), intent(in) :: s(:)                 !! wavenumbers > 0 [1/length]
         real(dp), intent(out) :: c_zz(:), c_zh(:), c_hh(:), c_sh(:)  !! [length^3/force]
         real(dp) :: phi(4)
@@ -234,7 +234,7 @@ contains
 
     !> phi(k, :) = s_k (C - C_hs(top layer)) for zz, zh, hh, SH at the wavenumbers s > 0.
     pure subroutine compliance_correction(ground, s, phi)
-        type(layered_ground_t), intent(in) :: ground
+        type(layered_ground_t), intent(in) :: ground   !! the layered ground
         real(dp), intent(in) :: s(:)                 !! wavenumbers > 0 [1/length]
         real(dp), intent(out) :: phi(:, :)           !! (size(s), 4) [length^2/force]
         real(dp) :: phi_hs(4), phi_k(4)

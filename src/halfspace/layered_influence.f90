@@ -67,7 +67,7 @@ contains
         real(dp), intent(in) :: width                     !! beam width b [length] (beam)
         type(layered_ground_t), intent(in) :: ground      !! resolved layers and base
         real(dp), allocatable, intent(out) :: t_mat(:, :) !! (nx+nz)^2
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err    !! allocated on failure
         real(dp), allocatable :: t_corr(:, :)
         call layered_correction(bx, bz, beam, width, ground, t_corr, err)
         if (allocated(err)) return
@@ -84,12 +84,12 @@ contains
 
     !> T_corr = T - T_hs(top layer) (module header).
     subroutine layered_correction(bx, bz, beam, width, ground, t_corr, err, refine, n_nodes)
-        type(basis_t), intent(in) :: bx, bz
-        logical, intent(in) :: beam
-        real(dp), intent(in) :: width
-        type(layered_ground_t), intent(in) :: ground
-        real(dp), allocatable, intent(out) :: t_corr(:, :)
-        type(error_t), allocatable, intent(out) :: err
+        type(basis_t), intent(in) :: bx, bz        !! the bases of sigma_x and sigma_z
+        logical, intent(in) :: beam                !! a beam (strip kernels), else a plate (rings)
+        real(dp), intent(in) :: width              !! beam width [L] (unused for a plate)
+        type(layered_ground_t), intent(in) :: ground         !! the layered ground
+        real(dp), allocatable, intent(out) :: t_corr(:, :)   !! T_corr (nr x nr)
+        type(error_t), allocatable, intent(out) :: err       !! allocated on failure
         real(dp), intent(in), optional :: refine   !! accuracy studies: panels and element
                                                    !! rules refine times finer (default 1)
         integer, intent(out), optional :: n_nodes  !! wavenumber nodes of the outer rule
@@ -213,12 +213,12 @@ contains
         type(basis_t), intent(in) :: bx, bz               !! traction bases, one mesh
         logical, intent(in) :: beam                       !! .true. beam, .false. plate
         real(dp), intent(in) :: width                     !! beam width b (beam)
-        type(layered_ground_t), intent(in) :: ground
+        type(layered_ground_t), intent(in) :: ground      !! the layered ground
         real(dp), intent(in) :: rx(:), rz(:)              !! traction coefficients
         real(dp), intent(in) :: x_eval(:)                 !! points (beam x, plate r >= 0)
         real(dp), intent(out) :: u_h(:)                   !! u_x (beam) or u_r (plate)
         real(dp), intent(out) :: u_z(:)                   !! settlement, down positive
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err    !! allocated on failure
         real(dp), allocatable :: du_h(:), du_z(:)
         call check_problem(bx, bz, beam, width, ground, err)
         if (allocated(err)) then

@@ -42,7 +42,7 @@ contains
         real(dp), intent(in) :: k_0       !! end of the first panel (> 0)
         real(dp), intent(in) :: delta     !! longest panel (> 0)
         real(dp), intent(in) :: k_max     !! end of the range
-        integer, intent(in) :: max_panels
+        integer, intent(in) :: max_panels   !! most panels
         real(dp), allocatable :: breaks(:)
         real(dp) :: k
         integer :: n, n_doubling
@@ -76,8 +76,8 @@ contains
 
     !> Composite Gauss–Legendre rule, panel_points per panel between the breaks.
     pure subroutine panel_rule(breaks, rule)
-        real(dp), intent(in) :: breaks(:)
-        type(wavenumber_rule_t), intent(out) :: rule
+        real(dp), intent(in) :: breaks(:)              !! panel ends, increasing
+        type(wavenumber_rule_t), intent(out) :: rule   !! the composite rule
         real(dp) :: xi(panel_points), w(panel_points), half
         integer :: p, n
         call gauss_legendre(panel_points, xi, w)
@@ -98,9 +98,9 @@ contains
     !! (-1)^(k+1)/(k (k+1)) (k >= 1), so that the rule is exact for P_k and P_k ln u, k <
     !! log_degree (then scaled to [0, k_0]: ln k = ln u + ln k_0).
     subroutine log_product_rule(k_0, rule, err)
-        real(dp), intent(in) :: k_0
-        type(wavenumber_rule_t), intent(out) :: rule
-        type(error_t), allocatable, intent(out) :: err
+        real(dp), intent(in) :: k_0                      !! end of the range (> 0)
+        type(wavenumber_rule_t), intent(out) :: rule     !! the rule on [0, k_0]
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer, parameter :: n = 2*log_degree
         real(dp) :: t(n), wt(n), a(n, n), moment(n, 1), p(0:log_degree - 1)
         integer :: ipiv(n), info, i, k

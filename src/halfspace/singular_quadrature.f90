@@ -132,14 +132,14 @@ module singular_quadrature
         !! the tractions sigma_x = sum rx_b g_b, sigma_z = sum rz_b g_b:
         !! u_i(x) = int K_ij(x, s) sigma_j ds (submodule station_displacement).
         module subroutine displacement_split_kernel(kernel, bx, bz, rx, rz, x_eval, u, w, err)
-            class(split_kernel_t), intent(in) :: kernel
-            type(basis_t), intent(in) :: bx, bz
+            class(split_kernel_t), intent(in) :: kernel      !! the surface kernel in split form
+            type(basis_t), intent(in) :: bx, bz   !! the bases of sigma_x and sigma_z
             real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
             real(dp), intent(in) :: rz(:)         !! sigma_z coefficients (bz)
             real(dp), intent(in) :: x_eval(:)     !! evaluation points
             real(dp), intent(out) :: u(:)         !! tangential displacement
             real(dp), intent(out) :: w(:)         !! normal displacement (down positive)
-            type(error_t), allocatable, intent(out) :: err
+            type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         end subroutine displacement_split_kernel
     end interface
 
@@ -224,7 +224,7 @@ contains
     !> GL points for a piece whose distance from the nearest singularity is `ratio` times its
     !! length: rho = 1 + 2 ratio + sqrt((1 + 2 ratio)^2 - 1), n = target_digits / log10(rho).
     pure integer function points_for_ratio(ratio) result(n)
-        real(dp), intent(in) :: ratio
+        real(dp), intent(in) :: ratio   !! distance / length of the piece
         real(dp) :: c, rho
         c = 1.0_dp + 2.0_dp*max(ratio, 0.0_dp)
         rho = c + sqrt(c*c - 1.0_dp)
@@ -300,11 +300,11 @@ contains
     !! each with the points its distance from x0 asks, or from x_pole if that is nearer (a
     !! pole of F outside [a, b]).
     pure subroutine build_line_rule(tab, a, b, x0, u0, line, x_pole)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(in) :: tab    !! the GL rules and product-log weights
         real(dp), intent(in) :: a, b          !! interval, a < b
         real(dp), intent(in) :: x0            !! singular point (anywhere)
         real(dp), intent(in) :: u0            !! longest log piece
-        type(line_rule_t), intent(inout) :: line
+        type(line_rule_t), intent(inout) :: line   !! the rule, filled
         real(dp), intent(in), optional :: x_pole  !! another singular point, outside [a, b]
         real(dp) :: pole
         pole = huge(1.0_dp)
@@ -443,12 +443,12 @@ contains
     !! u0: longest log piece next to the diagonal; ratio_rule: use ratio coordinates (coincident
     !! elements at the origin of a kernel homogeneous of degree 0).
     pure subroutine build_pair_rule(tab, a1, b1, a2, b2, u0, ratio_rule, rule, line)
-        type(gauss_tables_t), intent(in) :: tab
+        type(gauss_tables_t), intent(in) :: tab     !! the GL rules and product-log weights
         real(dp), intent(in) :: a1, b1          !! field element
         real(dp), intent(in) :: a2, b2          !! source element
         real(dp), intent(in) :: u0              !! longest log piece
         logical, intent(in) :: ratio_rule       !! ratio coordinates (see module header)
-        type(point_rule_t), intent(inout) :: rule
+        type(point_rule_t), intent(inout) :: rule   !! the rule, filled
         type(line_rule_t), intent(inout) :: line   !! work space
         real(dp) :: gap
         rule%n = 0
@@ -540,8 +540,8 @@ contains
 
     !> Check that the two bases live on the same mesh.
     pure subroutine check_bases(bx, bz, err)
-        type(basis_t), intent(in) :: bx, bz
-        type(error_t), allocatable, intent(out) :: err
+        type(basis_t), intent(in) :: bx, bz              !! the bases of sigma_x and sigma_z
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         if (.not. (allocated(bx%x) .and. allocated(bz%x))) then
             call new_error(err, EXIT_INTERNAL, 'traction bases are not built')
         else if (bx%ne < 1 .or. bx%ne /= bz%ne) then
@@ -560,7 +560,7 @@ contains
     !! coordinate, is below the precision of any input position.
     pure function snapped_to_nodes(nodes, x_eval) result(x)
         real(dp), intent(in) :: nodes(0:)      !! mesh nodes, increasing
-        real(dp), intent(in) :: x_eval(:)
+        real(dp), intent(in) :: x_eval(:)      !! evaluation points
         real(dp) :: x(size(x_eval))
         integer :: i, lo, hi, mid, ne
         real(dp) :: tol
@@ -590,9 +590,9 @@ contains
     !> The bases of a surface-displacement call agree, and its arrays have their sizes
     !! (coefficients of each basis; u and w one per evaluation point).
     pure subroutine check_displacement_arguments(bx, bz, nrx, nrz, n_eval, nu, nw, err)
-        type(basis_t), intent(in) :: bx, bz
-        integer, intent(in) :: nrx, nrz, n_eval, nu, nw
-        type(error_t), allocatable, intent(out) :: err
+        type(basis_t), intent(in) :: bx, bz               !! the bases of sigma_x and sigma_z
+        integer, intent(in) :: nrx, nrz, n_eval, nu, nw   !! the sizes of rx, rz, x_eval, u and w
+        type(error_t), allocatable, intent(out) :: err    !! allocated on failure
         call check_bases(bx, bz, err)
         if (allocated(err)) return
         if (nrx /= bx%n_dof .or. nrz /= bz%n_dof .or. nu /= n_eval .or. nw /= n_eval) &
@@ -604,11 +604,11 @@ contains
     !! assembly: a rule built point by point for every element pair (graded pieces, GL orders
     !! for 1e-17 per direction); `galerkin_assembly` is the fast one used by the program.
     subroutine assemble_split_kernel_reference(kernel, bx, bz, t_mat, err, n_kernel)
-        class(split_kernel_t), intent(in) :: kernel
+        class(split_kernel_t), intent(in) :: kernel         !! the surface kernel in split form
         type(basis_t), intent(in) :: bx            !! basis of sigma_x
         type(basis_t), intent(in) :: bz            !! basis of sigma_z
-        real(dp), allocatable, intent(out) :: t_mat(:, :)
-        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable, intent(out) :: t_mat(:, :)   !! T (nr x nr)
+        type(error_t), allocatable, intent(out) :: err      !! allocated on failure
         integer(int64), intent(out), optional :: n_kernel   !! kernel evaluations (point pairs)
         type(gauss_tables_t) :: tab
         type(point_rule_t) :: rule
@@ -714,14 +714,14 @@ contains
     !! the kernel called once per pair; `displacement_split_kernel` (submodule
     !! station_displacement) is the fast one used by the program, checked against this one.
     subroutine displacement_split_kernel_reference(kernel, bx, bz, rx, rz, x_eval, u, w, err)
-        class(split_kernel_t), intent(in) :: kernel
-        type(basis_t), intent(in) :: bx, bz
+        class(split_kernel_t), intent(in) :: kernel      !! the surface kernel in split form
+        type(basis_t), intent(in) :: bx, bz   !! the bases of sigma_x and sigma_z
         real(dp), intent(in) :: rx(:)         !! sigma_x coefficients (bx)
         real(dp), intent(in) :: rz(:)         !! sigma_z coefficients (bz)
         real(dp), intent(in) :: x_eval(:)     !! evaluation points
         real(dp), intent(out) :: u(:)         !! tangential displacement
         real(dp), intent(out) :: w(:)         !! normal displacement (down positive)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(gauss_tables_t) :: tab
         type(line_rule_t) :: line
         real(dp), allocatable :: f(:, :, :), p(:, :, :), x_rep(:), x0(:)

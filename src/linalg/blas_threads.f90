@@ -25,7 +25,7 @@ module blas_threads
 contains
 
     subroutine set_blas_threads(n)
-        integer, intent(in) :: n
+        integer, intent(in) :: n   !! threads (at least 1)
         call openblas_set_num_threads(int(max(n, 1), c_int))
     end subroutine set_blas_threads
 

@@ -17,7 +17,7 @@ contains
         real(dp), intent(inout) :: a(:, :)   !! n x n symmetric matrix
         real(dp), intent(in) :: b(:)         !! right-hand side
         real(dp), intent(out) :: x(:)        !! solution
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer, allocatable :: ipiv(:)
         real(dp), allocatable :: work(:), rhs(:, :), a_copy(:, :)
         real(dp) :: query(1)
@@ -93,7 +93,7 @@ contains
         real(dp), intent(inout) :: a(:, :)   !! n x n matrix
         real(dp), intent(in) :: b(:)         !! right-hand side
         real(dp), intent(out) :: x(:)        !! solution
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer, allocatable :: ipiv(:)
         real(dp), allocatable :: rhs(:, :), a_copy(:, :)
         integer :: n, info, step
@@ -132,7 +132,7 @@ contains
         real(dp), intent(in) :: b(:)         !! right-hand side
         real(dp), intent(out) :: x(:)        !! solution
         logical, intent(in) :: symmetric     !! A = A^T (then only the lower triangle is used)
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         real(dp), allocatable :: s(:), y(:)
         integer :: i, n
         n = size(a, 1)

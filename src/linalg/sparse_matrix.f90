@@ -5,7 +5,8 @@
 !! The contact system keeps its base matrix in these forms (contact_system): the structure's K
 !! and the coupling M have a few nonzeros per column, and of the dense half-space block only
 !! one triangle is stored, so that a case of N_e = 1000 holds about two dense copies of its
-!! largest block rather than the whole n x n matrix (issue 7, memory).
+!! largest block rather than the whole n x n matrix (the memory target of doc/CHOICES.md,
+!! "The solver's performance targets").
 module sparse_matrix
     use kinds, only: dp, xp
     use lapack_interfaces, only: dspmv
@@ -38,7 +39,7 @@ contains
 
     !> An empty nrow x ncol matrix with room for `room` entries.
     pure function new_triplets(nrow, ncol, room) result(t)
-        integer, intent(in) :: nrow, ncol, room
+        integer, intent(in) :: nrow, ncol, room   !! rows, columns, entries to make room for
         type(triplets_t) :: t
         t%nrow = nrow
         t%ncol = ncol
@@ -47,9 +48,9 @@ contains
 
     !> t(i, j) += v (the storage doubles when full).
     pure subroutine add_entry(t, i, j, v)
-        type(triplets_t), intent(inout) :: t
-        integer, intent(in) :: i, j
-        real(dp), intent(in) :: v
+        type(triplets_t), intent(inout) :: t   !! the matrix
+        integer, intent(in) :: i, j            !! row, column
+        real(dp), intent(in) :: v              !! the value added
         if (t%n == size(t%row)) then
             t%row = [t%row, t%row]
             t%col = [t%col, t%col]
@@ -63,7 +64,7 @@ contains
 
     !> The columns of t: repeated positions summed, entries that sum to exactly 0 left out.
     pure function compressed(t) result(c)
-        type(triplets_t), intent(in) :: t
+        type(triplets_t), intent(in) :: t   !! the entries
         type(columns_t) :: c
         integer, allocatable :: slot(:), next(:), first(:)
         integer :: k, j, nnz
@@ -119,8 +120,8 @@ contains
 
     !> The entries of c as triplets (room for `extra` more).
     pure function triplets_of(c, extra) result(t)
-        type(columns_t), intent(in) :: c
-        integer, intent(in) :: extra
+        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
+        integer, intent(in) :: extra       !! room for this many more entries
         type(triplets_t) :: t
         integer :: j
         t = new_triplets(c%nrow, c%ncol, size(c%val) + extra)
@@ -134,7 +135,7 @@ contains
 
     !> c^T.
     pure function transposed(c) result(ct)
-        type(columns_t), intent(in) :: c
+        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
         type(columns_t) :: ct
         type(triplets_t) :: t
         integer, allocatable :: rows(:)
@@ -149,8 +150,8 @@ contains
 
     !> c x.
     pure function columns_times(c, x) result(y)
-        type(columns_t), intent(in) :: c
-        real(dp), intent(in) :: x(:)
+        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
+        real(dp), intent(in) :: x(:)       !! the vector (ncol)
         real(dp) :: y(c%nrow)
         integer :: j, k
         ! a scalar loop: the array form y(row(k1:k2)) = y(row(k1:k2)) + ... makes the compiler
@@ -168,8 +169,8 @@ contains
     !! columns_times again, for the few sums that need it (binary128 is emulated in
     !! software, too slow for the products of every residual).
     pure function columns_times_extended(c, x) result(y)
-        type(columns_t), intent(in) :: c
-        real(xp), intent(in) :: x(:)
+        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
+        real(xp), intent(in) :: x(:)       !! the vector (ncol), extended precision
         real(xp) :: y(c%nrow)
         integer :: j, k
         y = 0.0_xp
@@ -182,8 +183,8 @@ contains
 
     !> Column j of c as a dense vector.
     pure function dense_column(c, j) result(col)
-        type(columns_t), intent(in) :: c
-        integer, intent(in) :: j
+        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
+        integer, intent(in) :: j           !! the column
         real(dp) :: col(c%nrow)
         col = 0.0_dp
         col(c%row(c%ptr(j):c%ptr(j + 1) - 1)) = c%val(c%ptr(j):c%ptr(j + 1) - 1)
@@ -193,10 +194,10 @@ contains
     !! elsewhere): O(nonzeros) where dense_column is O(nrow). With clear, those rows are set
     !! to zero again instead.
     pure subroutine scatter_column(c, j, col, clear)
-        type(columns_t), intent(in) :: c
-        integer, intent(in) :: j
+        type(columns_t), intent(in) :: c    !! the sparse matrix (compressed columns)
+        integer, intent(in) :: j            !! the column
         real(dp), intent(inout) :: col(:)   !! (c%nrow)
-        logical, intent(in) :: clear
+        logical, intent(in) :: clear        !! zero those rows instead
         integer :: k
         do k = c%ptr(j), c%ptr(j + 1) - 1
             col(c%row(k)) = merge(0.0_dp, c%val(k), clear)
@@ -205,7 +206,7 @@ contains
 
     !> c as a dense array.
     pure function dense_of(c) result(a)
-        type(columns_t), intent(in) :: c
+        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
         real(dp) :: a(c%nrow, c%ncol)
         integer :: j
         do j = 1, c%ncol
@@ -217,8 +218,8 @@ contains
     !! A subroutine, not a function: `ap = f(a)` held the result twice (a temporary and its
     !! copy), 32 MB at N_e = 1000 next to T, the peak of a plate case's memory.
     pure subroutine pack_lower(a, ap)
-        real(dp), intent(in) :: a(:, :)
-        real(dp), allocatable, intent(out) :: ap(:)
+        real(dp), intent(in) :: a(:, :)               !! symmetric n x n matrix
+        real(dp), allocatable, intent(out) :: ap(:)   !! its lower triangle, packed by columns
         integer :: j, n, k
         n = size(a, 1)
         allocate (ap(n*(n + 1)/2))
@@ -231,8 +232,8 @@ contains
 
     !> The symmetric matrix held in ap (n x n, lower packed) into a full n x n array.
     pure subroutine unpack_lower(ap, a)
-        real(dp), intent(in) :: ap(:)
-        real(dp), intent(out) :: a(:, :)
+        real(dp), intent(in) :: ap(:)      !! lower triangle, packed by columns
+        real(dp), intent(out) :: a(:, :)   !! the full n x n matrix
         integer :: j, n
         n = size(a, 1)
         do j = 1, n
@@ -243,21 +244,21 @@ contains
 
     !> Position of entry (i, j), i >= j, of an n x n lower triangle in packed storage.
     pure integer function packed_position(n, i, j) result(k)
-        integer, intent(in) :: n, i, j
+        integer, intent(in) :: n, i, j   !! order; row, column (i >= j)
         k = i + (j - 1)*(2*n - j)/2
     end function packed_position
 
     !> Entry (i, j) of the symmetric n x n matrix held in ap.
     pure real(dp) function packed_entry(ap, n, i, j) result(v)
-        real(dp), intent(in) :: ap(:)
-        integer, intent(in) :: n, i, j
+        real(dp), intent(in) :: ap(:)    !! lower triangle, packed by columns
+        integer, intent(in) :: n, i, j   !! order; row, column
         v = ap(packed_position(n, max(i, j), min(i, j)))
     end function packed_entry
 
     !> Column j of the symmetric n x n matrix held in ap (row j of the triangle above it).
     pure function packed_column(ap, n, j) result(col)
-        real(dp), intent(in) :: ap(:)
-        integer, intent(in) :: n, j
+        real(dp), intent(in) :: ap(:)   !! lower triangle, packed by columns
+        integer, intent(in) :: n, j     !! order; column
         real(dp) :: col(n)
         integer :: i
         do i = 1, j - 1
@@ -268,9 +269,9 @@ contains
 
     !> ap(i, j) += v (and so (j, i): the matrix is symmetric).
     pure subroutine packed_add(ap, n, i, j, v)
-        real(dp), intent(inout) :: ap(:)
-        integer, intent(in) :: n, i, j
-        real(dp), intent(in) :: v
+        real(dp), intent(inout) :: ap(:)   !! lower triangle, packed by columns
+        integer, intent(in) :: n, i, j     !! order; row, column
+        real(dp), intent(in) :: v          !! the value added
         associate (k => packed_position(n, max(i, j), min(i, j)))
             ap(k) = ap(k) + v
         end associate
@@ -278,8 +279,8 @@ contains
 
     !> The symmetric n x n matrix held in ap times x (BLAS dspmv).
     pure function packed_times(ap, x) result(y)
-        real(dp), intent(in) :: ap(:)
-        real(dp), intent(in) :: x(:)
+        real(dp), intent(in) :: ap(:)   !! lower triangle, packed by columns
+        real(dp), intent(in) :: x(:)    !! the vector (n)
         real(dp) :: y(size(x))
         y = 0.0_dp
         if (size(x) == 0) return

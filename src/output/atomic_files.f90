@@ -28,9 +28,9 @@ contains
 
     !> Open `path`.tmp for writing; the unit is returned.
     subroutine open_temporary(path, unit, err)
-        character(len=*), intent(in) :: path
-        integer, intent(out) :: unit
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: path             !! the final file (written as path.tmp)
+        integer, intent(out) :: unit                     !! the open temporary file
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: ios
         character(len=256) :: msg
         logical :: there
@@ -57,9 +57,9 @@ contains
     !> Close the unit and move `path`.tmp to `path`; if that fails, the temporary file is
     !! removed (no NAME.tmp is left) and the error says why it may have failed.
     subroutine commit_file(path, unit, err)
-        character(len=*), intent(in) :: path
-        integer, intent(in) :: unit
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: path             !! the final file
+        integer, intent(in) :: unit                      !! the open temporary file (open_temporary)
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         call move_into_place(path, unit, err)
         call release_temporary(path//'.tmp')
     end subroutine commit_file
@@ -143,7 +143,7 @@ contains
 
     !> Close and delete a temporary file (after a failure).
     subroutine discard_file(unit)
-        integer, intent(in) :: unit
+        integer, intent(in) :: unit   !! the open temporary file
         integer :: ios
         character(len=4096) :: name
         name = ''

@@ -158,7 +158,9 @@ contains
     !> gnuplot runs the figure script base.gp and renders the PNG to a temporary name, moved
     !! into place on success; `note` says why a figure was not drawn.
     subroutine render_png(base, note)
+        !> path of the script without .gp (and of the PNG without .png)
         character(len=*), intent(in) :: base
+        !> why no figure was drawn ('' when it was)
         character(len=:), allocatable, intent(out) :: note
         integer :: exit_status, cmd_status
         note = ''

@@ -19,8 +19,8 @@ contains
     !! lift-off tractions decoupled in the Newton factorisations (schur_solver), when the
     !! solution's decoupled (N, of M kept unknowns) says so.
     pure function simplification_text(m, d, decoupled) result(text)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
+        type(model_t), intent(in) :: m                  !! the model
+        type(discretization_t), intent(in) :: d         !! the discretisation
         integer, intent(in), optional :: decoupled(2)   !! solution_t%decoupled
         character(len=:), allocatable :: text
         type(reduction_t) :: red
@@ -58,7 +58,7 @@ contains
 
     !> One line for reports: how the estimate was obtained (adapted: on an adapted mesh).
     pure function error_method_text(adapted) result(text)
-        logical, intent(in), optional :: adapted
+        logical, intent(in), optional :: adapted   !! the estimate is on an adapted mesh
         character(len=:), allocatable :: text
         if (present(adapted)) then
             if (adapted) then
@@ -84,7 +84,7 @@ contains
 
     !> The report's lines on the adaptation.
     pure function adaptation_lines(info) result(lines)
-        type(adaptation_t), intent(in) :: info
+        type(adaptation_t), intent(in) :: info   !! the adaptation's cycles and outcome
         character(len=400), allocatable :: lines(:)
         character(len=400) :: buf
         integer :: k

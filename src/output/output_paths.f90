@@ -41,8 +41,8 @@ contains
     !> Create the folder (and its parents) and prove it writable with a probe file; an error
     !! (exit status 1) names the folder and the reason.
     subroutine prepare_output_dir(dir, err)
-        character(len=*), intent(in) :: dir
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: dir              !! the output folder
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: u, ios, exit_status, cmd_status
         character(len=256) :: msg
         if (scan(dir, '''"`$\') > 0) then
@@ -66,9 +66,10 @@ contains
     !! lies in the output folder and is named like one of the files its n cases write
     !! (writes_file).
     subroutine check_deck_not_overwritten(deck_path, dir, stem, n, err)
+        !> the deck's path; the output folder; the deck's file stem
         character(len=*), intent(in) :: deck_path, dir, stem
         integer, intent(in) :: n                 !! cases of the deck
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         character(len=:), allocatable :: deck_real, dir_real
         deck_real = canonical_path(deck_path)
         dir_real = canonical_path(dir)
@@ -86,9 +87,10 @@ contains
     !! into dirs(k), has the file stem stems(k) and counts(k) cases (0: unreadable, writes
     !! nothing).
     subroutine check_decks_apart(paths, dirs, stems, counts, err)
+        !> per deck: its path, output folder, file stem
         character(len=*), intent(in) :: paths(:), dirs(:), stems(:)
-        integer, intent(in) :: counts(:)
-        type(error_t), allocatable, intent(out) :: err
+        integer, intent(in) :: counts(:)                 !! per deck: its cases (0: unreadable)
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         character(len=:), allocatable :: files(:), deck_real, dir_real
         integer :: i, j, k
         do i = 1, size(paths)
@@ -132,8 +134,9 @@ contains
     !! STEM_sweep.* when such a case of a sweep was removed and this run is no sweep. Only
     !! files that look like fricon's outputs are deleted (remove_output): never a deck.
     subroutine remove_stale_outputs(dir, stem, n, deck_path)
+        !> the output folder; the deck's file stem; the deck's path
         character(len=*), intent(in) :: dir, stem, deck_path
-        integer, intent(in) :: n
+        integer, intent(in) :: n   !! cases this run writes (0: none)
         character(len=:), allocatable :: deck_real, group
         logical :: swept
         integer :: width, i, misses, k, j
@@ -172,8 +175,8 @@ contains
     !> The shards' summaries STEM_summary.shard-I-of-N.csv (--shard I/N) of every N up to 64
     !! but keep_n (0: all): an earlier split into another number of shards.
     subroutine remove_shard_summaries(dir, stem, keep_n)
-        character(len=*), intent(in) :: dir, stem
-        integer, intent(in) :: keep_n
+        character(len=*), intent(in) :: dir, stem   !! the output folder; the deck's file stem
+        integer, intent(in) :: keep_n               !! shards of this run (0: none)
         integer :: k, j
         do k = 2, 64
             if (k == keep_n) cycle
@@ -187,7 +190,7 @@ contains
     !> A sweep's summary STEM_summary<shard>.csv and, unsharded (shard ''), its overlay
     !! script and figure, with their .tmp.
     subroutine remove_sweep_outputs(dir, stem, shard)
-        character(len=*), intent(in) :: dir, stem
+        character(len=*), intent(in) :: dir, stem  !! the output folder; the deck's file stem
         character(len=*), intent(in) :: shard      !! '' or '.shard-I-of-N'
         integer :: k
         character(len=*), parameter :: tails(2) = ['_sweep.gp ', '_sweep.png']
@@ -221,7 +224,7 @@ contains
     !! starts with none of these (a card name, or a comment '*', '$' or 'C '), so no deck
     !! given an output's name is ever deleted.
     subroutine remove_output(path)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! a file
         integer :: u, ios
         logical :: there
         inquire (file=path, exist=there)
@@ -233,7 +236,7 @@ contains
 
     !> See remove_output.
     logical function looks_like_output(path)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! a file
         character(len=:), allocatable :: name
         character(len=200) :: head
         integer :: u, ios, n
@@ -364,8 +367,9 @@ contains
     !! number, case_number) and STEM_summary.csv, STEM_sweep.gp, STEM_sweep.png; ext one of
     !! output_extensions, or that with .tmp (written first, then renamed).
     pure logical function writes_file(stem, n, file)
+        !> the deck's file stem; a file name without its folder
         character(len=*), intent(in) :: stem, file
-        integer, intent(in) :: n
+        integer, intent(in) :: n   !! the deck's cases
         character(len=:), allocatable :: name, digits
         integer :: k, i, ios, n_ext
         writes_file = .false.
@@ -401,8 +405,8 @@ contains
 
     !> The names of every file the n cases of a deck of file stem `stem` write (writes_file).
     pure function output_files(stem, n) result(files)
-        character(len=*), intent(in) :: stem
-        integer, intent(in) :: n
+        character(len=*), intent(in) :: stem   !! the deck's file stem
+        integer, intent(in) :: n               !! the deck's cases
         character(len=:), allocatable :: files(:)
         integer :: i, k, width
         width = len(stem) + 1 + len(case_number(n, n)) + maxval(len_trim(output_extensions))
@@ -420,8 +424,8 @@ contains
 
     !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits).
     pure function case_name(stem, i, n) result(name)
-        character(len=*), intent(in) :: stem
-        integer, intent(in) :: i, n
+        character(len=*), intent(in) :: stem   !! the deck's file stem
+        integer, intent(in) :: i, n            !! case number; cases of the sweep
         character(len=:), allocatable :: name
         name = stem
         if (n > 1) name = stem//'_'//case_number(i, n)
@@ -429,7 +433,7 @@ contains
 
     !> i with leading zeros, as wide as n and at least three digits (001, 0042 of 1000).
     pure function case_number(i, n) result(text)
-        integer, intent(in) :: i, n
+        integer, intent(in) :: i, n   !! case number; cases of the sweep
         character(len=:), allocatable :: text
         integer :: width
         width = 3
@@ -441,7 +445,7 @@ contains
 
     !> The last component of a path.
     pure function base_name(path) result(name)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! a path
         character(len=:), allocatable :: name
         name = trim(path(index(path, '/', back=.true.) + 1:))
     end function base_name
@@ -449,7 +453,7 @@ contains
     !> The canonical absolute path of an existing file or folder; '' if it cannot be resolved
     !! (what a JSON summary records as "deck_file").
     function canonical_path(path) result(resolved)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! a path
         character(len=:), allocatable :: resolved
         character(kind=c_char) :: buffer(path_max)
         integer :: n

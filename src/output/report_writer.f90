@@ -39,19 +39,19 @@ contains
     !> output/CASE.dat: `#` header naming every column, then one row per station, all
     !! nondimensional (SPEC §6, §9).
     subroutine write_data_file(path, m, tab, err)
-        character(len=*), intent(in) :: path
-        type(model_t), intent(in) :: m
-        type(station_table_t), intent(in) :: tab
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: path             !! the file written
+        type(model_t), intent(in) :: m                   !! the model
+        type(station_table_t), intent(in) :: tab         !! the station table
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         call write_station_file(path, trim(m%title), nondim_columns(m), tab, ' ', err)
     end subroutine write_data_file
 
     !> output/CASE.csv (physical decks): a header line `key [unit]`, one row per station.
     subroutine write_physical_csv(path, m, tab, err)
-        character(len=*), intent(in) :: path
-        type(model_t), intent(in) :: m
-        type(station_table_t), intent(in) :: tab
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: path             !! the file written
+        type(model_t), intent(in) :: m                   !! the model
+        type(station_table_t), intent(in) :: tab         !! the station table
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         call write_station_file(path, trim(m%title), physical_columns(m), tab, ',', err)
     end subroutine write_physical_csv
 
@@ -120,14 +120,15 @@ contains
     !! and the checks. A failed case gets its status and message, and no results.
     subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err, &
                                   adaptation, warnings, deck_file)
+        !> the file; case name; the deck's path; the failure ('' if none)
         character(len=*), intent(in) :: path, name, deck_path, message
-        type(model_t), intent(in) :: m
-        integer, intent(in) :: status
+        type(model_t), intent(in) :: m                           !! the model
+        integer, intent(in) :: status                            !! the case's exit status
         type(entry_t), intent(in) :: e(:)          !! key results with their error estimates
-        type(summary_t), intent(in) :: s
-        type(solution_t), intent(in) :: sol
-        type(station_table_t), intent(in) :: tab
-        type(error_t), allocatable, intent(out) :: err
+        type(summary_t), intent(in) :: s                         !! the design summary
+        type(solution_t), intent(in) :: sol                      !! the solution
+        type(station_table_t), intent(in) :: tab                 !! the station table
+        type(error_t), allocatable, intent(out) :: err           !! allocated on failure
         type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
         character(len=*), intent(in), optional :: warnings(:)    !! as the report prints them
         character(len=*), intent(in), optional :: deck_file      !! the deck's canonical path
@@ -342,7 +343,7 @@ contains
 
     !> A JSON string literal (quotes, backslashes and control characters escaped).
     pure function json_string(text) result(js)
-        character(len=*), intent(in) :: text
+        character(len=*), intent(in) :: text   !! any text
         character(len=:), allocatable :: js
         integer :: i, k, n
         ! sized first and filled in place: appending character by character reallocated the
@@ -398,10 +399,10 @@ contains
     subroutine write_plot_script(path, name, m, label, s, err)
         character(len=*), intent(in) :: path     !! the script, e.g. output/default.gp
         character(len=*), intent(in) :: name     !! the case, e.g. default or sweep_002
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m           !! the model
         character(len=*), intent(in) :: label    !! 'case 002 of 006: RHO=0.001 F=0.5' or ''
-        type(summary_t), intent(in) :: s
-        type(error_t), allocatable, intent(out) :: err
+        type(summary_t), intent(in) :: s         !! the design summary
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         character(len=:), allocatable :: title
         integer :: u
         title = 'fricon: '//trim(shell_safe(m%title))
@@ -423,13 +424,13 @@ contains
     !! the first case (the cases of a sweep share columns, units and loads), the case files and
     !! their legend labels and mean pressures, and the sweep template.
     subroutine write_sweep_script(path, stem, m, names, labels, means, err)
-        character(len=*), intent(in) :: path, stem
+        character(len=*), intent(in) :: path, stem  !! the script written; the deck's file stem
         type(model_t), intent(in) :: m              !! the first solved case
         character(len=*), intent(in) :: names(:)    !! case names (files NAME.csv or NAME.dat)
         character(len=*), intent(in) :: labels(:)   !! legend phrases in single quotes, e.g.
                                                     !! 'RHO=0.001 F=0.5' (one gnuplot word)
         real(dp), intent(in) :: means(:)            !! mean contact pressure of each case
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(column_t), allocatable :: cols(:)
         integer :: u, i
         call open_temporary(path, u, err)
@@ -712,7 +713,7 @@ contains
     !> Text safe inside single quotes of a shell or gnuplot command: quotes, backquote, $ and
     !! backslash become blanks.
     pure function shell_safe(text) result(safe)
-        character(len=*), intent(in) :: text
+        character(len=*), intent(in) :: text   !! any text
         character(len=len(text)) :: safe
         integer :: i
         safe = text
@@ -724,16 +725,17 @@ contains
     !> The text report. `failure` non-empty: ANALYSIS FAILED banner, log only.
     subroutine write_report(path, deck_path, lines, label, m, d, sol, tab, e, s, failure, notes, &
                             err, adaptation)
+        !> the report; the deck; the case's label; the failure ('' if none)
         character(len=*), intent(in) :: path, deck_path, label, failure
         type(entry_t), intent(in) :: e(:)          !! key results with their error estimates
         character(len=*), intent(in) :: notes(:)   !! 'WARNING: ...' and 'NOTE: ...' lines
-        character(len=*), intent(in) :: lines(:)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(solution_t), intent(in) :: sol
-        type(station_table_t), intent(in) :: tab
-        type(summary_t), intent(in) :: s
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: lines(:)   !! the deck's lines (echoed)
+        type(model_t), intent(in) :: m             !! the model
+        type(discretization_t), intent(in) :: d    !! the discretisation
+        type(solution_t), intent(in) :: sol        !! the solution
+        type(station_table_t), intent(in) :: tab   !! the station table
+        type(summary_t), intent(in) :: s           !! the design summary
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
         character(len=400), allocatable :: adapt_text(:)
         integer :: u, i

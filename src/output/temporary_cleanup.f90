@@ -39,13 +39,13 @@ contains
 
     !> path (a NAME.tmp about to be created) is removed if a signal ends the program.
     subroutine register_temporary(path)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! a NAME.tmp about to be created
         call c_register_temporary(path, int(len(path), c_int))
     end subroutine register_temporary
 
     !> path is no longer a temporary file of the program (renamed or removed).
     subroutine release_temporary(path)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! the NAME.tmp renamed or removed
         call c_release_temporary(path, int(len(path), c_int))
     end subroutine release_temporary
 end module temporary_cleanup

@@ -1,4 +1,4 @@
-!> Adaptive meshing to a tolerance (ADAPT card, issue 8 item 3). The case is solved on the
+!> Adaptive meshing to a tolerance (ADAPT card; README, ADAPT). The case is solved on the
 !! MESH card's mesh, then in cycles:
 !!
 !!  1. the error of every key result (error_estimate's keys) is estimated from the same case
@@ -98,11 +98,13 @@ contains
     !> Solve the case by adaptive refinement of d (in: the MESH card's discretisation; out:
     !! the final one) and give its solution. err only if the first mesh cannot be solved.
     subroutine solve_adaptive(m, d, sol, info, err, cache)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m                               !! the model
+        !> in: the MESH card's discretisation; out: the final one
         type(discretization_t), intent(inout) :: d
-        type(solution_t), intent(out) :: sol
+        type(solution_t), intent(out) :: sol                         !! the solution
+        !> the cycles, final mesh and estimate (for the report)
         type(adaptation_t), intent(out) :: info
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err               !! allocated on failure
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(discretization_t) :: d_try
         type(solution_t) :: sol_try
@@ -342,7 +344,7 @@ contains
     !! larger of itself and the mean contact pressure, the largest shear force to itself, the
     !! contact extent t as it is (a fraction of l or a).
     pure function relative_errors(e) result(rel)
-        type(entry_t), intent(in) :: e(:)
+        type(entry_t), intent(in) :: e(:)   !! the key results with their estimates
         real(dp) :: rel(size(e))
         real(dp) :: scale
         integer :: i

@@ -66,10 +66,12 @@ contains
     !! edge_in_contact: an end of the base is in contact (summary_t), which limits a
     !! uniform mesh to first order (formal_order).
     subroutine estimate_errors(m, d, e, known, edge_in_contact, cache)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
-        type(entry_t), intent(inout) :: e(:)
+        type(entry_t), intent(inout) :: e(:)      !! the key results, updated
+        !> the coarse solutions of the Newton start
         type(coarse_solution_t), intent(in), optional :: known(:)
+        !> an end of the base is in contact (default false)
         logical, intent(in), optional :: edge_in_contact
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(coarse_solution_t), allocatable :: reuse(:)
@@ -172,11 +174,12 @@ contains
     !! often short of the asymptotic range and show a higher order than that.
     pure subroutine attach_estimates(m, e, e2, e4, ratio, extent_floor, kinks_on_nodes, &
                                      singular_edge)
-        type(model_t), intent(in) :: m
-        type(entry_t), intent(inout) :: e(:)
+        type(model_t), intent(in) :: m             !! the model
+        type(entry_t), intent(inout) :: e(:)       !! the key results, updated
+        !> the keys on about N_e/ratio and N_e/ratio^2 elements
         type(entry_t), intent(in) :: e2(:), e4(:)
         real(dp), intent(in) :: ratio              !! refinement ratio between the meshes
-        real(dp), intent(in) :: extent_floor
+        real(dp), intent(in) :: extent_floor       !! least estimate of the contact extent t
         logical, intent(in) :: kinks_on_nodes      !! see formal_order
         logical, intent(in), optional :: singular_edge  !! see formal_order
         logical :: edge
@@ -210,7 +213,7 @@ contains
     !!    any family: 1 for every key. The Mindlin structure's slope jumps there, and no
     !!    element polynomial has a kink inside the element: an S2 basis is made C0 at a node
     !!    with such a load (shape_functions), but between nodes C1 shape functions smear the
-    !!    jump over the elements at the load (work_precision beam before the C0 knots: order
+    !!    jump over the elements at the load (work_precision beam with C1 knots at the load: order
     !!    1.00 in W(0) on uniform meshes; adapted to 1e-4, three coarsened meshes showed 2.5
     !!    and an estimate 10 times low), and P1 or P2 ones cannot place it either
     !!    (input/tank_raft.dat, P1, ring at r = 7.5 m between the nodes of N_e = 40, 20, 10:
@@ -230,8 +233,8 @@ contains
     !!    (strip footing's sagging M: an estimate 7.5 times below its error). Graded meshes
     !!    (EDGES, LOADS) are not limited: input/plate_physical.dat (EDGES) converges at 2 to 4.
     pure real(dp) function formal_order(m, key, kinks_on_nodes, singular_edge) result(p)
-        type(model_t), intent(in) :: m
-        character(len=*), intent(in) :: key
+        type(model_t), intent(in) :: m         !! the model
+        character(len=*), intent(in) :: key    !! a key of summary_table
         logical, intent(in) :: kinks_on_nodes  !! every concentrated load on a node of the
                                                !! three meshes (discretization, loads_on_nodes)
         logical, intent(in), optional :: singular_edge  !! a uniform mesh with an end of the
@@ -248,7 +251,7 @@ contains
 
     !> Whether a key of summary_table gets an error estimate.
     pure logical function is_estimated(key)
-        character(len=*), intent(in) :: key
+        character(len=*), intent(in) :: key   !! a key of summary_table
         is_estimated = any(estimated_keys == key)
     end function is_estimated
 

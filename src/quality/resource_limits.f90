@@ -75,14 +75,14 @@ contains
 
     !> Peak memory of the case m [bytes].
     real(dp) function case_memory(m) result(bytes)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model
         integer :: n, nr
         call case_size(m, n, nr)
         bytes = memory_needed(n, nr, m%solver%method == METHOD_TWOLOOP)
     end function case_memory
 
     pure real(dp) function time_needed(n) result(seconds)
-        integer, intent(in) :: n
+        integer, intent(in) :: n   !! unknowns of the case
         seconds = seconds_at_4000*(real(n, dp)/4000.0_dp)**3
     end function time_needed
 
@@ -108,10 +108,10 @@ contains
     !> Refuse a case whose estimated memory, times the cases solved at once, exceeds the
     !! usable memory.
     subroutine check_memory(m, at_once, available, err)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m          !! the model
         integer, intent(in) :: at_once          !! cases of a sweep solved at the same time
         real(dp), intent(in) :: available       !! bytes
-        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         real(dp) :: need, limit
         character(len=400) :: text
         integer :: n, nr

@@ -84,9 +84,9 @@ contains
 
     !> All design values of a solved case.
     pure function summarise(m, sol, tab) result(s)
-        type(model_t), intent(in) :: m
-        type(solution_t), intent(in) :: sol
-        type(station_table_t), intent(in) :: tab
+        type(model_t), intent(in) :: m             !! the model
+        type(solution_t), intent(in) :: sol        !! the solution
+        type(station_table_t), intent(in) :: tab   !! the station table
         type(summary_t) :: s
         call settlement_values(m, tab, s)
         call contact_values(m, tab, s)

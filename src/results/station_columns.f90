@@ -51,7 +51,7 @@ contains
 
     !> Columns of the nondimensional data file and report table (SPEC §9 fixes the first nine).
     pure function nondim_columns(m) result(cols)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model
         type(column_t), allocatable :: cols(:)
         type(scales_t) :: k
         real(dp) :: s_disp, s_psi, s_sig
@@ -99,7 +99,7 @@ contains
 
     !> Columns of the physical CSV and report table, in display units.
     pure function physical_columns(m) result(cols)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model
         type(column_t), allocatable :: cols(:)
         type(units_t) :: un
         character(len=16) :: traction
@@ -200,8 +200,8 @@ contains
 
     !> Position of the column named `key` in `cols`; 0 if absent.
     pure integer function column_index(cols, key) result(i)
-        type(column_t), intent(in) :: cols(:)
-        character(len=*), intent(in) :: key
+        type(column_t), intent(in) :: cols(:)   !! the columns
+        character(len=*), intent(in) :: key     !! a column name
         do i = 1, size(cols)
             if (trim(cols(i)%key) == key) return
         end do

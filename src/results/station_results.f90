@@ -68,11 +68,11 @@ contains
     !> Evaluate everything at the stations (every node, or OUTPUT stations equally spaced,
     !! plus both sides of every concentrated load).
     subroutine tabulate(m, d, sol, tab, err, with_nodes)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(solution_t), intent(in) :: sol
-        type(station_table_t), intent(out) :: tab
-        type(error_t), allocatable, intent(out) :: err
+        type(model_t), intent(in) :: m                !! the model
+        type(discretization_t), intent(in) :: d       !! the discretisation
+        type(solution_t), intent(in) :: sol           !! the solution
+        type(station_table_t), intent(out) :: tab     !! the station table
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         logical, intent(in), optional :: with_nodes   !! OUTPUT stations and every node
         real(dp), allocatable :: x(:), u_f(:), w_f(:), rec(:, :), gap_pw(:)
         logical :: nodes_too
@@ -145,12 +145,12 @@ contains
     !! contact boundaries as finely as they did). The printed table itself when it already is
     !! that one.
     subroutine tabulate_design(m, d, sol, tab, design, err)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(solution_t), intent(in) :: sol
+        type(model_t), intent(in) :: m                 !! the model
+        type(discretization_t), intent(in) :: d        !! the discretisation
+        type(solution_t), intent(in) :: sol            !! the solution
         type(station_table_t), intent(in) :: tab       !! the printed table (tabulate)
-        type(station_table_t), intent(out) :: design
-        type(error_t), allocatable, intent(out) :: err
+        type(station_table_t), intent(out) :: design   !! the design table
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         if (m%output%stations < 2) then
             design = tab
             return
@@ -536,7 +536,7 @@ contains
 
     !> Largest t >= 0 of a station in contact (stick or slip); -1 if none.
     pure real(dp) function contact_extent(tab, length) result(t_max)
-        type(station_table_t), intent(in) :: tab
+        type(station_table_t), intent(in) :: tab   !! the station table
         real(dp), intent(in) :: length       !! l (beam) or a (plate)
         integer :: i
         t_max = -1.0_dp

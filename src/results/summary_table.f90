@@ -34,8 +34,8 @@ contains
 
     !> The table for a solved case.
     pure function summary_entries(m, s, extent) result(e)
-        type(model_t), intent(in) :: m
-        type(summary_t), intent(in) :: s
+        type(model_t), intent(in) :: m      !! the model
+        type(summary_t), intent(in) :: s    !! the design summary
         real(dp), intent(in) :: extent      !! contact extent t (SPEC §9)
         type(entry_t), allocatable :: e(:)
         type(scales_t) :: k
@@ -110,7 +110,7 @@ contains
 
     !> The keys of summary_entries for a model (the sweep CSV header).
     pure function entry_keys(m) result(keys)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model
         character(len=32), allocatable :: keys(:)
         type(summary_t) :: empty
         type(entry_t), allocatable :: e(:)
