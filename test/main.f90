@@ -23,6 +23,7 @@ program tester
     use test_nested_spaces, only: collect_nested_spaces
     use test_architecture, only: collect_architecture
     use test_layered_ground, only: collect_layered_ground
+    use test_layered_program, only: collect_layered_program
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -30,7 +31,7 @@ program tester
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
-        'simplifications adaptive nested_spaces architecture layered_ground '
+        'simplifications adaptive nested_spaces architecture layered_ground layered_program '
 
     want_suite = ''
     want_test = ''
@@ -72,6 +73,10 @@ program tester
     if (wanted('layered_ground')) then
         call collect_layered_ground(tests)
         call run_suite('layered_ground', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('layered_program')) then
+        call collect_layered_program(tests)
+        call run_suite('layered_program', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('nested_spaces')) then
         call collect_nested_spaces(tests)

@@ -36,7 +36,7 @@ module test_layered_ground
                                  layered_surface_displacement
     implicit none
     private
-    public :: collect_layered_ground
+    public :: collect_layered_ground, punch_nystrom
 
 contains
 

@@ -41,7 +41,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 77
+    integer, parameter :: n_decks = 94
 
 contains
 
@@ -62,6 +62,7 @@ contains
                  new_unittest('out_of_range', test_ranges), &
                  new_unittest('loads', test_loads), &
                  new_unittest('sweeps', test_sweeps), &
+                 new_unittest('layered_ground', test_ground), &
                  new_unittest('lone_cr_in_card', test_lone_cr), &
                  new_unittest('too_many_lines', test_too_many_lines), &
                  new_unittest('directory', test_directory), &
@@ -304,6 +305,57 @@ contains
         ! the seventh SWEEP card (line 18) takes 6^6 = 46656 cases to 279936: its name f1
         call add('sweeps', 'sweep_too_many_cases.dat', ':18:11-20:', &
                  'too many SWEEP combinations (more than 100000 cases)')
+        ! --- the layered ground (LAYER and BASE cards; the base beam deck with line 8 SOIL
+        ! replaced or followed by the ground cards, the base NONDIM deck with them at line 6)
+        ! line 9 LAYER after SOIL (line 8): the card name, columns 1-10
+        call add('ground', 'layer_with_soil.dat', ':9:1-10:', &
+                 'LAYER cannot be combined with SOIL (line 8)')
+        ! line 9 BASE after SOIL, no LAYER: the card name
+        call add('ground', 'base_without_layer.dat', ':9:1-10:', 'BASE without LAYER cards')
+        ! lines 8-9 LAYER, no BASE: the name of the last LAYER (line 9)
+        call add('ground', 'layer_without_base.dat', ':9:1-10:', &
+                 'the LAYER cards need a BASE card after them')
+        ! line 10 LAYER after BASE (line 9): its name
+        call add('ground', 'layer_after_base.dat', ':10:1-10:', 'LAYER after BASE (line 9)')
+        ! line 8 LAYER: h (f1, columns 11-20) = 0.0
+        call add('ground', 'layer_thickness_zero.dat', ':8:11-20:', &
+                 'LAYER h (thickness of the layer) must be > 0, got 0.0')
+        ! line 8 LAYER of a physical deck: nu (f3, columns 31-40) blank
+        call add('ground', 'layer_nu_missing.dat', ':8:31-40:', &
+                 "LAYER nu (Poisson's ratio of the layer) is required but the field is blank")
+        ! line 9 BASE ROUGH with E (f2, columns 21-30) = 1.0E6
+        call add('ground', 'base_rigid_with_modulus.dat', ':9:21-30:', &
+                 'a rigid base has no modulus: BASE E must be blank for ROUGH')
+        ! line 9 BASE HALFSPACE without E (f2, columns 21-30)
+        call add('ground', 'base_halfspace_no_modulus.dat', ':9:21-30:', &
+                 "BASE E (Young's modulus of the half-space below the layers) is required")
+        ! line 9 BASE SMOOTH under a beam: the kind (f1, columns 11-20)
+        call add('ground', 'beam_smooth_base.dat', ':9:11-20:', &
+                 'a beam on layers over a SMOOTH base is not modelled')
+        ! NONDIM, line 6 LAYER: E (f2, columns 21-30) = 2.0, not 1
+        call add('ground', 'nondim_layer_e_not_one.dat', ':6:21-30:', &
+                 "the first LAYER's E must be 1 or blank, got 2.0")
+        ! NONDIM (nu_f = 0.1), line 6 LAYER: nu (f3, columns 31-40) = 0.3
+        call add('ground', 'nondim_layer_nu_differs.dat', ':6:31-40:', &
+                 "the top layer's nu is the NONDIM card's nu_f = 0.1")
+        ! line 12 SWEEP H1 in a SOIL deck: the name (f1, columns 11-20)
+        call add('ground', 'sweep_h1_no_layers.dat', ':12:11-20:', &
+                 'SWEEP H1 needs a layered ground')
+        ! line 14 SWEEP E3 with two LAYER cards: the name
+        call add('ground', 'sweep_e3_two_layers.dat', ':14:11-20:', &
+                 'SWEEP E3 names layer 3; the deck has 2 LAYER card(s)')
+        ! line 14 SWEEP DEPTH: v2 (f3, columns 31-40) = 1.5 above the 2 m of layer 1
+        call add('ground', 'sweep_depth_shallow.dat', ':14:31-40:', &
+                 'SWEEP DEPTH value v2 must be greater than the layers above the last, 2 deep')
+        ! NONDIM, line 12 SWEEP E1: the name
+        call add('ground', 'sweep_e1_nondim.dat', ':12:11-20:', &
+                 'SWEEP E1 is not a parameter of a NONDIM deck')
+        ! line 13 SWEEP E_F in a layered deck: the name
+        call add('ground', 'sweep_e_f_layered.dat', ':13:11-20:', &
+                 "SWEEP E_F is the SOIL card's modulus; in a layered deck sweep E1")
+        ! line 13 SWEEP E_BASE over a ROUGH base: the name
+        call add('ground', 'sweep_e_base_rigid.dat', ':13:11-20:', &
+                 'SWEEP E_BASE needs BASE HALFSPACE')
         ! --- known reader bug (reported, not fixed here): gfortran ends a record at a lone CR,
         ! so the reader splits line 9 'FRICTION  0.5<CR>      1.0E-6' into two lines and
         ! numbers every later line one too high. README: CR LF line ends are accepted, other
@@ -438,6 +490,11 @@ contains
         end do
         close (u)
     end subroutine write_lines
+
+    subroutine test_ground(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check_group('ground', err)
+    end subroutine test_ground
 
     subroutine test_adapt(err)
         type(error_t), allocatable, intent(out) :: err

@@ -29,12 +29,20 @@
 !! load F. `complete_model` then picks l = a = 1, E = 1, F = 1, so the deck's numbers are used
 !! as they are; the reader checks that the vertical forces add up to 1.
 !!
+!! The ground is SOIL (a homogeneous half-space) or LAYER cards from the surface down and one
+!! BASE card after them (`LAYER h E nu E_bottom`, `BASE ROUGH|SMOOTH|HALFSPACE E nu`); the top
+!! layer's E and nu are the model's E_f and nu_f. In a NONDIM deck the layers' thicknesses
+!! are in units of l or a and their moduli relative to the top layer's (which rho sets): the
+!! first LAYER's E is 1 or blank and its nu blank or the NONDIM card's nu_f.
+!!
 !! SWEEP cases are numbered 1..case_count with the last SWEEP card varying fastest.
 module deck_reader
     use iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, EXIT_INPUT, EXIT_INTERNAL
     use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
+                     GROUND_LAYERED, GROUND_BASE_ROUGH, GROUND_BASE_SMOOTH, &
+                     GROUND_BASE_HALFSPACE, layer_count, ground_t, &
                      LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP
     use shape_functions, only: interp_code
     use discretization, only: fewest_elements
@@ -71,28 +79,36 @@ module deck_reader
     integer, parameter :: C_TITLE = 1, C_MODEL = 2, C_UNITS = 3, C_GEOMETRY = 4, &
                           C_STRUCTURE = 5, C_SOIL = 6, C_NONDIM = 7, C_FRICTION = 8, &
                           C_LOAD = 9, C_MESH = 10, C_SOLVER = 11, C_OUTPUT = 12, C_SWEEP = 13, &
-                          C_END = 14, C_ADAPT = 15
-    integer, parameter :: n_cards = 15
+                          C_END = 14, C_ADAPT = 15, C_LAYER = 16, C_BASE = 17
+    integer, parameter :: n_cards = 17
     character(len=9), parameter :: card_names(n_cards) = [character(len=9) :: 'TITLE', &
         'MODEL', 'UNITS', 'GEOMETRY', 'STRUCTURE', 'SOIL', 'NONDIM', 'FRICTION', 'LOAD', &
-        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT']
+        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT', 'LAYER', 'BASE']
     character(len=*), parameter :: card_list = 'TITLE, MODEL, UNITS, GEOMETRY, STRUCTURE, '// &
-        'SOIL, NONDIM, FRICTION, LOAD, MESH, ADAPT, SOLVER, OUTPUT, SWEEP or END'
+        'SOIL, LAYER, BASE, NONDIM, FRICTION, LOAD, MESH, ADAPT, SOLVER, OUTPUT, SWEEP or END'
 
     ! Sweepable parameters: name, range rule, deck kind (0 any, 1 NONDIM, 2 physical), model
     ! (0 any, MODEL_BEAM, MODEL_PLATE).
-    integer, parameter :: n_sweepable = 16
+    ! The layer names (H1, E1, ... DEPTH, E_BASE) need LAYER cards (sweep_layer): Hn, En
+    ! the thickness and the modulus at the top of layer n, DEPTH the depth to the base (the
+    ! last layer's thickness follows), E_BASE the modulus of a HALFSPACE base.
+    integer, parameter :: n_sweepable = 24
     character(len=7), parameter :: sweep_names(n_sweepable) = [character(len=7) :: 'RHO', &
         'ZETA', 'BETA', 'NU', 'NU_F', 'F', 'EPS_BAR', 'ETA_BAR', 'NE', 'K', 'E', 'E_F', 'H', &
-        'L', 'A', 'B']
+        'L', 'A', 'B', 'H1', 'H2', 'H3', 'E1', 'E2', 'E3', 'DEPTH', 'E_BASE']
     integer, parameter :: sweep_rules(n_sweepable) = [RULE_POSITIVE, RULE_POSITIVE, &
         RULE_POSITIVE, RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_NONNEGATIVE, RULE_OPEN_UNIT, &
         RULE_POSITIVE, RULE_ELEMENTS, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, &
-        RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE]
+        RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, &
+        RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, RULE_POSITIVE, &
+        RULE_POSITIVE, RULE_POSITIVE]
     integer, parameter :: sweep_decks(n_sweepable) = [1, 1, 1, 0, 0, 0, 0, 0, 0, 0, &
-                                                      2, 2, 2, 2, 2, 2]
+                                                      2, 2, 2, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0]
     integer, parameter :: sweep_models(n_sweepable) = [0, 0, MODEL_BEAM, 0, 0, 0, 0, 0, 0, &
-        0, 0, 0, 0, MODEL_BEAM, MODEL_PLATE, MODEL_BEAM]
+        0, 0, 0, 0, MODEL_BEAM, MODEL_PLATE, MODEL_BEAM, 0, 0, 0, 0, 0, 0, 0, 0]
+    !> Layer of a layer sweep name: n of Hn and En, -1 DEPTH, -2 E_BASE, 0 not a layer name.
+    integer, parameter :: sweep_layer(n_sweepable) = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
+        0, 0, 0, 0, 1, 2, 3, 1, 2, 3, -1, -2]
 
     integer, parameter :: max_cases = 100000        !! largest number of SWEEP combinations
     integer, parameter :: max_line_kept = 1024      !! longer lines are cut (they are errors)
@@ -137,6 +153,8 @@ module deck_reader
         integer, allocatable :: load_cards(:)    !! card index of each accepted load
         type(sweep_t), allocatable :: sweeps(:)
         integer, allocatable :: sweep_cards(:)   !! card index of each accepted sweep
+        integer, allocatable :: layer_cards(:)   !! card index of each LAYER card
+        real(dp) :: first_nu = -1.0_dp           !! NONDIM: the first LAYER's nu (-1 blank)
     end type state_t
 
 contains
@@ -237,12 +255,15 @@ contains
         do i = 1, size(lines)
             deck%lines(i) = lines(i)
         end do
-        allocate (st%cards(16), st%load_cards(0), st%sweeps(0), st%sweep_cards(0))
+        allocate (st%cards(16), st%load_cards(0), st%sweeps(0), st%sweep_cards(0), &
+                  st%layer_cards(0))
         allocate (st%m%loads(0))
         call scan_lines(st, lines)
         call read_model_card(st)
         call check_card_set(st)
         call read_cards(st)
+        call check_ground_cards(st)
+        call check_layer_sweeps(st)
         call check_adapt(st)
         call check_loads(st)
         call check_sweep_lengths(st)
@@ -288,11 +309,17 @@ contains
         pick = case_indices(deck, i)
         do s = 1, size(pick)
             associate (sw => deck%sweeps(s))
-                call apply_sweep(m, sw%name, sw%values(pick(s)))
+                if (trim(sw%name) /= 'DEPTH') call apply_sweep(m, sw%name, sw%values(pick(s)))
                 if (s > 1) label = label//' '
                 label = label//trim(sw%name)//'='//sweep_value_text(deck, sw, pick(s))
                 call check_swept_value(deck, m, sw, pick(s), diag)
             end associate
+        end do
+        ! the depth to the base last: the last layer's thickness makes up the rest
+        do s = 1, size(pick)
+            if (trim(deck%sweeps(s)%name) /= 'DEPTH') cycle
+            call apply_sweep(m, 'DEPTH', deck%sweeps(s)%values(pick(s)))
+            call check_layer_depth(deck, m, deck%sweeps(s), pick(s), diag)
         end do
         call complete_model(m)
         call check_element_count(deck, m, pick, diag)
@@ -553,10 +580,11 @@ contains
                 trim(name(p:))//''' in columns '//int_text(p)//'-10 belongs in the fields; '// &
                 field_hint, echo_text(card))
             if (st%unreadable_line(id) == 0) st%unreadable_line(id) = i
-        else if (st%first_line(id) > 0 .and. id /= C_LOAD .and. id /= C_SWEEP) then
+        else if (st%first_line(id) > 0 .and. id /= C_LOAD .and. id /= C_SWEEP .and. &
+                 id /= C_LAYER) then
             call add_diagnostic(st%diag, i, 1, len_trim(name), 'duplicate '// &
                 trim(card_names(id))//' card (first given at line '// &
-                int_text(st%first_line(id))//'); only LOAD and SWEEP may repeat', &
+                int_text(st%first_line(id))//'); only LOAD, SWEEP and LAYER may repeat', &
                 echo_text(card))
         else
             call append_card(st, card_t(id=id, line=i, text=card))
@@ -671,15 +699,16 @@ contains
             end do
         else if (all(st%first_line(physical(1:3)) == 0) .and. &
                  all(st%unreadable_line(physical(1:3)) == 0) .and. &
-                 st%unreadable_line(C_NONDIM) == 0) then
+                 st%unreadable_line(C_NONDIM) == 0 .and. missing(st, C_LAYER)) then
             ! (a NONDIM, GEOMETRY, ... line with an error of its own is there: not missing)
             call deck_error(st, 'missing problem data: give NONDIM (nondimensional groups) '// &
                             'or GEOMETRY, STRUCTURE and SOIL (physical data)')
         else if (st%unreadable_line(C_NONDIM) == 0) then
             do k = 1, 3
+                if (physical(k) == C_SOIL .and. .not. missing(st, C_LAYER)) cycle
                 if (missing(st, physical(k))) call deck_error(st, 'missing '// &
                     trim(card_names(physical(k)))//' card (a physical deck needs GEOMETRY, '// &
-                    'STRUCTURE and SOIL)')
+                    'STRUCTURE and SOIL, or LAYER cards and a BASE instead of SOIL)')
             end do
         end if
         if (missing(st, C_FRICTION)) call deck_error(st, 'missing FRICTION card '// &
@@ -722,6 +751,10 @@ contains
                 if (.not. st%m%nondim) call read_soil(st, st%cards(k))
             case (C_NONDIM)
                 call read_nondim(st, st%cards(k))
+            case (C_LAYER)
+                call read_layer(st, k)
+            case (C_BASE)
+                call read_base(st, st%cards(k))
             case (C_FRICTION)
                 call read_friction(st, st%cards(k))
             case (C_LOAD)
@@ -803,6 +836,193 @@ contains
                        .true., st%m%ground%nu_f)
         call check_unused(st, cd, 2)
     end subroutine read_soil
+
+    !> LAYER h E nu E_bottom, the next layer down (E_bottom blank: E constant in the layer).
+    !! The first LAYER's E and nu are the model's E_f and nu_f; in a NONDIM deck its E is 1 or
+    !! blank and its nu is checked against the NONDIM card's (check_ground_cards).
+    subroutine read_layer(st, k)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: k                 !! card index
+        real(dp) :: h, e_top, e_bottom, nu
+        logical :: first
+        integer :: s
+        first = size(st%layer_cards) == 0
+        st%layer_cards = [st%layer_cards, k]
+        h = 0.0_dp
+        e_top = 1.0_dp
+        e_bottom = 0.0_dp
+        nu = -1.0_dp
+        associate (cd => st%cards(k))
+            call take_real(st, cd, 1, 'LAYER h (thickness of the layer)', RULE_POSITIVE, &
+                           .true., h)
+            if (first .and. st%m%nondim) then
+                call take_real(st, cd, 2, 'LAYER E (modulus of the top layer)', &
+                               RULE_POSITIVE, .false., e_top, s)
+                if (s == FIELD_OK .and. e_top /= 1.0_dp) call field_error(st, cd, 2, 'in a '// &
+                    'NONDIM deck the moduli are relative to the top layer''s (which rho '// &
+                    'sets): the first LAYER''s E must be 1 or blank, got '//field_value(cd, 2))
+                call take_real(st, cd, 3, 'LAYER nu (Poisson''s ratio of the layer)', &
+                               RULE_NU_SOIL, .false., nu)
+                st%first_nu = nu
+            else
+                call take_real(st, cd, 2, 'LAYER E (Young''s modulus at the top of the '// &
+                               'layer)', RULE_POSITIVE, .true., e_top)
+                call take_real(st, cd, 3, 'LAYER nu (Poisson''s ratio of the layer)', &
+                               RULE_NU_SOIL, .true., nu)
+            end if
+            call take_real(st, cd, 4, 'LAYER E_bottom (Young''s modulus at the bottom of '// &
+                           'the layer)', RULE_POSITIVE, .false., e_bottom)
+            call check_unused(st, cd, 4)
+        end associate
+        call add_layer(st%m, h, e_top, e_bottom, nu, first)
+    end subroutine read_layer
+
+    !> Append a layer to the model's ground; the first sets E_f and nu_f (physical deck).
+    pure subroutine add_layer(m, h, e_top, e_bottom, nu, first)
+        type(model_t), intent(inout) :: m
+        real(dp), intent(in) :: h, e_top, e_bottom, nu
+        logical, intent(in) :: first
+        m%ground%kind = GROUND_LAYERED
+        m%ground%relative_moduli = m%nondim
+        if (.not. allocated(m%ground%thickness)) allocate (m%ground%thickness(0), &
+            m%ground%e_top(0), m%ground%e_bottom(0), m%ground%poisson(0))
+        m%ground%thickness = [m%ground%thickness, h]
+        m%ground%e_top = [m%ground%e_top, e_top]
+        m%ground%e_bottom = [m%ground%e_bottom, e_bottom]
+        m%ground%poisson = [m%ground%poisson, nu]
+        if (first .and. .not. m%nondim) then
+            m%ground%e_f = e_top
+            m%ground%nu_f = nu
+        end if
+    end subroutine add_layer
+
+    !> BASE kind E nu: ROUGH or SMOOTH (rigid; E and nu blank) or HALFSPACE E nu.
+    subroutine read_base(st, cd)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        character(len=field_width) :: word
+        integer :: s
+        call take_word(st, cd, 1, 'BASE kind', 'ROUGH SMOOTH HALFSPACE', .true., word, s)
+        select case (word)
+        case ('ROUGH')
+            st%m%ground%base = GROUND_BASE_ROUGH
+        case ('SMOOTH')
+            st%m%ground%base = GROUND_BASE_SMOOTH
+        case ('HALFSPACE')
+            st%m%ground%base = GROUND_BASE_HALFSPACE
+        end select
+        if (word == 'HALFSPACE' .or. s /= FIELD_OK) then
+            call take_real(st, cd, 2, 'BASE E (Young''s modulus of the half-space below '// &
+                           'the layers)', RULE_POSITIVE, word == 'HALFSPACE', st%m%ground%e_base)
+            call take_real(st, cd, 3, 'BASE nu (Poisson''s ratio of the half-space below '// &
+                           'the layers)', RULE_NU_SOIL, word == 'HALFSPACE', st%m%ground%nu_base)
+        else
+            call forbid_field(st, cd, 2, 'a rigid base has no modulus: BASE E must be blank '// &
+                              'for '//trim(word))
+            call forbid_field(st, cd, 3, 'a rigid base has no Poisson''s ratio: BASE nu '// &
+                              'must be blank for '//trim(word))
+        end if
+        if (word == 'SMOOTH' .and. st%kind_known .and. st%m%structure%kind == MODEL_BEAM) &
+            call field_error(st, cd, 1, 'a beam on layers over a SMOOTH base is not '// &
+                'modelled: a net horizontal load would slide the layers on the base without '// &
+                'bound (plane strain); use ROUGH or HALFSPACE E nu')
+        call check_unused(st, cd, 3)
+    end subroutine read_base
+
+    !> SOIL or LAYER cards, never both; the layers need one BASE, after them; in a NONDIM
+    !! deck the first LAYER's nu is blank or nu_f.
+    subroutine check_ground_cards(st)
+        type(state_t), intent(inout) :: st
+        integer :: k, n_layers, last
+        n_layers = size(st%layer_cards)
+        if (n_layers > 0 .and. st%first_line(C_SOIL) > 0 .and. .not. st%m%nondim) &
+            call card_error(st, st%cards(st%layer_cards(1)), 'LAYER cannot be combined '// &
+                'with SOIL (line '//int_text(st%first_line(C_SOIL))//'): a deck gives either '// &
+                'SOIL (a homogeneous half-space) or LAYER cards over a BASE')
+        k = first_card(st, C_BASE)
+        if (k > 0 .and. n_layers == 0 .and. missing(st, C_LAYER)) call card_error(st, &
+            st%cards(k), 'BASE without LAYER cards: BASE ends a profile of LAYER cards '// &
+            '(a homogeneous half-space is the SOIL card)')
+        if (n_layers == 0) return
+        last = st%layer_cards(n_layers)
+        if (k == 0 .and. missing(st, C_BASE)) call card_error(st, st%cards(last), &
+            'the LAYER cards need a BASE card after them (BASE ROUGH, BASE SMOOTH or '// &
+            'BASE HALFSPACE E nu: what lies below the last layer)')
+        if (k > 0) then
+            if (k < last) call card_error(st, st%cards(last), 'LAYER after BASE (line '// &
+                int_text(st%cards(k)%line)//'): the LAYER cards go from the surface down '// &
+                'and BASE ends the profile')
+        end if
+        if (st%m%nondim .and. st%first_nu >= 0.0_dp .and. &
+            st%first_nu /= st%m%ground%nu_f) call field_error(st, st%cards(st%layer_cards(1)), &
+            3, 'in a NONDIM deck the top layer''s nu is the NONDIM card''s nu_f = '// &
+            format_real(st%m%ground%nu_f)//': the first LAYER''s nu must be blank or equal '// &
+            'to it, got '//format_real(st%first_nu))
+    end subroutine check_ground_cards
+
+    !> SWEEP names of the layered ground: they need LAYER cards, a layer that exists, a
+    !! HALFSPACE base (E_BASE); E1 is not a NONDIM parameter and E_F not a layered one.
+    subroutine check_layer_sweeps(st)
+        type(state_t), intent(inout) :: st
+        character(len=:), allocatable :: name
+        integer :: s, p, n_layers, n
+        n_layers = size(st%layer_cards)
+        sweeps: do s = 1, size(st%sweeps)
+            name = trim(st%sweeps(s)%name)
+            p = sweep_index(name)
+            if (p == 0) cycle sweeps
+            n = sweep_layer(p)
+            associate (cd => st%cards(st%sweep_cards(s)))
+                if (name == 'E_F' .and. n_layers > 0) then
+                    call field_error(st, cd, 1, 'SWEEP E_F is the SOIL card''s modulus; in '// &
+                        'a layered deck sweep E1 (the top layer''s modulus)')
+                else if (n == 0) then
+                    cycle sweeps
+                else if (n_layers == 0) then
+                    call field_error(st, cd, 1, 'SWEEP '//name//' needs a layered ground '// &
+                        '(LAYER cards and a BASE); this deck''s ground is one half-space')
+                else if (n > n_layers) then
+                    call field_error(st, cd, 1, 'SWEEP '//name//' names layer '// &
+                        int_text(n)//'; the deck has '//int_text(n_layers)//' LAYER card(s)')
+                else if (name == 'E1' .and. st%m%nondim) then
+                    call field_error(st, cd, 1, 'SWEEP E1 is not a parameter of a NONDIM '// &
+                        'deck: its moduli are relative to the top layer''s, which rho sets '// &
+                        '(sweep RHO, or E2, E3 for the layers below)')
+                else if (n == -2 .and. st%m%ground%base /= GROUND_BASE_HALFSPACE) then
+                    call field_error(st, cd, 1, 'SWEEP E_BASE needs BASE HALFSPACE E nu '// &
+                        '(a rigid base has no modulus)')
+                else if (n == -1) then
+                    call check_depth_sweep(st, cd, st%sweeps(s))
+                end if
+            end associate
+        end do sweeps
+    end subroutine check_layer_sweeps
+
+    !> SWEEP DEPTH sets the last layer's thickness: not with a sweep of it, and below the
+    !! layers above it.
+    subroutine check_depth_sweep(st, cd, sw)
+        type(state_t), intent(inout) :: st
+        type(card_t), intent(in) :: cd
+        type(sweep_t), intent(in) :: sw
+        real(dp) :: above
+        integer :: n, s, v
+        n = size(st%layer_cards)
+        do s = 1, size(st%sweeps)
+            if (trim(st%sweeps(s)%name) == 'H'//int_text(n)) then
+                call field_error(st, cd, 1, 'SWEEP DEPTH sets the last layer''s thickness; '// &
+                    'it cannot be swept with H'//int_text(n)//' (line '// &
+                    int_text(st%sweeps(s)%line)//')')
+                return
+            end if
+        end do
+        above = sum(st%m%ground%thickness(1:n - 1))
+        do v = 1, size(sw%values)
+            if (sw%values(v) > above) cycle
+            call field_error(st, cd, v + 1, 'SWEEP DEPTH value v'//int_text(v)//' must '// &
+                'be greater than the layers above the last, '//format_real(above)// &
+                ' deep, got '//format_real(sw%values(v)))
+        end do
+    end subroutine check_depth_sweep
 
     !> NONDIM rho zeta nu nu_f beta (nu, nu_f default to the paper's 0.3, 0.1).
     subroutine read_nondim(st, cd)
@@ -1280,8 +1500,52 @@ contains
             m%structure%length = v
         case ('B')
             m%structure%b = v
+        case ('H1', 'H2', 'H3', 'E1', 'E2', 'E3', 'DEPTH', 'E_BASE')
+            call apply_layer_sweep(m%ground, name, sweep_layer(sweep_index(name)), v)
         end select
     end subroutine apply_sweep
+
+    !> Set a layered ground's swept parameter: Hn, En (n >= 1), DEPTH (n = -1), E_BASE (-2).
+    pure subroutine apply_layer_sweep(g, name, n, v)
+        type(ground_t), intent(inout) :: g
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: n                 !! sweep_layer of the name
+        real(dp), intent(in) :: v
+        integer :: last
+        last = layer_count(g)
+        if (n > last) return
+        if (n == -2) then
+            g%e_base = v
+        else if (n == -1) then
+            if (last > 0) g%thickness(last) = v - sum(g%thickness(1:last - 1))
+        else if (name(1:1) == 'H') then
+            g%thickness(n) = v
+        else
+            g%e_top(n) = v
+            if (n == 1) g%e_f = v
+        end if
+    end subroutine apply_layer_sweep
+
+    !> The case's depth to the base below the layers above the last (SWEEP DEPTH).
+    subroutine check_layer_depth(deck, m, sw, k, diag)
+        type(deck_t), intent(in) :: deck
+        type(model_t), intent(in) :: m
+        type(sweep_t), intent(in) :: sw
+        integer, intent(in) :: k                 !! value index
+        type(diagnostics_t), intent(inout) :: diag
+        character(len=:), allocatable :: echo
+        integer :: c1, n
+        n = layer_count(m%ground)
+        if (n < 1) return
+        if (m%ground%thickness(n) > 0.0_dp) return
+        c1 = field_first_column(k + 1)
+        echo = ''
+        if (sw%line >= 1 .and. sw%line <= size(deck%lines)) echo = echo_text(deck%lines(sw%line))
+        call add_diagnostic(diag, sw%line, c1, c1 + field_width - 1, 'SWEEP DEPTH value v'// &
+            int_text(k)//' must be greater than the layers above the last, '// &
+            format_real(sum(m%ground%thickness(1:n - 1)))//' deep, got '// &
+            format_real(sw%values(k)), echo)
+    end subroutine check_layer_depth
 
     !> Re-validate a swept value: its range and, for L/A, the load positions.
     subroutine check_swept_value(deck, m, sw, k, diag)

@@ -1,6 +1,7 @@
 !> The half-space flexibility T of recent cases, for the next cases of a sweep with the same
-!! interface discretisation and soil. T depends only on the traction bases (mesh, family,
-!! knots), the soil (G_f, nu_f) and, for the beam, the width b: a sweep over the structure
+!! interface discretisation and ground. T depends only on the traction bases (mesh, family,
+!! knots), the ground (G_f, nu_f; and for layered ground every layer's thickness, moduli and
+!! nu and the base) and, for the beam, the width b: a sweep over the structure
 !! (rho, zeta), the friction, the regularisation or the loads on one mesh assembles it once
 !! per mesh instead of once per case (and the error estimate's coarse meshes with it). The
 !! assembly is deterministic (the same T on any number of threads, bit for bit), so a case
@@ -17,7 +18,8 @@
 module flexibility_cache
     use kinds, only: dp
     use errors, only: error_t
-    use model, only: model_t, MODEL_BEAM, FIELD_SX, FIELD_SZ, soil_shear_modulus
+    use model, only: model_t, MODEL_BEAM, FIELD_SX, FIELD_SZ, soil_shear_modulus, &
+                     GROUND_LAYERED, layer_profile
     use discretization, only: discretization_t
     use shape_functions, only: basis_t
     use halfspace_operator, only: assemble_flexibility
@@ -33,6 +35,9 @@ module flexibility_cache
         integer :: kind = 0
         real(dp) :: g_f = 0.0_dp, nu_f = 0.0_dp, b = 0.0_dp
         type(basis_t) :: bx, bz
+        !> layered ground: (thickness, E top, E bottom, nu) of each layer, then base kind,
+        !! E_b and nu_b; empty for the homogeneous half-space
+        real(dp), allocatable :: layers(:)
     end type key_t
 
     type :: entry_t
@@ -107,7 +112,21 @@ contains
         if (m%structure%kind == MODEL_BEAM) key%b = m%structure%b
         key%bx = d%basis(FIELD_SX)
         key%bz = d%basis(FIELD_SZ)
+        key%layers = ground_key(m)
     end function key_of
+
+    !> The layered ground as numbers (key_t%layers); empty for the homogeneous half-space.
+    pure function ground_key(m) result(v)
+        type(model_t), intent(in) :: m
+        real(dp), allocatable :: v(:)
+        real(dp), allocatable :: thickness(:), e_top(:), e_bottom(:), poisson(:)
+        real(dp) :: e_base
+        allocate (v(0))
+        if (m%ground%kind /= GROUND_LAYERED) return
+        call layer_profile(m%ground, thickness, e_top, e_bottom, poisson, e_base)
+        v = [thickness, e_top, e_bottom, poisson, real(m%ground%base, dp), e_base, &
+             m%ground%nu_base]
+    end function ground_key
 
     !> Inside the critical section: t_mat from the entry with this key, if any.
     subroutine look_up(cache, key, t_mat, found)
@@ -150,7 +169,8 @@ contains
     pure logical function same_key(a, b)
         type(key_t), intent(in) :: a, b
         same_key = a%kind == b%kind .and. a%g_f == b%g_f .and. a%nu_f == b%nu_f .and. &
-                   a%b == b%b .and. same_basis(a%bx, b%bx) .and. same_basis(a%bz, b%bz)
+                   a%b == b%b .and. same_basis(a%bx, b%bx) .and. same_basis(a%bz, b%bz) .and. &
+                   same_reals(a%layers, b%layers)
     end function same_key
 
     !> Exactly the same functions: family, numbering and every node and knot.

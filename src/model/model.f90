@@ -10,7 +10,9 @@ module model
     use foundation_structure, only: structure_t, section_t, MODEL_BEAM, MODEL_PLATE, &
                                     flexural_rigidity, section_of, interface_ends, &
                                     base_area, traction_measure
-    use ground_model, only: ground_t, soil_shear_modulus
+    use ground_model, only: ground_t, soil_shear_modulus, GROUND_HOMOGENEOUS, GROUND_LAYERED, &
+                            GROUND_BASE_ROUGH, GROUND_BASE_SMOOTH, GROUND_BASE_HALFSPACE, &
+                            layer_count, layer_profile, ground_depth, base_name
     use interface_properties, only: interface_t
     use applied_loads, only: load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, &
                              total_vertical_load, has_concentrated_load, load_positions
@@ -22,7 +24,9 @@ module model
     ! the parts and their constants, for callers that hold the whole model
     public :: structure_t, section_t, MODEL_BEAM, MODEL_PLATE, flexural_rigidity, section_of
     public :: interface_ends, base_area, traction_measure
-    public :: ground_t, soil_shear_modulus
+    public :: ground_t, soil_shear_modulus, GROUND_HOMOGENEOUS, GROUND_LAYERED
+    public :: GROUND_BASE_ROUGH, GROUND_BASE_SMOOTH, GROUND_BASE_HALFSPACE
+    public :: layer_count, layer_profile, ground_depth, base_name
     public :: interface_t
     public :: load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, total_vertical_load
     public :: has_concentrated_load, load_positions

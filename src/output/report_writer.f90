@@ -26,6 +26,8 @@ module report_writer
     use summary_table, only: entry_t
     use adaptive_solve, only: adaptation_t
     use method_notes, only: simplification_text, error_method_text, adaptation_lines
+    use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
+                           ground_json
     implicit none
     private
 
@@ -52,19 +54,27 @@ contains
         type(model_t), intent(in) :: m                   !! the model
         type(station_table_t), intent(in) :: tab         !! the station table
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
-        call write_station_file(path, trim(m%title), physical_columns(m), tab, ',', err)
+        character(len=:), allocatable :: ground
+        ground = ''
+        if (layered(m)) ground = ground_csv_line(m)
+        call write_station_file(path, trim(m%title), physical_columns(m), tab, ',', err, ground)
     end subroutine write_physical_csv
 
-    !> A station file: whitespace with `#` header lines (sep ' '), or CSV with one header line.
-    subroutine write_station_file(path, title, cols, tab, sep, err)
+    !> A station file: whitespace with `#` header lines (sep ' '), or CSV with one header line
+    !! (after a `#` line stating a layered ground, when there is one).
+    subroutine write_station_file(path, title, cols, tab, sep, err, ground)
         character(len=*), intent(in) :: path, title
         type(column_t), intent(in) :: cols(:)
         type(station_table_t), intent(in) :: tab
         character(len=1), intent(in) :: sep
         type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in), optional :: ground   !! the ground's line ('' none)
         integer :: u, c
         call open_temporary(path, u, err)
         if (allocated(err)) return
+        if (present(ground)) then
+            if (len(ground) > 0) write (u, '(a)') ground
+        end if
         if (sep == ' ') then
             write (u, '(a)') '# fricon station data: '//title
             write (u, '(a)') '# all columns nondimensional (doc/SPEC.md section 6); a station at a concentrated '// &
@@ -156,6 +166,7 @@ contains
         write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', &
             m%structure%kind == MODEL_BEAM)))//','
         write (u, '(a)') '  "nondimensional": '//trim(merge('true ', 'false', m%nondim))//','
+        if (layered(m)) write (u, '(a)') ground_json(m)
         write (u, '(a,i0,a)') '  "status": ', status, ','
         write (u, '(a)') '  "message": '//json_string(message)//','
         if (adapted) then
@@ -796,7 +807,17 @@ contains
         character(len=*), parameter :: fmt = '(3x,a,t46,es14.6,2x,a)'
         integer :: field
         write (u, '(/,a)') ' 2. MODEL, NONDIMENSIONAL GROUPS AND PHYSICAL DATA'
-        if (m%structure%kind == MODEL_BEAM) then
+        if (m%structure%kind == MODEL_BEAM .and. layered(m)) then
+            write (u, '(3x,a)') 'model: BEAM (Timoshenko) on '//ground_model_words(m)// &
+                ', tractions uniform across the width, compatibility on the centre line'
+            write (u, fmt) 'rho = 32 EI (1-nu_f^2)/(pi E_f l^4)', relative_stiffness(m%structure, &
+                m%ground)
+            write (u, fmt) 'beta = b/l', m%structure%b/m%structure%length
+        else if (layered(m)) then
+            write (u, '(3x,a)') 'model: PLATE (axisymmetric Mindlin) on '//ground_model_words(m)
+            write (u, fmt) 'rho = 2 D (1-nu_f^2)/(E_f a^3)', relative_stiffness(m%structure, &
+                m%ground)
+        else if (m%structure%kind == MODEL_BEAM) then
             write (u, '(3x,a)') 'model: BEAM (Timoshenko) on a 3-D elastic half-space, '// &
                 'tractions uniform across the width, compatibility on the centre line'
             write (u, fmt) 'rho = 32 EI (1-nu_f^2)/(pi E_f l^4)', relative_stiffness(m%structure, &
@@ -828,6 +849,7 @@ contains
             trim(m%units%force)//'/'//trim(m%units%length)//'^2'
         write (u, fmt) 'G_f (soil)', soil_shear_modulus(m%ground), &
             trim(m%units%force)//'/'//trim(m%units%length)//'^2'
+        if (layered(m)) call write_layer_table(u, m)
         if (m%structure%kind == MODEL_BEAM) then
             write (u, fmt) 'EI (bending stiffness)', flexural_rigidity(m%structure), &
                 trim(m%units%force)//' '//trim(m%units%length)//'^2'

@@ -1,0 +1,265 @@
+!> The layered ground through the whole program (deck -> model -> solve_case -> key results):
+!!  * identical layers over a half-space of the same E and nu are the homogeneous half-space
+!!    (an exact identity of elasticity: the interfaces carry nothing), so every deck of
+!!    input/ with its SOIL card (NONDIM: its nu_f) replaced by three such layers and a
+!!    HALFSPACE base, as deck text, must give today's solution and key results; the layered
+!!    T equals the homogeneous one to about 1e-13 (suite layered_ground), so 1e-8 leaves the
+!!    Newton solver's tolerances room and nothing else;
+!!  * a rigid frictionless punch on a layer of thickness a on a rough base through the
+!!    program (a NONDIM plate of rho = 1e4 under a central unit load, f = 0) against the
+!!    independent Nystrom solution of the punch's Fredholm equation (test_layered_ground's
+!!    punch_nystrom: the compliance alone, no basis, no T);
+!!  * the same, NONDIM moduli and thicknesses: a deck with layers in units of a and moduli
+!!    relative to the top layer equals the physical deck that it stands for.
+module test_layered_program
+    use kinds, only: dp
+    use harness, only: unittest_t, new_unittest, error_t, check, check_close
+    use errors, only: new_error, EXIT_INTERNAL
+    use model, only: model_t, FIELD_W, layer_count
+    use deck_reader, only: deck_t, read_deck, parse_deck, case_count, case_model
+    use deck_fields, only: field_text, format_real
+    use solved_case, only: case_t, solve_case
+    use test_layered_ground, only: punch_nystrom
+    implicit none
+    private
+    public :: collect_layered_program
+
+    character(len=*), parameter :: decks(9) = [character(len=24) :: 'beam_nondim.dat', &
+        'beam_physical.dat', 'default.dat', 'plate_adapt.dat', 'plate_nondim.dat', &
+        'plate_physical.dat', 'strip_footing.dat', 'sweep.dat', 'tank_raft.dat']
+    real(dp), parameter :: tol = 1.0e-8_dp   !! identical layers vs SOIL
+
+contains
+
+    subroutine collect_layered_program(tests)
+        type(unittest_t), allocatable, intent(out) :: tests(:)
+        tests = [new_unittest('identical_layers_every_input_deck', test_identical_layers), &
+                 new_unittest('rigid_punch_on_layer_vs_nystrom', test_punch), &
+                 new_unittest('nondim_layers_equal_physical', test_nondim_physical)]
+    end subroutine collect_layered_program
+
+    !> Every case of every deck of input/ (the layered example decks excepted: they have no
+    !! SOIL card), SOIL and layered.
+    subroutine test_identical_layers(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: soil, layered
+        character(len=80), allocatable :: lines(:)
+        integer :: k, i
+        each_deck: do k = 1, size(decks)
+            call read_deck('input/'//trim(decks(k)), soil, err)
+            if (allocated(err)) return
+            lines = layered_lines(soil)
+            call parse_deck('layered_'//trim(decks(k)), lines, layered, err)
+            if (allocated(err)) return
+            call check(err, case_count(layered) == case_count(soil), trim(decks(k))//': cases')
+            if (allocated(err)) return
+            do i = 1, case_count(soil)
+                call compare_case(soil, layered, i, trim(decks(k)), err)
+                if (allocated(err)) return
+            end do
+        end do each_deck
+    end subroutine test_identical_layers
+
+    !> The deck's lines with SOIL (physical) replaced by, or after NONDIM (NONDIM) followed by,
+    !! three identical layers (0.2, 0.3 and 0.5 of l or a) over a HALFSPACE of the same E, nu.
+    function layered_lines(deck) result(lines)
+        type(deck_t), intent(in) :: deck
+        character(len=80), allocatable :: lines(:)
+        character(len=10) :: e, nu, h(3)
+        real(dp) :: length
+        integer :: i, j
+        allocate (lines(0))
+        length = 1.0_dp
+        if (.not. deck%base%nondim) length = deck%base%structure%length
+        h(1) = format_real(0.2_dp*length)
+        h(2) = format_real(0.3_dp*length)
+        h(3) = format_real(0.5_dp*length)
+        do i = 1, size(deck%lines)
+            if (deck%lines(i)(1:4) == 'SOIL') then
+                e = field_text(deck%lines(i), 1)
+                nu = field_text(deck%lines(i), 2)
+                lines = [character(len=80) :: lines, ('LAYER     '//h(j)//e//nu, j = 1, 3), &
+                         'BASE      HALFSPACE '//e//nu]
+            else if (deck%lines(i)(1:6) == 'NONDIM') then
+                nu = format_real(deck%base%ground%nu_f)
+                lines = [character(len=80) :: lines, deck%lines(i), 'LAYER     '//h(1), &
+                         ('LAYER     '//h(j)//'1.0       '//nu, j = 2, 3), &
+                         'BASE      HALFSPACE 1.0       '//nu]
+            else
+                lines = [character(len=80) :: lines, deck%lines(i)]
+            end if
+        end do
+    end function layered_lines
+
+    !> Case i of both decks: the solution [v; r] (each block relative to its largest entry)
+    !! and every key result (relative to the largest of the same unit) within tol.
+    subroutine compare_case(soil, layered, i, name, err)
+        type(deck_t), intent(in) :: soil, layered
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: name
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m_soil, m_lay
+        type(case_t) :: c_soil, c_lay
+        character(len=:), allocatable :: label
+        character(len=120) :: what
+        real(dp) :: mirrored
+        integer :: nv, k
+        call case_model(soil, i, m_soil, label, err)
+        if (allocated(err)) return
+        call case_model(layered, i, m_lay, label, err)
+        if (allocated(err)) return
+        call solve_case(m_soil, c_soil, err)
+        if (allocated(err)) return
+        call solve_case(m_lay, c_lay, err)
+        if (allocated(err)) return
+        write (what, '(a,", case ",i0)') name, i
+        call check(err, layer_count(m_lay%ground) == 3, trim(what)//': not three layers')
+        if (allocated(err)) return
+        nv = c_soil%d%nv
+        call check(err, size(c_lay%sol%z) == size(c_soil%sol%z), trim(what)//': sizes')
+        if (allocated(err)) return
+        call check_close(err, block_diff(c_lay%sol%z(:nv), c_soil%sol%z(:nv)), 0.0_dp, &
+                         0.0_dp, tol, trim(what)//': displacements')
+        if (allocated(err)) return
+        call check_close(err, block_diff(c_lay%sol%z(nv + 1:), c_soil%sol%z(nv + 1:)), 0.0_dp, &
+                         0.0_dp, tol, trim(what)//': tractions')
+        if (allocated(err)) return
+        do k = 1, size(c_soil%entries)
+            associate (a => c_lay%entries(k), b => c_soil%entries(k))
+                if (.not. b%defined .or. b%integer_valued) cycle
+                ! the place of a largest value: in a symmetric beam case (strip_footing) the
+                ! largest moment is reached at x and -x alike, and round-off picks one
+                mirrored = 1.0_dp
+                if (is_place(b%key) .and. abs(a%value + b%value) < abs(a%value - b%value)) &
+                    mirrored = -1.0_dp
+                call check_close(err, mirrored*a%value, b%value, 0.0_dp, &
+                                 tol*unit_scale(c_soil, k), trim(what)//': '//trim(b%key))
+                if (allocated(err)) return
+            end associate
+        end do
+    end subroutine compare_case
+
+    !> A key result that is the place of another (settlement_max_x, moment_sagging_x, ...).
+    pure logical function is_place(key)
+        character(len=*), intent(in) :: key
+        integer :: n
+        n = len_trim(key)
+        is_place = .false.
+        if (n > 2) is_place = key(n - 1:n) == '_x'
+    end function is_place
+
+    !> max |a - b| / max |b|.
+    pure real(dp) function block_diff(a, b)
+        real(dp), intent(in) :: a(:), b(:)
+        block_diff = maxval(abs(a - b))/max(maxval(abs(b)), tiny(1.0_dp))
+    end function block_diff
+
+    !> The largest |value| of the defined key results with the unit of entry k.
+    pure real(dp) function unit_scale(c, k)
+        type(case_t), intent(in) :: c
+        integer, intent(in) :: k
+        integer :: j
+        unit_scale = tiny(1.0_dp)
+        do j = 1, size(c%entries)
+            if (.not. c%entries(j)%defined) cycle
+            if (c%entries(j)%unit /= c%entries(k)%unit) cycle
+            unit_scale = max(unit_scale, abs(c%entries(j)%value))
+        end do
+    end function unit_scale
+
+    !> A rigid plate (rho = 1e4) under a central unit load, frictionless, on one layer of
+    !! thickness a over a rough base: w_hs/w_layer, both through the program on the same
+    !! EDGES mesh (the edge singularity's discretisation error cancels in the ratio, as in
+    !! test_layered_ground), is the load ratio P_layer/P_hs at equal settlement of the
+    !! Nystrom solution (nu_f = 0.3 and 0.5).
+    subroutine test_punch(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: nus(2) = ['0.3', '0.5']
+        real(dp) :: w_hs, w_layer, ratio
+        integer :: i
+        do i = 1, 2
+            call punch_settlement(nus(i), .false., w_hs, err)
+            if (allocated(err)) return
+            call punch_settlement(nus(i), .true., w_layer, err)
+            if (allocated(err)) return
+            call punch_nystrom(merge(0.3_dp, 0.5_dp, i == 1), ratio, err)
+            if (allocated(err)) return
+            call check_close(err, w_hs/w_layer, ratio, 2.0e-4_dp, 0.0_dp, &
+                             'w_hs/w_layer of the rigid plate, nu_f = '//nus(i))
+            if (allocated(err)) return
+        end do
+    end subroutine test_punch
+
+    !> Central settlement of the rigid plate of test_punch, on the half-space or the layer.
+    subroutine punch_settlement(nu, layer, w, err)
+        character(len=*), intent(in) :: nu
+        logical, intent(in) :: layer
+        real(dp), intent(out) :: w
+        type(error_t), allocatable, intent(out) :: err
+        character(len=80), allocatable :: lines(:)
+        type(deck_t) :: deck
+        type(model_t) :: m
+        type(case_t) :: c
+        character(len=:), allocatable :: label
+        lines = [character(len=80) :: 'MODEL     PLATE', &
+                 'NONDIM    1.0E4     0.1       0.3       '//nu, &
+                 'FRICTION  0.0', 'LOAD      POINT     1.0', 'MESH      48        EDGES', 'END']
+        if (layer) lines = [character(len=80) :: lines(1:2), 'LAYER     1.0', &
+                            'BASE      ROUGH', lines(3:)]
+        call parse_deck('punch', lines, deck, err)
+        if (allocated(err)) return
+        call case_model(deck, 1, m, label, err)
+        if (allocated(err)) return
+        call solve_case(m, c, err)
+        if (allocated(err)) return
+        w = c%sol%z(settlement_dof(c))
+    end subroutine punch_settlement
+
+    !> Index in z of the settlement w at the plate's centre (the first w coefficient).
+    integer function settlement_dof(c) result(k)
+        type(case_t), intent(in) :: c
+        k = c%d%offset(FIELD_W) + 1
+    end function settlement_dof
+
+    !> A NONDIM beam deck on two layers (thicknesses in l, moduli relative to the top
+    !! layer's) and the physical deck of the same numbers (l = 1, E = 1, F = 1 and the top
+    !! layer's E_f that rho gives, each modulus rounded to the 5 digits of a deck field)
+    !! have the same solution to the rounding (a modulus read as absolute, or thicknesses
+    !! not in units of l, would differ by a factor of 4 to 20).
+    subroutine test_nondim_physical(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: nondim, physical
+        type(model_t) :: m_nd, m_ph
+        type(case_t) :: c_nd, c_ph
+        character(len=:), allocatable :: label
+        character(len=10) :: e1, e2, e3, eb
+        call parse_deck('nondim', [character(len=80) :: 'MODEL     BEAM', &
+            'NONDIM    0.01      0.1       0.3       0.3       0.1', &
+            'LAYER     0.2', 'LAYER     0.5       4.0       0.4       8.0', &
+            'BASE      HALFSPACE 20.0      0.25', 'FRICTION  0.5', &
+            'LOAD      POINT     1.0       0.1       0.1', 'MESH      20', 'END'], nondim, err)
+        if (allocated(err)) return
+        call case_model(nondim, 1, m_nd, label, err)
+        if (allocated(err)) return
+        write (e1, '(es10.4)') m_nd%ground%e_f
+        write (e2, '(es10.4)') 4.0_dp*m_nd%ground%e_f
+        write (e3, '(es10.4)') 8.0_dp*m_nd%ground%e_f
+        write (eb, '(es10.4)') 20.0_dp*m_nd%ground%e_f
+        call parse_deck('physical', [character(len=80) :: 'MODEL     BEAM', &
+            'GEOMETRY  1.0       0.1       0.1', 'STRUCTURE 1.0       0.3', &
+            'LAYER     0.2       '//e1//'0.3', 'LAYER     0.5       '//e2//'0.4       '//e3, &
+            'BASE      HALFSPACE '//eb//'0.25', &
+            'FRICTION  0.5', 'LOAD      POINT     1.0       0.1       0.1', 'MESH      20', &
+            'END'], physical, err)
+        if (allocated(err)) return
+        call case_model(physical, 1, m_ph, label, err)
+        if (allocated(err)) return
+        call solve_case(m_nd, c_nd, err)
+        if (allocated(err)) return
+        call solve_case(m_ph, c_ph, err)
+        if (allocated(err)) return
+        ! the physical moduli are the NONDIM ones rounded to 5 digits (es10.4): 5e-5 of each
+        call check_close(err, block_diff(c_ph%sol%z, c_nd%sol%z), 0.0_dp, 0.0_dp, 2.0e-4_dp, &
+                         'NONDIM vs physical layered beam')
+    end subroutine test_nondim_physical
+end module test_layered_program
