@@ -12,7 +12,8 @@ module test_design_values
     use discretization, only: locate_element
     use mindlin_structure, only: section_of, displacement_at, traction_at, resultants
     use interface_law, only: STATE_LIFTOFF, STATE_SLIP
-    use station_columns, only: Q_X, Q_SZ, Q_SX, Q_N, Q_M, Q_MT, Q_Q, Q_GAP, Q_SZ_FE, Q_SX_FE
+    use station_columns, only: Q_X, Q_SZ, Q_SX, Q_N, Q_M, Q_MT, Q_Q, Q_GAP, Q_SZ_FE, Q_SX_FE, &
+                               column_t, physical_columns, nondim_columns, column_index
     use station_results, only: station_table_t, tabulate, tabulate_design
     use design_summary, only: summary_t, summarise
     use analysis_driver, only: run_analysis
@@ -51,7 +52,11 @@ contains
                               test_design_every_node), &
                  new_unittest('estimate_with_ring_between_nodes', test_ring_between_nodes), &
                  new_unittest('slip_intervals_hold_the_slipping_stations', test_slip_intervals), &
-                 new_unittest('singular_values_flagged_without_estimate', test_singular_values)]
+                 new_unittest('singular_values_flagged_without_estimate', test_singular_values), &
+                 new_unittest('pressure_mean_and_field_columns_beam', test_pressure_columns_beam), &
+                 new_unittest('pressure_mean_and_field_columns_plate', &
+                              test_pressure_columns_plate), &
+                 new_unittest('pressure_field_in_physical_csv', test_field_in_csv)]
     end subroutine collect_design_values
 
     !> int_x0^x of the finite-element sigma (component k: 1 sigma_x, 2 sigma_z) times w(s) =
@@ -776,6 +781,127 @@ contains
         call check(err, .not. s%pressure_max_singular .and. s%pressure_max%x == 0.0_dp, &
                    'default raft: the largest pressure is at the centre, regular')
     end subroutine test_singular_values
+
+    !> The two pressure columns of a beam under a point load (rho 0.0025, beta 0.0055, f 0.6,
+    !! N_e 40 uniform, P1 tractions; the ends lift off): see pressure_columns.
+    subroutine test_pressure_columns_beam(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        call solve_case(nondim_beam(0.0025_dp, 0.1_dp, 0.0055_dp, 0.6_dp, ne=40, &
+                                    loads=[load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]), &
+                        c, err)
+        if (allocated(err)) return
+        call pressure_columns(c, 'beam', err)
+    end subroutine test_pressure_columns_beam
+
+    !> The same for a plate whose rim lifts off, under a point load on the axis (rho 0.001,
+    !! zeta 0.1, f 0.5, N_e 40).
+    subroutine test_pressure_columns_plate(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        call solve_case(nondim_plate(0.001_dp, 0.1_dp, 0.1_dp, 0.5_dp, ne=40, &
+                                     loads=[load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]), &
+                        c, err)
+        if (allocated(err)) return
+        call pressure_columns(c, 'plate', err)
+    end subroutine test_pressure_columns_plate
+
+    !> Sigma_z^h is the pointwise finite-element pressure and Sigma_z the element mean, on a
+    !! table whose stations are the nodes (P1 tractions: the field is linear in each element):
+    !! - statics: the field integrated over the base carries the vertical load (beam: the
+    !!   trapezoid rule, exact for it; plate: 2 pi r sigma_z is quadratic in an element,
+    !!   Simpson's rule is exact);
+    !! - the mean at a node is the length-weighted mean of its elements' means, each the mean
+    !!   of its two nodal values (trapezoid): (h_l (p_l + p) + h_r (p + p_r)) / (2 (h_l + h_r)),
+    !!   at an end node the end element's (p_0 + p_1)/2;
+    !! - the design summary's largest pressure is the largest mean (not the field's peak,
+    !!   which under the load lies above it) and is flagged singular (a POINT load there).
+    subroutine pressure_columns(c, what, err)
+        type(case_t), intent(in) :: c
+        character(len=*), intent(in) :: what
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), allocatable :: x(:), p(:), mean(:)
+        real(dp) :: carried, expected, h_l, h_r, scale
+        type(summary_t) :: s
+        integer :: i, n
+        ! the nodes, each once (a station at the load is listed twice: the field is continuous)
+        allocate (x(0), p(0), mean(0))
+        do i = 1, c%stations%n
+            if (c%stations%side(i) > 0) cycle
+            x = [x, c%stations%val(Q_X, i)]
+            p = [p, c%stations%val(Q_SZ_FE, i)]
+            mean = [mean, c%stations%val(Q_SZ, i)]
+        end do
+        n = size(x)
+        call check(err, n == c%d%msh%ne + 1, what//': the stations are not the nodes')
+        if (allocated(err)) return
+        carried = 0.0_dp
+        do i = 1, n - 1
+            if (c%model%structure%kind == MODEL_BEAM) then
+                carried = carried + 0.5_dp*(x(i + 1) - x(i))*(p(i) + p(i + 1))
+            else
+                carried = carried + 2.0_dp*pi*(x(i + 1) - x(i))/6.0_dp*(x(i)*p(i) + &
+                          2.0_dp*(x(i) + x(i + 1))*(p(i) + p(i + 1))/2.0_dp + x(i + 1)*p(i + 1))
+            end if
+        end do
+        call check_close(err, carried, sum(c%model%loads%fz), 1.0e-6_dp, 0.0_dp, &
+                         what//': the field Sigma_z^h integrated over the base against V')
+        if (allocated(err)) return
+        scale = maxval(abs(p))
+        do i = 1, n
+            if (i == 1) then
+                expected = 0.5_dp*(p(1) + p(2))
+            else if (i == n) then
+                expected = 0.5_dp*(p(n - 1) + p(n))
+            else
+                h_l = x(i) - x(i - 1)
+                h_r = x(i + 1) - x(i)
+                expected = (h_l*(p(i - 1) + p(i)) + h_r*(p(i) + p(i + 1)))/(2.0_dp*(h_l + h_r))
+            end if
+            call check_close(err, mean(i), expected, 0.0_dp, 1.0e-12_dp*scale, &
+                             what//': the station Sigma_z is not the element mean')
+            if (allocated(err)) return
+        end do
+        s = summarise(c%model, c%sol, c%stations)
+        call check_close(err, s%pressure_max%value, maxval(mean)/merge(c%model%structure%b, &
+                         1.0_dp, c%model%structure%kind == MODEL_BEAM), 1.0e-14_dp, 0.0_dp, &
+                         what//': the summary''s largest pressure is not the largest mean')
+        if (allocated(err)) return
+        call check(err, s%pressure_max_singular .and. maxval(p) > maxval(mean), &
+                   what//': the peak under the load should be flagged singular, the field above '// &
+                   'the mean')
+    end subroutine pressure_columns
+
+    !> The physical CSV has both pressures by name: sigma_z (element mean) and sigma_z_fe (the
+    !! field), a beam also p_z and p_z_fe = sigma_z_fe / b; the field columns are the same
+    !! quantities as the .dat's Sigma_z^h and Sigma_x^h and are not columns of the report.
+    subroutine test_field_in_csv(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        type(column_t), allocatable :: phys(:), nd(:)
+        integer :: iz, ix, ipz, ipx
+        call solve_deck('input/beam_physical.dat', 20, c, err)
+        if (allocated(err)) return
+        phys = physical_columns(c%model)
+        nd = nondim_columns(c%model)
+        iz = column_index(phys, 'sigma_z_fe')
+        ix = column_index(phys, 'sigma_x_fe')
+        ipz = column_index(phys, 'p_z_fe')
+        ipx = column_index(phys, 'p_x_fe')
+        call check(err, min(iz, ix, ipz, ipx) > 0, 'a field column is missing from the CSV')
+        if (allocated(err)) return
+        call check(err, phys(iz)%quantity == Q_SZ_FE .and. phys(ix)%quantity == Q_SX_FE .and. &
+                   phys(ipz)%quantity == Q_SZ_FE .and. phys(ipx)%quantity == Q_SX_FE .and. &
+                   nd(column_index(nd, 'Sigma_z^h'))%quantity == Q_SZ_FE .and. &
+                   phys(column_index(phys, 'sigma_z'))%quantity == Q_SZ, &
+                   'the CSV''s field columns are not the .dat''s Sigma^h')
+        if (allocated(err)) return
+        call check_close(err, phys(ipz)%scale, 1.0_dp/c%model%structure%b, 1.0e-15_dp, 0.0_dp, &
+                         'p_z_fe = sigma_z_fe / b')
+        if (allocated(err)) return
+        call check(err, .not. any(phys([iz, ix, ipz, ipx])%in_report), &
+                   'the field columns are data-file columns, not report columns')
+    end subroutine test_field_in_csv
 
     !> The summary entries of a solved case with their error estimates, made as the program
     !! makes them (analysis_driver), and the index of key among them (0 if absent).

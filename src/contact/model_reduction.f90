@@ -10,7 +10,9 @@
 !! * frictionless (f = 0): Coulomb's law gives sigma_x = 0, so the sigma_x coefficients are
 !!   dropped. The regularised law (SPEC §4) leaves a stick compliance c eps_bar on the full
 !!   model, hence |sigma_x| = O(eps_bar) there: the two differ by the regularisation, which
-!!   vanishes linearly with eps_bar (test_simplifications measures it). A beam (not halved)
+!!   vanishes linearly with eps_bar (test_simplifications measures it; the dropped model is
+!!   the eps_bar -> 0 limit of the full one: up to 6.5e-4 of max |W| at eps_bar 1e-6 on a soft
+!!   thick beam, doc/CHOICES.md "Simplifications"). A beam (not halved)
 !!   keeps one shear unknown, a constant sigma_x = lambda: without it nothing fixes its
 !!   horizontal rigid translation; with it the equations hold the eps_bar -> 0 limit of the
 !!   full model, mean slip = 0 (lambda's row) and int sigma_x = 0 (so lambda = 0);

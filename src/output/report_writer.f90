@@ -209,6 +209,9 @@ contains
         call write_json_intervals(u, m, s%intervals, s%slip_intervals)
         write (u, '(a)') '  },'
         call write_json_singular(u, e)
+        write (u, '(a)') '  "pressures": "element means at the stations (the force the '// &
+            'elements carry); the pointwise finite-element field is in the station files '// &
+            '(Sigma_z^h; CSV sigma_z_fe)",'
         call write_json_errors(u, e, adapted)
         if (adapted) call write_json_adaptation(u, adaptation)
         call write_json_checks(u, sol, tab, s)
@@ -984,6 +987,8 @@ contains
         type(station_table_t), intent(in) :: tab
         write (u, '(/,a)') '   Station values: tractions are the mean over the elements meeting at '// &
             'the station (the forces the equations carry);'
+        write (u, '(a)') '   the pointwise finite-element field is in the data files '// &
+            '(Sigma_x^h, Sigma_z^h in the .dat; sigma_x_fe, sigma_z_fe in the CSV);'
         write (u, '(a)') '   states follow the solver''s interface law; gap is 0 where in contact '// &
             '(weak compatibility, see CHECKS);'
         write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the section; '// &
@@ -1031,6 +1036,7 @@ contains
                 'of at least 4 elements) and coarse solves that converge'
         end if
         call write_intervals(u, m, s%intervals, s%slip_intervals)
+        call write_pressure_note(u)
         if (s%edge_in_contact) then
             write (u, '(3x,a)') 'The pressure at an edge in contact is singular in theory: the '// &
                 'station maximum there depends on the mesh;'
@@ -1047,6 +1053,19 @@ contains
                 '(a PATCH over the column or plate it acts through).'
         end if
     end subroutine write_summary
+
+    !> Which pressure the summary reports, and why.
+    subroutine write_pressure_note(u)
+        integer, intent(in) :: u
+        write (u, '(3x,a)') 'Pressures are element means at the stations: the mean pressure over '// &
+            'the elements meeting there'
+        write (u, '(3x,a)') '(the forces the equations carry; they do not alternate from node to '// &
+            'node as the nodal field does near an edge or a'
+        write (u, '(3x,a)') 'lift-off boundary). Where the pressure is bounded both converge to '// &
+            'the same value; the pointwise finite-element'
+        write (u, '(3x,a)') 'field (data files) peaks higher under a concentrated load and at an '// &
+            'edge in contact, where neither converges.'
+    end subroutine write_pressure_note
 
     pure function order_text(p) result(text)
         real(dp), intent(in) :: p

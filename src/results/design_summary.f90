@@ -2,7 +2,9 @@
 !! read-only), in the deck's physical units. The report, the JSON summary and the sweep CSV
 !! print these values; README "Design summary" defines every key.
 !!
-!! Conventions: pressures are force/length^2 (a beam's line load divided by its width b);
+!! Conventions: pressures are force/length^2 (a beam's line load divided by its width b), read
+!! from the element means of the station table (the forces the equations carry, free of the
+!! nodal field's alternation), not from the pointwise finite-element field (station_results);
 !! M > 0 is hogging (top fibre in tension), so the largest sagging moment is the most negative
 !! M. Contact intervals come from the station states; a boundary between a station in contact
 !! and one lifted off is placed midway between them (the resolution of the stations). The

@@ -5,6 +5,12 @@
 !! so no module reads a station column by its number.
 !!
 !! Units and factors come from the case's one table of scales (case_scales).
+!!
+!! Two columns of each traction: the element mean at the station (Sigma_x, Sigma_z; sigma_x,
+!! sigma_z, p_x, p_z: the force the elements carry, what the report and the design summary
+!! use) and the pointwise finite-element field (Sigma_x^h, Sigma_z^h; sigma_x_fe, sigma_z_fe,
+!! p_x_fe, p_z_fe), which peaks higher under a concentrated load and at an edge in contact
+!! (station_results says how each is evaluated).
 module station_columns
     use kinds, only: dp
     use model, only: model_t, MODEL_BEAM
@@ -65,8 +71,10 @@ contains
                 col('U', 'U', '', 'mid-plane horizontal displacement', Q_U, s_disp), &
                 col('W', 'W', '', 'settlement', Q_W, s_disp), &
                 col('Psi', 'Psi', '', 'section rotation', Q_PSI, s_psi), &
-                col('Sigma_x', 'Sigma_x', '', 'shear traction on the soil', Q_SX, s_sig), &
-                col('Sigma_z', 'Sigma_z', '', 'contact pressure (compression > 0)', Q_SZ, s_sig), &
+                col('Sigma_x', 'Sigma_x', '', 'shear traction on the soil, element mean', Q_SX, &
+                    s_sig), &
+                col('Sigma_z', 'Sigma_z', '', 'contact pressure (compression > 0), element mean', &
+                    Q_SZ, s_sig), &
                 col('gap', 'gap', '', 'gap w_f - w_b (0 where in contact)', Q_GAP, s_disp), &
                 col('slip', 'slip', '', 'slip u_b - u_f', Q_SLIP, s_disp), &
                 col('state', 'state', '', '0 lift-off, 1 stick, 2 slip', Q_STATE, 1.0_dp)]
@@ -84,11 +92,11 @@ contains
                     col('M_t/F', 'M_t/F', '', 'hoop moment (> 0 hogging)', Q_MT, k%moment), &
                     col('Q_r*a/F', 'Q_r*a/F', '', 'radial shear force', Q_Q, k%shear)]
         end if
-        ! the finite-element traction itself (the paper's nodal values; see station_results)
-        cols = [cols, col('Sigma_x^h', 'Sigma_x^h', '', 'finite-element Sigma_x at the station', &
-                          Q_SX_FE, s_sig), &
-                col('Sigma_z^h', 'Sigma_z^h', '', 'finite-element Sigma_z at the station', &
-                    Q_SZ_FE, s_sig)]
+        ! the pointwise finite-element traction (the paper's nodal values; see station_results)
+        cols = [cols, col('Sigma_x^h', 'Sigma_x^h', '', 'shear traction, finite-element field '// &
+                          'at the station', Q_SX_FE, s_sig), &
+                col('Sigma_z^h', 'Sigma_z^h', '', 'contact pressure, finite-element field at '// &
+                    'the station', Q_SZ_FE, s_sig)]
         cols(size(cols) - 1:)%in_report = .false.
         call set_roles(cols, [character(len=12) :: 't', 'W', 'gap', 'Sigma_z', 'Sigma_x', &
                               'state', 'slip', merge('M/(Fl)', 'M_r/F ', beam), &
@@ -103,6 +111,7 @@ contains
         type(column_t), allocatable :: cols(:)
         type(units_t) :: un
         character(len=16) :: traction
+        integer :: n_before
         un = case_units(m)
         traction = merge(un%line_load, un%pressure, m%structure%kind == MODEL_BEAM)
         cols = [col(merge('x', 'r', m%structure%kind == MODEL_BEAM), merge('x', 'r', &
@@ -112,9 +121,10 @@ contains
                     un%disp_factor), &
                 col('w', 'w', un%disp, 'settlement', Q_W, un%disp_factor), &
                 col('psi', 'psi', 'rad', 'section rotation', Q_PSI, 1.0_dp), &
-                col('sigma_x', 'sigma_x', traction, 'shear traction on the soil', Q_SX, 1.0_dp), &
-                col('sigma_z', 'sigma_z', traction, 'contact pressure (compression > 0)', &
-                    Q_SZ, 1.0_dp)]
+                col('sigma_x', 'sigma_x', traction, 'shear traction on the soil, element mean', &
+                    Q_SX, 1.0_dp), &
+                col('sigma_z', 'sigma_z', traction, 'contact pressure (compression > 0), '// &
+                    'element mean', Q_SZ, 1.0_dp)]
         if (m%structure%kind == MODEL_BEAM) then
             cols = [cols, col('p_x', 'p_x', un%pressure, 'shear stress sigma_x/b', Q_SX, &
                               1.0_dp/m%structure%b), &
@@ -139,6 +149,19 @@ contains
                         'hoop moment (> 0 hogging)', Q_MT, 1.0_dp), &
                     col('Q_r', 'Q_r', un%line_load, 'radial shear force', Q_Q, 1.0_dp)]
         end if
+        ! the pointwise finite-element traction (see nondim_columns), last, out of the report
+        n_before = size(cols)
+        cols = [cols, col('sigma_x_fe', 'sigma_x_fe', traction, 'shear traction, '// &
+                          'finite-element field at the station', Q_SX_FE, 1.0_dp), &
+                col('sigma_z_fe', 'sigma_z_fe', traction, 'contact pressure, finite-element '// &
+                    'field at the station', Q_SZ_FE, 1.0_dp)]
+        if (m%structure%kind == MODEL_BEAM) then
+            cols = [cols, col('p_x_fe', 'p_x_fe', un%pressure, 'shear stress sigma_x_fe/b', &
+                              Q_SX_FE, 1.0_dp/m%structure%b), &
+                    col('p_z_fe', 'p_z_fe', un%pressure, 'contact pressure sigma_z_fe/b', &
+                        Q_SZ_FE, 1.0_dp/m%structure%b)]
+        end if
+        cols(n_before + 1:)%in_report = .false.
         if (m%structure%kind == MODEL_BEAM) then
             call set_roles(cols, [character(len=12) :: 'x', 'w', 'gap', 'p_z', 'p_x', 'state', &
                                   'slip', 'M', '', 'Q', 'N', ''], [character(len=12) :: '', ''])

@@ -19,8 +19,10 @@
 !!   left of the section (inside the circle r), loaded by the loads and the computed tractions.
 !!   They satisfy equilibrium at every station; Q_r(0) = 0 by symmetry. N_theta and M_theta
 !!   (plate) are the finite-element values, which close the plate's equilibrium.
-!! * Sigma_x^h, Sigma_z^h: the finite-element tractions at the station, unrecovered (the nodal
-!!   values the paper prints; the nondimensional data file keeps them for such comparisons).
+!! * Sigma_x^h, Sigma_z^h: the pointwise finite-element tractions at the station, unrecovered
+!!   (the nodal values the paper prints; the data files keep them: .dat Sigma_z^h, CSV
+!!   sigma_z_fe). Under a concentrated load and at an edge in contact they peak above the
+!!   element means, and neither converges there (the pressure is singular).
 !! Stations at the position of a concentrated load (beam POINT or MOMENT, plate RING) appear
 !! twice: the left (inner) and the right (outer) limit, where Q, M or N jump.
 module station_results

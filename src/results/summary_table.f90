@@ -62,7 +62,7 @@ contains
                  merge(s%contact_length*k%length, s%contact_area*k%length**2, beam)), &
              ent('pressure_mean', 'mean contact pressure V / contact area', k%u_pressure, &
                  s%mean_pressure*k%pressure), &
-             ent('pressure_max', 'max station pressure', k%u_pressure, &
+             ent('pressure_max', 'max pressure (element mean at a station)', k%u_pressure, &
                  s%pressure_max%value*k%pressure), &
              ent('pressure_max_x', '  at', k%u_length, s%pressure_max%x*k%length), &
              ent('edge_distance', 'distance d from the edge (= h)', k%u_length, &
