@@ -1,7 +1,8 @@
-!> Folders without a shell: create one with its parents (mkdir -p), and list the names in one
-!! that start with a given prefix. POSIX opendir/closedir through bind(c) interfaces; mkdir
-!! and readdir through the small C shim file_system_shim.c (their C types, mode_t and struct
-!! dirent, differ between systems).
+!> Files and folders without a shell: create a folder with its parents (mkdir -p), list the
+!! names in one that have a given prefix and suffix, rename and delete a file. POSIX
+!! opendir/closedir, rename and remove through bind(c) interfaces; mkdir and readdir through
+!! the small C shim file_system_shim.c (their C types, mode_t and struct dirent, differ
+!! between systems).
 module file_system
     use iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
     implicit none
@@ -31,6 +32,18 @@ module file_system
             integer(c_int), value :: capacity
             integer(c_int) :: length
         end function c_next_entry
+        ! int rename(const char *oldpath, const char *newpath);
+        function c_rename(oldpath, newpath) bind(c, name='rename') result(code)
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: oldpath(*), newpath(*)
+            integer(c_int) :: code
+        end function c_rename
+        ! int remove(const char *pathname);
+        function c_remove(path) bind(c, name='remove') result(code)
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int) :: code
+        end function c_remove
         ! int closedir(DIR *dirp);
         function c_closedir(folder) bind(c, name='closedir') result(code)
             import :: c_ptr, c_int
@@ -39,7 +52,7 @@ module file_system
         end function c_closedir
     end interface
 
-    public :: make_folder, folder_entries
+    public :: make_folder, folder_entries, move_file, delete_file
 
 contains
 
@@ -95,6 +108,21 @@ contains
         allocate (character(len=width) :: names(n))
         names = found(1:n)
     end subroutine folder_entries
+
+    !> Rename `from` to `to` (rename(2): atomic, replaces a file at `to`, never moves into a
+    !! folder of that name); moved says whether it was done.
+    subroutine move_file(from, to, moved)
+        character(len=*), intent(in) :: from, to
+        logical, intent(out) :: moved
+        moved = c_rename(from//c_null_char, to//c_null_char) == 0
+    end subroutine move_file
+
+    !> Delete the file at path, if there is one.
+    subroutine delete_file(path)
+        character(len=*), intent(in) :: path
+        integer(c_int) :: code
+        code = c_remove(path//c_null_char)
+    end subroutine delete_file
 
     !> The first len(prefix) characters of buffer are prefix.
     pure logical function starts_with(buffer, prefix)
