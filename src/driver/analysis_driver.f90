@@ -129,11 +129,11 @@ contains
             call run_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
                             opt%figures, opt%estimates, big_case_unit, results(i), cache, &
                             renderers(thread))
-            !$omp critical (fricon_output)
+            !$omp critical (fricon_progress)
             done = done + 1
             if (opt%progress) call report_progress(err_unit, done, count(selected), &
                                                    results(i)%name, clock_start)
-            !$omp end critical (fricon_output)
+            !$omp end critical (fricon_progress)
         end do cases_loop
         !$omp end parallel do
         do thread = 1, threads

@@ -53,7 +53,7 @@ contains
         type(case_result_t), intent(inout) :: result !! status and message on return
         type(renderer_t), intent(inout), optional :: renderer  !! the thread's gnuplot
         character(len=:), allocatable :: note
-        logical :: written
+        logical :: written, drawn_next
         !$omp critical (fricon_output)
         call remove_temporaries(base)
         if (result%status /= EXIT_OK) then
@@ -62,10 +62,12 @@ contains
         else
             call write_case_data(deck, c, base, figures, result, written)
         end if
+        ! without a figure the report follows at once (one pass through the section)
+        drawn_next = written .and. figures
+        if (written .and. .not. figures) call write_case_report(deck, c, base, '', result)
         !$omp end critical (fricon_output)
-        if (.not. written) return
-        note = ''
-        if (figures) call render_png(base, note, renderer)
+        if (.not. drawn_next) return
+        call render_png(base, note, renderer)
         result%message = note
         !$omp critical (fricon_output)
         call write_case_report(deck, c, base, note, result)
