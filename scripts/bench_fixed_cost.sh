@@ -13,7 +13,8 @@
 # BIN: a fricon executable (default: the release build of this checkout); AFTER_BIN: a second
 # one (e.g. release builds of two commits copied out of build/). REPS (default 20) is the
 # number of runs of each small measurement; the sweeps run 3 times without figures and once
-# with (about 90 s a run before they used both cores). Writes output/bench/fixed_cost.md.
+# with (about 90 s a run before they used both cores; SWEEPS=no leaves the sweeps out, for a
+# quick look). Writes output/bench/fixed_cost.md.
 set -euo pipefail
 reps=20
 bins=()
@@ -79,8 +80,8 @@ for t in "${tags[@]}"; do
 done
 
 # --- the timer ------------------------------------------------------------------------------
-# measure FRESH EXPECTED_STATUS REPS COMMAND...: prints the median wall time [ms] of each
-# build (one per line). In COMMAND, @BIN@ stands for the build and @OUT@ for its folder;
+# measure FRESH EXPECTED_STATUS REPS COMMAND...: prints, for each build (one line), the median
+# and the least wall time [ms] and the mean processor time (user + system) [ms]. In COMMAND, @BIN@ stands for the build and @OUT@ for its folder;
 # the runs alternate between the builds; FRESH=1 empties the folder before each run (not
 # timed). A run that exits with another status than EXPECTED_STATUS stops the benchmark.
 measure() {
@@ -90,13 +91,14 @@ measure() {
         my ($fresh, $expected, $reps, $nb, @rest) = @ARGV;
         my @bins = splice(@rest, 0, $nb);
         my @outs = splice(@rest, 0, $nb);
-        my @t;
+        my (@t, @u);
         for my $r (1 .. $reps) {
-            for my $b (0 .. $nb - 1) {
-                my @cmd = map { my $w = $_; $w =~ s/\@BIN\@/$bins[$b]/g;
-                                $w =~ s/\@OUT\@/$outs[$b]/g; $w } @rest;
-                if ($fresh) { remove_tree($outs[$b]); mkdir $outs[$b]; }
+            for my $k (0 .. $nb - 1) {
+                my @cmd = map { my $w = $_; $w =~ s/\@BIN\@/$bins[$k]/g;
+                                $w =~ s/\@OUT\@/$outs[$k]/g; $w } @rest;
+                if ($fresh) { remove_tree($outs[$k]); mkdir $outs[$k]; }
                 my $t0 = time;
+                my @c0 = times;
                 my $pid = fork;
                 if ($pid == 0) {
                     open STDOUT, ">", "/dev/null";
@@ -105,16 +107,19 @@ measure() {
                 }
                 waitpid($pid, 0);
                 my $dt = (time - $t0) * 1000;
+                my @c1 = times;
                 my $status = $? >> 8;
                 die "bench_fixed_cost: exit status $status (expected $expected): @cmd\n"
                     if $status != $expected;
-                push @{$t[$b]}, $dt;
+                push @{$t[$k]}, $dt;
+                $u[$k] += ($c1[2] + $c1[3] - $c0[2] - $c0[3]) * 1000 / $reps;
             }
         }
-        for my $b (0 .. $nb - 1) {
-            my @s = sort { $a <=> $b } @{$t[$b]};
-            my $m = @s % 2 ? $s[$#s / 2] : ($s[@s / 2 - 1] + $s[@s / 2]) / 2;
-            printf "%.6f\n", $m;
+        # (times() counts in clock ticks: the processor time is the mean over the runs)
+        for my $k (0 .. $nb - 1) {
+            my @s = sort { $a <=> $b } @{$t[$k]};
+            my $median = @s % 2 ? $s[$#s / 2] : ($s[@s / 2 - 1] + $s[@s / 2]) / 2;
+            printf "%.6f %.6f %.6f\n", $median, $s[0], $u[$k];
         }' "$fresh" "$expected" "$n" "$nb" "${bins[@]}" \
         "${tags[@]/#/$work/out_}" "$@"
 }
@@ -125,7 +130,7 @@ row() {      # row LABEL TARGET MEASURE-ARGUMENTS...
     local ms
     ms=$(measure "$@" | tr '\n' '|')
     rows+=("$label|$target|$ms")
-    echo "  $label: ${ms//|/ ms  }" >&2
+    echo "  $label: ${ms//|/  |  } (median, least, processor ms)" >&2
 }
 
 echo "bench_fixed_cost: ${bins[*]}, $reps runs each" >&2
@@ -146,13 +151,16 @@ row 'N_e = 10 with its figure' '' 0 0 "$reps" @BIN@ -q --no-estimates -o @OUT@ \
     "$work/plate10.dat"
 sweep_rows=()
 summaries_differ=()
-for figures in no yes; do
+sweep_kinds=(no yes)
+[ "${SWEEPS:-yes}" = no ] && sweep_kinds=()
+for figures in "${sweep_kinds[@]}"; do
     for jobs in 1 2; do
         flags=(-q -j "$jobs" -o @OUT@)
         n=3
         if [ "$figures" = no ]; then flags+=(--no-figures); else n=1; fi
+        load=$(cut -d' ' -f1 /proc/loadavg)
         ms=$(measure 1 0 "$n" @BIN@ "${flags[@]}" bench/sweep_1000.dat | tr '\n' '|')
-        sweep_rows+=("$figures|$jobs|$ms")
+        sweep_rows+=("$figures|$jobs|$load|$ms")
         echo "  sweep, figures $figures, -j $jobs: ${ms//|/ ms  }" >&2
         # the summaries of the builds (the last run of each) must agree; where they do not,
         # the table says so and the differing rows are kept beside it
@@ -186,38 +194,51 @@ done
     echo "The plate is input/plate_nondim.dat (point load) with MESH N_e; each run writes into a"
     echo "folder that holds 500 files of another deck; the input error is its Poisson ratio 0.62."
     echo
-    header="| | target |"
+    echo "Each cell: the median wall time, in brackets the least of the runs and the mean"
+    echo "processor time (user + system, all threads and child processes) [ms]."
+    echo
+    header="| | target [ms] |"
     rule="|---|---|"
-    for t in "${tags[@]}"; do header="$header $t [ms] |"; rule="$rule---:|"; done
+    for t in "${tags[@]}"; do header="$header $t: median (least; processor) [ms] |"; rule="$rule---:|"; done
     echo "$header"
     echo "$rule"
     for r in "${rows[@]}"; do
         IFS='|' read -r -a f <<<"$r"
         line="| ${f[0]} | ${f[1]} |"
-        for ((k = 0; k < nb; k++)); do line="$line $(printf '%.1f' "${f[$((k + 2))]}") |"; done
+        for ((k = 0; k < nb; k++)); do
+            read -r med least cpu <<<"${f[$((k + 2))]}"
+            line="$line $(printf '%.1f (%.1f; %.1f)' "$med" "$least" "$cpu") |"
+        done
         echo "$line"
     done
     echo
+    [ ${#sweep_rows[@]} -eq 4 ] || exit 0
     echo "The sweep bench/sweep_1000.dat (1000 NONDIM plates, N_e = 10, with error estimates):"
     echo
-    header="| figures | -j |"
-    rule="|---|---|"
-    for t in "${tags[@]}"; do header="$header $t [s] | $t [cases/s] |"; rule="$rule---:|---:|"; done
+    echo "(wall time: the median of the runs; processor time: user + system of all threads and"
+    echo "gnuplots, mean of the runs; load: the 1-minute load average when the measurement began)"
+    echo
+    header="| figures | -j | load |"
+    rule="|---|---|---:|"
+    for t in "${tags[@]}"; do
+        header="$header $t wall [s] | $t [cases/s] | $t processor [s] |"
+        rule="$rule---:|---:|---:|"
+    done
     echo "$header"
     echo "$rule"
     for r in "${sweep_rows[@]}"; do
         IFS='|' read -r -a f <<<"$r"
-        line="| ${f[0]} | ${f[1]} |"
+        line="| ${f[0]} | ${f[1]} | ${f[2]} |"
         for ((k = 0; k < nb; k++)); do
-            line="$line $(awk -v ms="${f[$((k + 2))]}" 'BEGIN { printf "%.2f | %.0f", ms / 1000, 1e6 / ms }') |"
+            read -r med least cpu <<<"${f[$((k + 3))]}"
+            line="$line $(awk -v ms="$med" -v c="$cpu" 'BEGIN { printf "%.2f | %.0f | %.2f", ms / 1000, 1e6 / ms, c / 1000 }') |"
         done
         echo "$line"
     done
     echo
     for ((k = 0; k < nb; k++)); do
-        awk -v t="${tags[$k]}" -v a="$(echo "${sweep_rows[2]}" | cut -d'|' -f$((k + 3)))" \
-            -v b="$(echo "${sweep_rows[3]}" | cut -d'|' -f$((k + 3)))" \
-            -v c="$(echo "${sweep_rows[1]}" | cut -d'|' -f$((k + 3)))" \
+        wall() { echo "${sweep_rows[$1]}" | cut -d'|' -f$((k + 4)) | cut -d' ' -f1; }
+        awk -v t="${tags[$k]}" -v a="$(wall 2)" -v b="$(wall 3)" -v c="$(wall 1)" \
             'BEGIN { printf "%s: with figures, 2 threads %.2f times as fast as 1 (target: at least 1.8); without figures on 2 threads %.0f cases/s (target: at least 1000).\n", t, a / b, 1e6 / c }'
         echo
     done
