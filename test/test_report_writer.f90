@@ -8,7 +8,8 @@ module test_report_writer
     use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
     use deck_reader, only: deck_t, parse_deck, case_model
     use model, only: model_t
-    use output_paths, only: writes_file, check_decks_apart
+    use output_paths, only: writes_file, check_decks_apart, canonical_path
+    use file_system, only: make_folder, folder_entries
     use atomic_files, only: open_temporary, commit_file
     use analysis_driver, only: run_analysis, run_options_t
     use figure_templates, only: panel_template, sweep_template
@@ -35,6 +36,8 @@ contains
                  new_unittest('sweep_outputs_never_overwrite_a_deck', test_decks_apart), &
                  new_unittest('failed_write_leaves_no_file', test_failed_write), &
                  new_unittest('stale_outputs_of_the_deck_removed', test_stale_outputs), &
+                 new_unittest('stale_outputs_found_in_one_listing', test_stale_listing), &
+                 new_unittest('folders_made_and_listed_without_a_shell', test_file_system), &
                  new_unittest('loads_mesh_too_coarse_is_a_deck_error', test_loads_mesh), &
                  new_unittest('bad_card_line_not_also_reported_missing', test_no_follow_on), &
                  new_unittest('incomplete_file_not_committed', test_incomplete_file), &
@@ -215,6 +218,87 @@ contains
                    exists(dir//'/st.json') .and. exists(dir//'/st_004.json'), &
                    'input error: the earlier st.* left, or another deck''s file removed')
     end subroutine test_stale_outputs
+
+    !> Folders without a shell (file_system): make_folder makes a folder and its parents,
+    !! accepts one that exists, and fails where a file has the name; folder_entries lists the
+    !! names with a prefix and a suffix (exactly those of the files made here), and says when
+    !! there is no folder to list.
+    subroutine test_file_system(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: made_names(5) = [character(len=10) :: 'x_001.json', &
+            'x_002.json', 'x_001.txt', 'y_001.json', 'x_002.jsn']
+        character(len=:), allocatable :: names(:)
+        logical :: made, again, on_file, listed
+        integer :: u, k
+        call clean_dir()
+        call make_folder(dir//'/a/b/c', made)
+        call make_folder(dir//'/a/b/c', again)
+        open (newunit=u, file=dir//'/f', status='replace', action='write')
+        close (u)
+        call make_folder(dir//'/f', on_file)
+        call check(err, made .and. again .and. .not. on_file .and. exists(dir//'/a/b/c/.'), &
+                   'make_folder: a new nested folder, an existing one, a file in the way')
+        if (allocated(err)) return
+        do k = 1, size(made_names)
+            open (newunit=u, file=dir//'/a/'//trim(made_names(k)), status='replace', &
+                  action='write')
+            close (u)
+        end do
+        call folder_entries(dir//'/a', 'x_', '.json', names, listed)
+        call check(err, listed .and. size(names) == 2, 'folder_entries: not the two x_*.json')
+        if (allocated(err)) return
+        call check(err, (names(1) == 'x_001.json' .and. names(2) == 'x_002.json') .or. &
+                   (names(2) == 'x_001.json' .and. names(1) == 'x_002.json'), &
+                   'folder_entries: not x_001.json and x_002.json')
+        if (allocated(err)) return
+        call folder_entries(dir//'/none', 'x_', '.json', names, listed)
+        call check(err, .not. listed .and. size(names) == 0, 'folder_entries: a missing folder')
+    end subroutine test_file_system
+
+    !> The stale-output cleanup finds a deck's earlier cases wherever their numbers lie: a
+    !! case st_1500 (after a gap of 1499 numbers) and the summaries of earlier splits into
+    !! shards (st_summary.shard-2-of-3.csv) go when the deck now runs one case; a name fricon
+    !! never writes (shard-02-of-3) and a deck of the user's named like a shard summary stay.
+    subroutine test_stale_listing(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        character(len=*), parameter :: deck_path = 'build/test_stale/st.dat'
+        integer :: status, u
+        opt%figures = .false.
+        opt%estimates = .false.
+        call clean_dir()
+        call execute_command_line('rm -rf build/test_stale && mkdir -p build/test_stale && '// &
+                                  'touch '//deck_path)
+        open (newunit=u, file=dir//'/st_1500.json', status='replace', action='write')
+        write (u, '(a)') '{'
+        write (u, '(a)') '  "deck_file": "'//canonical_path(deck_path)//'",'
+        close (u)
+        call write_line(dir//'/st_1500.txt', '= report')
+        call write_line(dir//'/st_summary.shard-2-of-3.csv', 'case,parameters')
+        call write_line(dir//'/st_summary.shard-02-of-3.csv', 'case,parameters')
+        call write_line(dir//'/st_summary.shard-1-of-3.csv', '* a deck')
+        call parse_deck(deck_path, beam_deck([character(len=4) ::]), deck, err)
+        if (allocated(err)) return
+        deck%from_file = .true.        ! as read_deck would: the deck is the file deck_path
+        call run_analysis(deck, dir, output_unit, error_unit, status, opt)
+        call check(err, status == EXIT_OK .and. exists(dir//'/st.txt') .and. .not. &
+                   exists(dir//'/st_1500.json') .and. .not. exists(dir//'/st_1500.txt') .and. &
+                   .not. exists(dir//'/st_summary.shard-2-of-3.csv'), &
+                   'a stale case after a gap, or a stale shard summary, was left')
+        if (allocated(err)) return
+        call check(err, exists(dir//'/st_summary.shard-02-of-3.csv') .and. &
+                   exists(dir//'/st_summary.shard-1-of-3.csv'), &
+                   'a file fricon does not write, or a deck, was removed')
+    end subroutine test_stale_listing
+
+    subroutine write_line(path, line)
+        character(len=*), intent(in) :: path, line
+        integer :: u
+        open (newunit=u, file=path, status='replace', action='write')
+        write (u, '(a)') line
+        close (u)
+    end subroutine write_line
 
     !> Run a deck whose case 1 is invalid (status 1; case_model reports it).
     subroutine run_analysis_of_bad_deck(deck, status)

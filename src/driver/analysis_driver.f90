@@ -10,6 +10,7 @@ module analysis_driver
     use solved_case, only: case_t
     use case_quality, only: solve_to_quality
     use case_files, only: case_result_t, write_case_files
+    use figure_renderer, only: renderer_t, stop_renderer
     use sweep_files, only: write_sweep_outputs
     use console, only: report_case, report_progress, seconds
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
@@ -44,7 +45,8 @@ contains
     !! result does not depend on the thread that solved it, and the console lines, files and
     !! summary rows come in case order.
     subroutine run_analysis(deck, out_dir, log_unit, err_unit, status, options)
-        type(deck_t), intent(in) :: deck           !! the read deck: its cases and sweeps
+        !$ use omp_lib, only: omp_get_thread_num
+        type(deck_t), intent(in) :: deck
         character(len=*), intent(in) :: out_dir    !! e.g. 'output'
         integer, intent(in) :: log_unit            !! where each case's outcome is written
         integer, intent(in) :: err_unit            !! errors, warnings and progress
@@ -59,7 +61,8 @@ contains
         logical, allocatable :: selected(:)
         type(error_t), allocatable :: err
         type(flexibility_cache_t) :: cache
-        integer :: i, n, done, threads, blas_before, big_case_unit
+        type(renderer_t), allocatable :: renderers(:)   !! one gnuplot per thread
+        integer :: i, n, done, threads, blas_before, big_case_unit, thread
         character(len=:), allocatable :: label
 
         n = case_count(deck)
@@ -117,11 +120,16 @@ contains
         cache = new_flexibility_cache(count(selected) > 1)
         call system_clock(clock_start)
         done = 0
-        !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) private(i)
+        allocate (renderers(threads))
+        !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) &
+        !$omp private(i, thread)
         cases_loop: do i = 1, n
             if (.not. selected(i)) cycle cases_loop
+            thread = 1
+            !$ thread = omp_get_thread_num() + 1
             call run_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
-                            opt%figures, opt%estimates, big_case_unit, results(i), cache)
+                            opt%figures, opt%estimates, big_case_unit, results(i), cache, &
+                            renderers(thread))
             !$omp critical (fricon_progress)
             done = done + 1
             if (opt%progress) call report_progress(err_unit, done, count(selected), &
@@ -129,6 +137,9 @@ contains
             !$omp end critical (fricon_progress)
         end do cases_loop
         !$omp end parallel do
+        do thread = 1, threads
+            call stop_renderer(renderers(thread))
+        end do
         call set_blas_threads(blas_before)
         do i = 1, n
             if (selected(i)) call report_case(log_unit, err_unit, deck%path, out_dir, results(i), &
@@ -195,10 +206,10 @@ contains
 
     !> One case: brought to the quality its deck asks for (case_quality: solve, refine or
     !! adapt, estimate), in parallel with the other cases of a sweep, then its files written
-    !! (case_files). The writing runs one case at a time (a critical section): it is cheap,
-    !! and it keeps the library's formatted-output and character temporaries out of any race.
+    !! (case_files: the writing one case at a time, the figure drawn by the thread's own
+    !! gnuplot in parallel).
     subroutine run_case(deck, m, label, out_dir, name, figures, estimates, progress_unit, &
-                        result, cache)
+                        result, cache, renderer)
         type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
         type(model_t), intent(in) :: m               !! the case's model
         character(len=*), intent(in) :: label        !! 'case i of n: swept values'
@@ -209,6 +220,7 @@ contains
         integer, intent(in) :: progress_unit         !! >= 0: report each Newton step there
         type(case_result_t), intent(out) :: result   !! status, key results, warnings
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        type(renderer_t), intent(inout), optional :: renderer  !! the thread's gnuplot
         type(case_t) :: c
         character(len=warning_length), allocatable :: warnings(:)
         type(error_t), allocatable :: err
@@ -231,9 +243,7 @@ contains
             result%entries = c%entries
             result%mean_pressure = c%summary%mean_pressure
         end if
-        !$omp critical (fricon_output)
-        call write_case_files(deck, c, out_dir//'/'//name, figures, result)
-        !$omp end critical (fricon_output)
+        call write_case_files(deck, c, out_dir//'/'//name, figures, result, renderer)
     end subroutine run_case
 
 end module analysis_driver

@@ -12,6 +12,9 @@ module case_files
                              write_plot_script, write_report
     use output_paths, only: remove_output, canonical_path
     use temporary_cleanup, only: register_temporary, release_temporary
+    use file_system, only: move_file, delete_file
+    use figure_renderer, only: renderer_t, draw_figure, stop_renderer, FIGURE_DRAWN, &
+                               FIGURE_NO_GNUPLOT
     implicit none
     private
 
@@ -38,33 +41,76 @@ contains
     !> The files of one solved or failed case: report, data, CSV, JSON summary, gnuplot script
     !! and PNG. A failed case writes its report (ANALYSIS FAILED) and its JSON only, and
     !! removes the data files and figure of an earlier run of the same case; a write that
-    !! fails leaves no file of the case.
-    subroutine write_case_files(deck, c, base, figures, result)
+    !! fails leaves no file of the case. Cases of a sweep call this in parallel: every Fortran
+    !! I/O statement runs one case at a time (critical section fricon_output: in gfortran 12 an
+    !! internal write that runs while another thread opens or closes a file can come out
+    !! garbled, doc/CHOICES.md), and only gnuplot's drawing, a child process fed through C,
+    !! runs in parallel.
+    subroutine write_case_files(deck, c, base, figures, result, renderer)
         type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
         type(case_t), intent(in) :: c                !! the case, solved or failed
         character(len=*), intent(in) :: base         !! output path without extension
         logical, intent(in) :: figures               !! run gnuplot on the written .gp
         type(case_result_t), intent(inout) :: result !! status and message on return
-        type(error_t), allocatable :: err, err_report
+        type(renderer_t), intent(inout), optional :: renderer  !! the thread's gnuplot
         character(len=:), allocatable :: note
-        associate (m => c%model, d => c%d, sol => c%sol, tab => c%stations, s => c%summary)
+        logical :: written, drawn_next
+        !$omp critical (fricon_output)
         call remove_temporaries(base)
         if (result%status /= EXIT_OK) then
-            call remove_stale(base)
-            call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
-                              result%entries, s, result%message, &
-                              report_notes(result%warnings, ''), err_report, result%adaptation)
-            if (.not. allocated(err_report)) call write_summary_json(base//'.json', result%name, &
-                deck%path, m, result%status, result%message, result%entries, s, sol, tab, &
-                err_report, result%adaptation, result%warnings, deck_file_of(deck))
-            if (allocated(err_report)) then
-                ! the failure's own report cannot be written: that is what the user must hear
-                call remove_case_files(base)
-                result%status = err_report%code
-                result%message = trim(result%message)//'; and its report: '//err_report%message
-            end if
-            return
+            call write_failed_case(deck, c, base, result)
+            written = .false.
+        else
+            call write_case_data(deck, c, base, figures, result, written)
         end if
+        ! without a figure the report follows at once (one pass through the section)
+        drawn_next = written .and. figures
+        if (written .and. .not. figures) call write_case_report(deck, c, base, '', result)
+        !$omp end critical (fricon_output)
+        if (.not. drawn_next) return
+        call render_png(base, note, renderer)
+        result%message = note
+        !$omp critical (fricon_output)
+        call write_case_report(deck, c, base, note, result)
+        !$omp end critical (fricon_output)
+    end subroutine write_case_files
+
+    !> A failed case: its report (ANALYSIS FAILED) and JSON; no data file or figure of an
+    !! earlier run of the case is left beside them.
+    subroutine write_failed_case(deck, c, base, result)
+        type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
+        type(case_t), intent(in) :: c                !! the failed case
+        character(len=*), intent(in) :: base         !! output path without extension
+        type(case_result_t), intent(inout) :: result !! status and message on return
+        type(error_t), allocatable :: err_report
+        associate (m => c%model, d => c%d, sol => c%sol, tab => c%stations, s => c%summary)
+        call remove_stale(base)
+        call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
+                          result%entries, s, result%message, &
+                          report_notes(result%warnings, ''), err_report, result%adaptation)
+        if (.not. allocated(err_report)) call write_summary_json(base//'.json', result%name, &
+            deck%path, m, result%status, result%message, result%entries, s, sol, tab, &
+            err_report, result%adaptation, result%warnings, deck_file_of(deck))
+        if (allocated(err_report)) then
+            ! the failure's own report cannot be written: that is what the user must hear
+            call remove_case_files(base)
+            result%status = err_report%code
+            result%message = trim(result%message)//'; and its report: '//err_report%message
+        end if
+        end associate
+    end subroutine write_failed_case
+
+    !> A solved case's data file, CSV (physical decks), JSON summary and figure script;
+    !! `written` is false when one of them could not be written (then none is left).
+    subroutine write_case_data(deck, c, base, figures, result, written)
+        type(deck_t), intent(in) :: deck             !! the deck (its path in the JSON)
+        type(case_t), intent(in) :: c                !! the solved case
+        character(len=*), intent(in) :: base         !! output path without extension
+        logical, intent(in) :: figures               !! a figure will be drawn
+        type(case_result_t), intent(inout) :: result !! status and message on failure
+        logical, intent(out) :: written
+        type(error_t), allocatable :: err
+        associate (m => c%model, sol => c%sol, tab => c%stations, s => c%summary)
         call write_data_file(base//'.dat', m, tab, err)
         if (.not. allocated(err) .and. .not. m%nondim) call write_physical_csv(base//'.csv', m, &
                                                                                tab, err)
@@ -77,16 +123,26 @@ contains
         if (.not. allocated(err) .and. m%nondim) call remove_output(base//'.csv')
         if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
                                                          result%label, s, err)
+        written = .not. allocated(err)
         if (allocated(err)) then
             ! no partial set of a case's files is left (README: exit 1 writes no output)
             call remove_case_files(base)
             result%status = err%code
             result%message = err%message
-            return
         end if
-        note = ''
-        if (figures) call render_png(base, note)
-        result%message = note
+        end associate
+    end subroutine write_case_data
+
+    !> A solved case's report, its closing lines the warnings and the figure's note; if it
+    !! cannot be written, no file of the case is left.
+    subroutine write_case_report(deck, c, base, note, result)
+        type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
+        type(case_t), intent(in) :: c                !! the solved case
+        character(len=*), intent(in) :: base         !! output path without extension
+        character(len=*), intent(in) :: note         !! why the figure was not drawn, or ''
+        type(case_result_t), intent(inout) :: result !! status and message on failure
+        type(error_t), allocatable :: err
+        associate (m => c%model, d => c%d, sol => c%sol, tab => c%stations, s => c%summary)
         call write_report(base//'.txt', deck%path, deck%lines, result%label, m, d, sol, tab, &
                           result%entries, s, '', report_notes(result%warnings, note), err, &
                           result%adaptation)
@@ -96,7 +152,7 @@ contains
             result%message = err%message
         end if
         end associate
-    end subroutine write_case_files
+    end subroutine write_case_report
 
     !> The report's closing lines: each warning, then the note (if any).
     pure function report_notes(warnings, note) result(lines)
@@ -156,39 +212,74 @@ contains
     end subroutine remove_files
 
     !> gnuplot runs the figure script base.gp and renders the PNG to a temporary name, moved
-    !! into place on success; `note` says why a figure was not drawn.
-    subroutine render_png(base, note)
-        !> path of the script without .gp (and of the PNG without .png)
-        character(len=*), intent(in) :: base
-        !> why no figure was drawn ('' when it was)
-        character(len=:), allocatable, intent(out) :: note
-        integer :: exit_status, cmd_status
+    !! into place when complete; `note` says why a figure was not drawn. With a renderer, its
+    !! gnuplot draws the figure (and stays for the next); without, a gnuplot of its own. The
+    !! drawing runs in parallel with other threads; the checks of the files are Fortran I/O
+    !! and run in the critical section fricon_output (so never call this inside it).
+    subroutine render_png(base, note, renderer)
+        character(len=*), intent(in) :: base                   !! output path without extension
+        character(len=:), allocatable, intent(out) :: note     !! '' when drawn
+        type(renderer_t), intent(inout), optional :: renderer  !! the thread's gnuplot
+        type(renderer_t) :: own
+        integer :: outcome
+        logical :: moved
         note = ''
-        if (index(base, "'") > 0 .or. index(base, '"') > 0) then
+        if (scan(base, '''"`'//achar(10)) > 0) then
             note = 'figure not rendered: the output path contains a quote'
+            !$omp critical (fricon_output)
             call remove_output(base//'.png')
+            !$omp end critical (fricon_output)
             return
         end if
-        call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exit_status, &
-                                  cmdstat=cmd_status)
-        if (cmd_status /= 0 .or. exit_status /= 0) then
+        ! a SIGTERM or SIGINT while gnuplot draws removes the temporary figure
+        call register_temporary(base//'.png.tmp')
+        if (present(renderer)) then
+            call draw_figure(renderer, base//'.gp', base//'.png.tmp', outcome)
+        else
+            call draw_figure(own, base//'.gp', base//'.png.tmp', outcome)
+            call stop_renderer(own)
+        end if
+        if (outcome == FIGURE_NO_GNUPLOT) then
             note = 'figure '//base//'.png not drawn: gnuplot is not installed (the script '// &
                    base//'.gp is written; scripts/setup.sh installs gnuplot)'
+            !$omp critical (fricon_output)
             call remove_output(base//'.png')      ! not an earlier run's figure beside it
+            !$omp end critical (fricon_output)
+            call release_temporary(base//'.png.tmp')
             return
         end if
-        call register_temporary(base//'.png.tmp')
-        call execute_command_line("gnuplot -e ""png_override='"//base//".png.tmp'"" '"//base// &
-            ".gp' && tail -c 12 '"//base//".png.tmp' | grep -qa IEND && mv -fT '"//base// &
-            ".png.tmp' '"//base//".png'", exitstat=exit_status, cmdstat=cmd_status)
-        if (cmd_status /= 0 .or. exit_status /= 0) then
-            ! (a PNG ends with its IEND chunk: gnuplot exits 0 on a full disk with the file
-            ! cut; mv -T: a folder named like the figure is not a place to move it into)
+        moved = .false.
+        !$omp critical (fricon_output)
+        ! (a PNG ends with its IEND chunk: gnuplot reports no error on a full disk with the
+        ! file cut; rename(2): a folder named like the figure is not a place to move it into)
+        if (outcome == FIGURE_DRAWN) then
+            if (png_complete(base//'.png.tmp')) call move_file(base//'.png.tmp', base//'.png', &
+                                                               moved)
+        end if
+        if (.not. moved) then
             note = 'figure '//base//'.png not drawn: gnuplot failed on '//base//'.gp, the '// &
                    'figure came out incomplete (disk full?), or '//base//'.png cannot be replaced'
             call remove_output(base//'.png')
-            call execute_command_line("rm -f '"//base//".png.tmp'")
+            call delete_file(base//'.png.tmp')
         end if
+        !$omp end critical (fricon_output)
         call release_temporary(base//'.png.tmp')
     end subroutine render_png
+
+    !> The file ends with a PNG's IEND chunk within its last 12 bytes.
+    logical function png_complete(path)
+        character(len=*), intent(in) :: path   !! the figure's file
+        character(len=12) :: tail
+        integer :: u, ios, size_bytes
+        png_complete = .false.
+        open (newunit=u, file=path, status='old', action='read', access='stream', &
+              form='unformatted', iostat=ios)
+        if (ios /= 0) return
+        inquire (unit=u, size=size_bytes)
+        if (size_bytes >= len(tail)) then
+            read (u, pos=size_bytes - len(tail) + 1, iostat=ios) tail
+            png_complete = ios == 0 .and. index(tail, 'IEND') > 0
+        end if
+        close (u)
+    end function png_complete
 end module case_files

@@ -1,10 +1,12 @@
 !> Where a run writes, checked before anything is solved: the output folder must be writable,
 !! and no output file may be the deck itself (decks and data files may share the extension
-!! .dat). POSIX calls (realpath, isatty) through thin bind(c) interfaces.
+!! .dat). POSIX calls (realpath, isatty) through thin bind(c) interfaces; folders are made
+!! and listed by file_system, without a shell.
 module output_paths
     use iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
     use errors, only: error_t, new_error, EXIT_INPUT
     use deck_fields, only: int_text
+    use file_system, only: make_folder, folder_entries
     implicit none
     private
 
@@ -41,17 +43,18 @@ contains
     !> Create the folder (and its parents) and prove it writable with a probe file; an error
     !! (exit status 1) names the folder and the reason.
     subroutine prepare_output_dir(dir, err)
-        character(len=*), intent(in) :: dir              !! the output folder
-        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
-        integer :: u, ios, exit_status, cmd_status
+        character(len=*), intent(in) :: dir
+        type(error_t), allocatable, intent(out) :: err
+        integer :: u, ios
         character(len=256) :: msg
+        logical :: made
+        ! (the figures' gnuplot command line quotes the folder: these characters would break it)
         if (scan(dir, '''"`$\') > 0) then
             call new_error(err, EXIT_INPUT, 'output folder '''//dir//''': quotes, backquotes, '// &
                            '$ and \ are not allowed in its name')
             return
         end if
-        call execute_command_line("mkdir -p -- '"//dir//"' 2>/dev/null", exitstat=exit_status, &
-                                  cmdstat=cmd_status)
+        call make_folder(dir, made)        ! when it fails, the probe file below says why
         open (newunit=u, file=dir//'/.fricon_write_probe', status='replace', action='write', &
               iostat=ios, iomsg=msg)
         if (ios /= 0) then
@@ -127,44 +130,37 @@ contains
 
     !> Remove what an earlier run of the same deck left in dir that this run does not write
     !! (n cases; n = 0 for a deck with input errors, which writes nothing): the files of a
-    !! case STEM.* or STEM_NNN.* (any width of NNN; numbers scanned on until 1000 in a row are
-    !! absent, so a shard's or a failed write's gaps do not stop it) whose JSON summary
-    !! records this deck's canonical path (`"deck_file"`: nothing another deck wrote is
-    !! touched, whatever folder it was run from), and a sweep's STEM_summary*.csv and
-    !! STEM_sweep.* when such a case of a sweep was removed and this run is no sweep. Only
-    !! files that look like fricon's outputs are deleted (remove_output): never a deck.
+    !! case STEM.* or STEM_NNN.* (NNN: 3 to 9 digits, not all zero) whose JSON summary records
+    !! this deck's canonical path (`"deck_file"`: nothing another deck wrote is touched,
+    !! whatever folder it was run from), and a sweep's STEM_summary*.csv and STEM_sweep.* when
+    !! such a case of a sweep was removed and this run is no sweep. Only files that look like
+    !! fricon's outputs are deleted (remove_output): never a deck. The cases are found in one
+    !! listing of the folder (its STEM_*.json), so the cost does not grow with what else the
+    !! folder holds.
     subroutine remove_stale_outputs(dir, stem, n, deck_path)
         !> the output folder; the deck's file stem; the deck's path
         character(len=*), intent(in) :: dir, stem, deck_path
-        integer, intent(in) :: n   !! cases this run writes (0: none)
-        character(len=:), allocatable :: deck_real, group
-        logical :: swept
-        integer :: width, i, misses, k, j
+        integer, intent(in) :: n
+        character(len=:), allocatable :: deck_real, group, summaries(:)
+        logical :: swept, listed
+        integer :: k
         deck_real = canonical_path(deck_path)
         if (len(deck_real) == 0) return          ! no deck file: nothing can be proven its own
         if (n /= 1) call remove_group(dir//'/'//stem, deck_real)
+        call folder_entries(dir, stem//'_', '.json', summaries, listed)
+        if (.not. listed) return                 ! no folder, or one that cannot be listed
         swept = .false.
-        widths: do width = 3, 9
-            misses = 0
-            i = 0
-            numbers: do while (misses < 1000 .and. i < 10**min(width, 8) - 1)
-                i = i + 1
-                group = stem//'_'//padded(i, width)
-                if (n > 1) then
-                    if (writes_file(stem, n, group//'.txt')) then
-                        misses = 0
-                        cycle numbers
-                    end if
-                end if
-                if (.not. names_deck(dir//'/'//group//'.json', deck_real)) then
-                    misses = misses + 1
-                    cycle numbers
-                end if
-                misses = 0
-                call remove_group(dir//'/'//group, deck_real)
-                swept = .true.
-            end do numbers
-        end do widths
+        cases: do k = 1, size(summaries)
+            group = trim(summaries(k))
+            group = group(1:len(group) - len('.json'))
+            if (.not. numbered_case(stem, group)) cycle cases
+            if (n > 1) then
+                if (writes_file(stem, n, group//'.txt')) cycle cases   ! this run's own case
+            end if
+            if (.not. names_deck(dir//'/'//group//'.json', deck_real)) cycle cases
+            call remove_group(dir//'/'//group, deck_real)
+            swept = .true.
+        end do cases
         if (.not. swept .or. n > 1) return
         call remove_output(dir//'/'//stem//'_summary.csv')
         call remove_output(dir//'/'//stem//'_sweep.gp')
@@ -172,19 +168,43 @@ contains
         call remove_shard_summaries(dir, stem, 0)
     end subroutine remove_stale_outputs
 
-    !> The shards' summaries STEM_summary.shard-I-of-N.csv (--shard I/N) of every N up to 64
-    !! but keep_n (0: all): an earlier split into another number of shards.
+    !> group is STEM_NNN, NNN 3 to 9 digits and not all zero (a case of a sweep: case_name).
+    pure logical function numbered_case(stem, group)
+        character(len=*), intent(in) :: stem, group
+        integer :: width
+        numbered_case = .false.
+        width = len(group) - len(stem) - 1
+        if (width < 3 .or. width > 9) return
+        if (group(1:len(stem) + 1) /= stem//'_') return
+        if (verify(group(len(stem) + 2:), '0123456789') /= 0) return
+        numbered_case = verify(group(len(stem) + 2:), '0') /= 0
+    end function numbered_case
+
+    !> The shards' summaries STEM_summary.shard-I-of-N.csv (--shard I/N: 1 <= I <= N, N from
+    !! 2 to 64) of every N but keep_n (0: all), an earlier split into another number of
+    !! shards; found in one listing of the folder.
     subroutine remove_shard_summaries(dir, stem, keep_n)
-        character(len=*), intent(in) :: dir, stem   !! the output folder; the deck's file stem
-        integer, intent(in) :: keep_n               !! shards of this run (0: none)
-        integer :: k, j
-        do k = 2, 64
-            if (k == keep_n) cycle
-            do j = 1, k
-                call remove_output(dir//'/'//stem//'_summary.shard-'//int_text(j)//'-of-'// &
-                                   int_text(k)//'.csv')
-            end do
-        end do
+        character(len=*), intent(in) :: dir, stem
+        integer, intent(in) :: keep_n
+        character(len=*), parameter :: prefix = '_summary.shard-'
+        character(len=:), allocatable :: names(:), split
+        logical :: listed
+        integer :: k, i, count, ios_i, ios_n, at
+        call folder_entries(dir, stem//prefix, '.csv', names, listed)
+        shards: do k = 1, size(names)
+            split = trim(names(k))                ! I-of-N, between the prefix and .csv
+            split = split(len(stem) + len(prefix) + 1:len(split) - len('.csv'))
+            at = index(split, '-of-')
+            if (at < 2 .or. verify(split, '0123456789-of') /= 0) cycle shards
+            read (split(1:at - 1), *, iostat=ios_i) i
+            read (split(at + 4:), *, iostat=ios_n) count
+            if (ios_i /= 0 .or. ios_n /= 0) cycle shards
+            if (count < 2 .or. count > 64 .or. count == keep_n .or. i < 1 .or. i > count) &
+                cycle shards
+            ! the very name that --shard I/N writes (no leading zeros)
+            if (split /= int_text(i)//'-of-'//int_text(count)) cycle shards
+            call remove_output(dir//'/'//trim(names(k)))
+        end do shards
     end subroutine remove_shard_summaries
 
     !> A sweep's summary STEM_summary<shard>.csv and, unsharded (shard ''), its overlay
