@@ -46,7 +46,7 @@ contains
     !! summary rows come in case order.
     subroutine run_analysis(deck, out_dir, log_unit, err_unit, status, options)
         !$ use omp_lib, only: omp_get_thread_num
-        type(deck_t), intent(in) :: deck
+        type(deck_t), intent(in) :: deck           !! the read deck: its cases and sweeps
         character(len=*), intent(in) :: out_dir    !! e.g. 'output'
         integer, intent(in) :: log_unit            !! where each case's outcome is written
         integer, intent(in) :: err_unit            !! errors, warnings and progress
@@ -63,21 +63,10 @@ contains
         type(flexibility_cache_t) :: cache
         type(renderer_t), allocatable :: renderers(:)   !! one gnuplot per thread
         integer :: i, n, done, threads, blas_before, big_case_unit, thread
-        character(len=:), allocatable :: label
 
         n = case_count(deck)
-        allocate (cases(n), labels(n), results(n))
-        status = EXIT_OK
-        validate: do i = 1, n
-            call case_model(deck, i, cases(i), label, err)
-            labels(i) = 'case '//case_number(i, n)//' of '//case_number(n, n)
-            if (len(label) > 0) labels(i) = trim(labels(i))//': '//label
-            if (allocated(err)) then
-                write (err_unit, '(a)') 'ERROR: '//err%message
-                status = EXIT_INPUT
-                deallocate (err)
-            end if
-        end do validate
+        allocate (results(n))
+        call case_models(deck, err_unit, cases, labels, status)
         if (status /= EXIT_OK) then
             ! exit 1 writes no output, and leaves none of an earlier run of this deck
             if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, 0, deck%path)
@@ -155,6 +144,32 @@ contains
         ! where there is now one case, or one case where there is now a sweep)
         if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, n, deck%path)
     end subroutine run_analysis
+
+    !> The model and the label of every case of the deck; every input error of every case is
+    !! written (status EXIT_INPUT), so that all are reported before anything is solved.
+    subroutine case_models(deck, err_unit, cases, labels, status)
+        type(deck_t), intent(in) :: deck                          !! the read deck
+        integer, intent(in) :: err_unit                           !! where errors are written
+        type(model_t), allocatable, intent(out) :: cases(:)       !! one model per case
+        character(len=200), allocatable, intent(out) :: labels(:) !! 'case i of n: values'
+        integer, intent(out) :: status                            !! EXIT_OK or EXIT_INPUT
+        type(error_t), allocatable :: err
+        character(len=:), allocatable :: label
+        integer :: i, n
+        n = case_count(deck)
+        allocate (cases(n), labels(n))
+        status = EXIT_OK
+        validate: do i = 1, n
+            call case_model(deck, i, cases(i), label, err)
+            labels(i) = 'case '//case_number(i, n)//' of '//case_number(n, n)
+            if (len(label) > 0) labels(i) = trim(labels(i))//': '//label
+            if (allocated(err)) then
+                write (err_unit, '(a)') 'ERROR: '//err%message
+                status = EXIT_INPUT
+                deallocate (err)
+            end if
+        end do validate
+    end subroutine case_models
 
     !> Refuse (exit status 1) a case that alone needs more memory than the machine has; solve
     !! fewer cases at once when the memory does not hold `threads` of the largest.

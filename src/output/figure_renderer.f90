@@ -56,9 +56,10 @@ contains
     !! and command syntax). A gnuplot that died or reported an error is stopped; the next
     !! figure starts a new one.
     subroutine draw_figure(r, script, png, outcome)
-        type(renderer_t), intent(inout) :: r
+        type(renderer_t), intent(inout) :: r         !! the thread's gnuplot (started if none)
+        !> the figure script (CASE.gp) and the PNG it draws to (CASE.png.tmp)
         character(len=*), intent(in) :: script, png
-        integer, intent(out) :: outcome
+        integer, intent(out) :: outcome              !! FIGURE_DRAWN, _FAILED or _NO_GNUPLOT
         character(len=:), allocatable :: commands
         if (r%pid <= 0) then
             r%pid = c_gnuplot_start(r%channel)
@@ -82,7 +83,7 @@ contains
 
     !> End the renderer's gnuplot (if running) and wait for it.
     subroutine stop_renderer(r)
-        type(renderer_t), intent(inout) :: r
+        type(renderer_t), intent(inout) :: r         !! the renderer; stopped on return
         if (r%pid > 0) call c_gnuplot_stop(r%pid, r%channel)
         r%pid = 0
         r%channel = -1

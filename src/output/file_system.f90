@@ -60,8 +60,8 @@ contains
     !! folder afterwards (made now or before); else `made` is false (the caller's write
     !! into it says why).
     subroutine make_folder(path, made)
-        character(len=*), intent(in) :: path
-        logical, intent(out) :: made
+        character(len=*), intent(in) :: path   !! the folder, with its parents
+        logical, intent(out) :: made           !! it is a folder afterwards
         integer :: k
         integer(c_int) :: code
         ! each parent first: those that exist answer at once; a failure shows at the last
@@ -77,9 +77,10 @@ contains
     !! pass over the folder; `listed` is false when the folder cannot be read (it does not
     !! exist, or is no folder), and then names is empty.
     subroutine folder_entries(dir, prefix, suffix, names, listed)
+        !> the folder; the start and the end of the names wanted
         character(len=*), intent(in) :: dir, prefix, suffix
-        character(len=:), allocatable, intent(out) :: names(:)
-        logical, intent(out) :: listed
+        character(len=:), allocatable, intent(out) :: names(:)   !! the names found
+        logical, intent(out) :: listed                           !! the folder could be read
         character(len=name_max), allocatable :: found(:)
         character(kind=c_char) :: buffer(name_max)
         type(c_ptr) :: folder
@@ -112,14 +113,14 @@ contains
     !> Rename `from` to `to` (rename(2): atomic, replaces a file at `to`, never moves into a
     !! folder of that name); moved says whether it was done.
     subroutine move_file(from, to, moved)
-        character(len=*), intent(in) :: from, to
-        logical, intent(out) :: moved
+        character(len=*), intent(in) :: from, to   !! the file and its new path
+        logical, intent(out) :: moved              !! the rename was done
         moved = c_rename(from//c_null_char, to//c_null_char) == 0
     end subroutine move_file
 
     !> Delete the file at path, if there is one.
     subroutine delete_file(path)
-        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: path   !! the file (nothing happens if there is none)
         integer(c_int) :: code
         code = c_remove(path//c_null_char)
     end subroutine delete_file

@@ -43,8 +43,8 @@ contains
     !> Create the folder (and its parents) and prove it writable with a probe file; an error
     !! (exit status 1) names the folder and the reason.
     subroutine prepare_output_dir(dir, err)
-        character(len=*), intent(in) :: dir
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: dir              !! the output folder
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: u, ios
         character(len=256) :: msg
         logical :: made
@@ -140,7 +140,7 @@ contains
     subroutine remove_stale_outputs(dir, stem, n, deck_path)
         !> the output folder; the deck's file stem; the deck's path
         character(len=*), intent(in) :: dir, stem, deck_path
-        integer, intent(in) :: n
+        integer, intent(in) :: n   !! cases this run writes (0: none)
         character(len=:), allocatable :: deck_real, group, summaries(:)
         logical :: swept, listed
         integer :: k
@@ -184,8 +184,8 @@ contains
     !! 2 to 64) of every N but keep_n (0: all), an earlier split into another number of
     !! shards; found in one listing of the folder.
     subroutine remove_shard_summaries(dir, stem, keep_n)
-        character(len=*), intent(in) :: dir, stem
-        integer, intent(in) :: keep_n
+        character(len=*), intent(in) :: dir, stem   !! the output folder; the deck's file stem
+        integer, intent(in) :: keep_n               !! shards of this run (0: none)
         character(len=*), parameter :: prefix = '_summary.shard-'
         character(len=:), allocatable :: names(:), split
         logical :: listed
