@@ -16,6 +16,7 @@ program tester
     use test_convergence, only: collect_convergence
     use test_paper, only: collect_paper
     use test_design_values, only: collect_design_values
+    use test_foundation_springs, only: collect_foundation_springs
     use test_properties, only: collect_properties
     use test_malformed_decks, only: collect_malformed_decks
     use test_simplifications, only: collect_simplifications
@@ -31,7 +32,8 @@ program tester
     character(len=*), parameter :: suites = ' shape_functions gsl_wrappers halfspace_plate '// &
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
-        'simplifications adaptive nested_spaces architecture layered_ground layered_program '
+        'simplifications adaptive nested_spaces architecture layered_ground layered_program '// &
+        'foundation_springs '
 
     want_suite = ''
     want_test = ''
@@ -114,6 +116,10 @@ program tester
     if (wanted('design_values')) then
         call collect_design_values(tests)
         call run_suite('design_values', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('foundation_springs')) then
+        call collect_foundation_springs(tests)
+        call run_suite('foundation_springs', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('malformed_decks')) then
         call collect_malformed_decks(tests)

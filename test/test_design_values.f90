@@ -56,7 +56,9 @@ contains
                  new_unittest('pressure_mean_and_field_columns_beam', test_pressure_columns_beam), &
                  new_unittest('pressure_mean_and_field_columns_plate', &
                               test_pressure_columns_plate), &
-                 new_unittest('pressure_field_in_physical_csv', test_field_in_csv)]
+                 new_unittest('pressure_field_in_physical_csv', test_field_in_csv), &
+                 new_unittest('contact_ends_by_hand', test_contact_ends_hand), &
+                 new_unittest('contact_ends_of_a_mirrored_pair', test_contact_ends_mirrored)]
     end subroutine collect_design_values
 
     !> int_x0^x of the finite-element sigma (component k: 1 sigma_x, 2 sigma_z) times w(s) =
@@ -902,6 +904,95 @@ contains
         call check(err, .not. any(phys([iz, ix, ipz, ipx])%in_report), &
                    'the field columns are data-file columns, not report columns')
     end subroutine test_field_in_csv
+
+    !> Both ends of the contact by hand: a beam (l = 1) on 12 elements (stations at the
+    !! nodes x = -1/2 + j/12, j = 0..12), the nodes at x <= -1/4 and x = 1/2 set lifted off,
+    !! the others in contact. The leftmost node in contact is x = -1/2 + 4/12: t = -1/6;
+    !! the rightmost x = 1/2 - 1/12: t = 5/12. The lift-off boundaries lie midway between
+    !! x = -3/12, -2/12 and between x = 5/12, 6/12, so the left end lifts off over
+    !! 3.5/12 and the right end over 0.5/12. Then a beam in full contact (the strip footing,
+    !! V inside its kern: both ends carry pressure, asserted) has t from -1/2 to 1/2 and no
+    !! lift-off.
+    subroutine test_contact_ends_hand(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        type(summary_t) :: s
+        real(dp) :: got(4)
+        integer :: i
+        call solve_case(nondim_beam(1.0_dp, 0.1_dp, 0.05_dp, 0.0_dp, ne=12), c, err)
+        if (allocated(err)) return
+        ! the nodes, the load's position x = 0 twice (the values left and right of it)
+        call check(err, c%stations%n == 14 .and. all(abs(c%stations%val(Q_X, :) - &
+                   [(-0.5_dp + real(i, dp)/12.0_dp, i=0, 6), (-0.5_dp + real(i, dp)/12.0_dp, &
+                   i=6, 12)]) <= 1.0e-14_dp), 'stations are not the 13 nodes and x = 0')
+        if (allocated(err)) return
+        c%stations%state(1:4) = STATE_LIFTOFF
+        c%stations%state(5:13) = STATE_SLIP
+        c%stations%state(14) = STATE_LIFTOFF
+        s = summarise(c%model, c%sol, c%stations)
+        got = [s%contact_ends, s%liftoff]
+        call check(err, s%contact_ends_defined, 'contact ends not defined')
+        if (allocated(err)) return
+        call check_close(err, got(1), -1.0_dp/6.0_dp, 1.0e-14_dp, 0.0_dp, 't_left')
+        if (allocated(err)) return
+        call check_close(err, got(2), 5.0_dp/12.0_dp, 1.0e-14_dp, 0.0_dp, 't_right')
+        if (allocated(err)) return
+        call check_close(err, got(3), 3.5_dp/12.0_dp, 1.0e-14_dp, 0.0_dp, 'lift-off left')
+        if (allocated(err)) return
+        call check_close(err, got(4), 0.5_dp/12.0_dp, 1.0e-14_dp, 0.0_dp, 'lift-off right')
+        if (allocated(err)) return
+        call solve_deck('input/strip_footing.dat', 0, c, err)
+        if (allocated(err)) return
+        s = summarise(c%model, c%sol, c%design)
+        call check(err, c%design%val(Q_SZ, 1) > 0.0_dp .and. &
+                   c%design%val(Q_SZ, c%design%n) > 0.0_dp, 'strip footing ends not in contact')
+        if (allocated(err)) return
+        call check(err, all(abs([s%contact_ends, s%liftoff] - [-0.5_dp, 0.5_dp, 0.0_dp, &
+                   0.0_dp]) <= 1.0e-14_dp), 'full contact: t from -1/2 to 1/2, no lift-off')
+    end subroutine test_contact_ends_hand
+
+    !> A beam and its mirror image (a stiff beam, a point load at x = +0.3 l, beyond the kern,
+    !! and at x = -0.3 l, on a mesh symmetric about x = 0) must report the ends swapped: the
+    !! mirror's left lift-off length is the original's right one and the other way round, its
+    !! t_left is minus the original's t_right, and so are their error estimates (the solves
+    !! are mirror images). Statics: the resultant of the contact pressure acts at the load,
+    !! so the load lies inside the contact, t_left <= 0.3 <= t_right; a load beyond the kern
+    !! lifts one end off (the left one for the load at +0.3 l) and keeps the near end down.
+    subroutine test_contact_ends_mirrored(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: keys(4) = [character(len=32) :: &
+            'contact_extent_left_t', 'contact_extent_right_t', 'liftoff_left', 'liftoff_right']
+        type(case_t) :: c
+        type(entry_t), allocatable :: e(:)
+        real(dp) :: v(4, 2), est(4, 2)
+        integer :: side, k, i
+        do side = 1, 2
+            call solve_case(nondim_beam(1.0_dp, 0.1_dp, 0.05_dp, 0.0_dp, ne=40, &
+                                        loads=[load_t(kind=LOAD_POINT, fz=1.0_dp, &
+                                                      x1=merge(0.3_dp, -0.3_dp, side == 1))]), &
+                            c, err)
+            if (allocated(err)) return
+            do k = 1, 4
+                call estimated_entries(c, trim(keys(k)), e, i)
+                call check(err, i > 0, 'no key '//trim(keys(k)))
+                if (allocated(err)) return
+                call check(err, e(i)%defined .and. e(i)%has_error, &
+                           trim(keys(k))//' undefined or without an estimate')
+                if (allocated(err)) return
+                v(k, side) = e(i)%value
+                est(k, side) = e(i)%error
+            end do
+        end do
+        call check(err, v(1, 1) <= 0.3_dp .and. v(2, 1) >= 0.3_dp .and. v(2, 1) == 0.5_dp .and. &
+                   v(3, 1) > 0.0_dp .and. v(4, 1) == 0.0_dp, 'load at +0.3 l: the left end '// &
+                   'must lift off, the right stay down, the load inside the contact')
+        if (allocated(err)) return
+        call check(err, all(abs(v(:, 2) - [-v(2, 1), -v(1, 1), v(4, 1), v(3, 1)]) <= 1.0e-12_dp), &
+                   'the mirror image does not swap the ends')
+        if (allocated(err)) return
+        call check(err, all(abs(est(:, 2) - [est(2, 1), est(1, 1), est(4, 1), est(3, 1)]) <= &
+                   1.0e-9_dp), 'the mirror image does not swap the estimates')
+    end subroutine test_contact_ends_mirrored
 
     !> The summary entries of a solved case with their error estimates, made as the program
     !! makes them (analysis_driver), and the index of key among them (0 if absent).

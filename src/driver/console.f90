@@ -4,7 +4,7 @@ module console
     use iso_fortran_env, only: int64
     use kinds, only: dp
     use errors, only: EXIT_OK
-    use summary_table, only: entry_t
+    use summary_table, only: entry_t, entry_index
     use case_files, only: case_result_t
     implicit none
     private
@@ -61,7 +61,9 @@ contains
         text = trim(adjustl(buf))//' s'
     end function seconds
 
-    !> The console line: key results with their units.
+    !> The console line: key results with their units; a beam's contact by both ends (the
+    !! t of its leftmost and rightmost stations in contact, the lengths lifted off at the
+    !! left and the right end), a plate's contact extent t.
     pure function console_summary(e) result(text)
         type(entry_t), intent(in) :: e(:)
         character(len=:), allocatable :: text
@@ -70,19 +72,38 @@ contains
                                                    'contact_extent_t']
         character(len=*), parameter :: names(4) = [character(len=12) :: 'w_max', 'w_diff', &
                                                     'p_mean', 'extent t']
-        character(len=24) :: buf
-        integer :: i, k
+        integer :: k
         text = ''
-        do k = 1, size(keys)
-            do i = 1, size(e)
-                if (trim(e(i)%key) /= trim(keys(k))) cycle
-                buf = four_digits(e(i)%value)
-                text = text//trim(names(k))//' = '//trim(adjustl(buf))
-                if (len_trim(e(i)%unit) > 0) text = text//' '//trim(e(i)%unit)
-                if (k < size(keys)) text = text//',  '
-            end do
+        do k = 1, size(keys) - 1
+            text = text//named_value(e, keys(k), names(k))//',  '
         end do
+        if (entry_index(e, 'contact_extent_left_t') > 0) then
+            text = text//'contact t = '//named_value(e, 'contact_extent_left_t', '')//' to '// &
+                named_value(e, 'contact_extent_right_t', '')//',  lift-off = '// &
+                named_value(e, 'liftoff_left', '')//' left, '// &
+                named_value(e, 'liftoff_right', '')//' right'
+        else
+            text = text//named_value(e, keys(4), names(4))
+        end if
     end function console_summary
+
+    !> 'name = value unit' of the entry with the key ('value unit' without a name; '-' for a
+    !! value that is not defined, '' for a key that is not there).
+    pure function named_value(e, key, name) result(text)
+        type(entry_t), intent(in) :: e(:)
+        character(len=*), intent(in) :: key, name
+        character(len=:), allocatable :: text
+        character(len=24) :: buf
+        integer :: i
+        text = ''
+        i = entry_index(e, key)
+        if (i == 0) return
+        buf = four_digits(e(i)%value)
+        if (.not. e(i)%defined) buf = '-'
+        if (len_trim(name) > 0) text = trim(name)//' = '
+        text = text//trim(adjustl(buf))
+        if (len_trim(e(i)%unit) > 0 .and. e(i)%defined) text = text//' '//trim(e(i)%unit)
+    end function named_value
 
     !> x with four significant digits: fixed notation from 1e-3 to 1e5, else E notation.
     pure function four_digits(x) result(text)

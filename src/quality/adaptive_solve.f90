@@ -289,7 +289,7 @@ contains
         type(discretization_t) :: d2, d4
         type(case_t) :: c2_case, c4_case
         logical, allocatable :: p2(:), p4(:)
-        real(dp) :: ratio, floor
+        real(dp) :: ratio
         ok = .false.
         call coarsened(d%msh, pins(m%loads, d%msh, a%boundary), c2, p2)
         call coarsened(c2, p2, c4, p4)
@@ -303,8 +303,9 @@ contains
         e4 = c4_case%entries
         tab2 = c2_case%design
         ratio = sqrt(real(d%msh%ne, dp)/real(c4%ne, dp))
-        floor = extent_floor(m%structure, a%e, pack(a%boundary, a%liftoff))
-        call attach_estimates(m, a%e, e2, e4, ratio, floor, loads_on_nodes(m%loads, d%msh) .and. &
+        call attach_estimates(m, a%e, e2, e4, ratio, &
+                              extent_floors(m%structure, a%e, pack(a%boundary, a%liftoff)), &
+                              loads_on_nodes(m%loads, d%msh) .and. &
                               loads_on_nodes(m%loads, c2) .and. loads_on_nodes(m%loads, c4))
     end subroutine coarse_estimates
 
@@ -321,22 +322,31 @@ contains
         end do
     end function pins
 
-    !> The contact extent is a node: its error is at least the distance (as t) between that
-    !! node and the nearest located lift-off boundary (0 when there is none: full contact).
-    pure real(dp) function extent_floor(structure, e, boundary) result(floor)
+    !> Per entry, the least estimate: a contact extent is a node, and its error is at least
+    !! the distance (as t) between that node and the nearest located lift-off boundary (0
+    !! when there is none: full contact); 0 for the other keys.
+    pure function extent_floors(structure, e, boundary) result(floor)
         type(structure_t), intent(in) :: structure   !! the structure part of the model
         type(entry_t), intent(in) :: e(:)
         real(dp), intent(in) :: boundary(:)
+        real(dp) :: floor(size(e))
         real(dp) :: t
         integer :: i
         floor = 0.0_dp
         if (size(boundary) == 0) return
         do i = 1, size(e)
-            if (trim(e(i)%key) /= 'contact_extent_t') cycle
+            if (.not. is_extent(e(i)%key) .or. .not. e(i)%defined) cycle
             t = e(i)%value*structure%length
-            floor = minval(abs(boundary - t))/structure%length
+            floor(i) = minval(abs(boundary - t))/structure%length
         end do
-    end function extent_floor
+    end function extent_floors
+
+    !> Whether a key of summary_table is a contact extent t.
+    pure logical function is_extent(key)
+        character(len=*), intent(in) :: key
+        is_extent = key == 'contact_extent_t' .or. key == 'contact_extent_left_t' .or. &
+                    key == 'contact_extent_right_t'
+    end function is_extent
 
     !> Each estimated result's estimate relative to its scale (-1 where there is none):
     !! settlements to the largest |settlement|, moments to the largest |moment|, pressures
@@ -356,8 +366,10 @@ contains
                 scale = max(abs(value_of(e, 'settlement_max')), abs(value_of(e, 'settlement_min')))
             case ('moment_sagging', 'moment_hogging')
                 scale = max(abs(value_of(e, 'moment_sagging')), abs(value_of(e, 'moment_hogging')))
-            case ('contact_extent_t')
+            case ('contact_extent_t', 'contact_extent_left_t', 'contact_extent_right_t')
                 scale = 1.0_dp
+            case ('liftoff_left', 'liftoff_right')
+                cycle     ! its contact extent's estimate, in t, stands for it
             case ('pressure_centre')
                 scale = max(abs(e(i)%value), abs(value_of(e, 'pressure_mean')))
             case ('shear_force_max')
@@ -510,7 +522,7 @@ contains
                 x = [x, d%msh%x(0) + s%edge_distance]
             case ('pressure_near_right_end', 'pressure_near_rim')
                 x = [x, d%msh%x(d%msh%ne) - s%edge_distance]
-            case ('contact_extent_t')
+            case ('contact_extent_t', 'contact_extent_left_t', 'contact_extent_right_t')
                 x = [x, pack(a%boundary, a%liftoff)]
             case ('pressure_centre')
                 x = [x, 0.0_dp]

@@ -35,7 +35,8 @@ module error_estimate
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
-    use summary_table, only: entry_t
+    use summary_table, only: entry_t, entry_index
+    use case_scales, only: scales_t, case_scale_factors
     use solved_case, only: case_t, solve_on, finish_case
     use flexibility_cache, only: flexibility_cache_t
     use resource_limits, only: check_memory, memory_available
@@ -43,8 +44,9 @@ module error_estimate
     private
 
     !> The keys of summary_table that get an estimate.
-    character(len=*), parameter :: estimated_keys(10) = [character(len=32) :: 'settlement_max', &
-        'differential_settlement', 'contact_extent_t', 'moment_sagging', 'moment_hogging', &
+    character(len=*), parameter :: estimated_keys(12) = [character(len=32) :: 'settlement_max', &
+        'differential_settlement', 'contact_extent_t', 'contact_extent_left_t', &
+        'contact_extent_right_t', 'moment_sagging', 'moment_hogging', &
         'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim', &
         'pressure_centre', 'shear_force_max']
     integer, parameter :: min_coarse_elements = 4
@@ -56,7 +58,7 @@ module error_estimate
     real(dp), parameter :: safety = 1.25_dp
 
     public :: estimate_errors, coarse_case, attach_estimates, is_estimated, &
-              formal_order, refined_estimate
+              formal_order, refined_estimate, liftoff_estimates
 
 contains
 
@@ -93,14 +95,14 @@ contains
             call mesh_entries(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), reuse, ef, &
                               okf, cache)
             if (.not. okf) return
-            call refined_estimate(m, e, e2, ef, extent_floor(m, d%msh, e), on_nodes, edge)
+            call refined_estimate(m, e, e2, ef, extent_floors(m, d%msh, e), on_nodes, edge)
             return
         end if
         call coarsened(c2, p2, c4, p4)
         if (c4%ne >= c2%ne .or. c4%ne < min_coarse_elements) return
         call mesh_entries(m, c4, reuse, e4, ok4, cache)
         if (.not. ok4) return
-        call attach_estimates(m, e, e2, e4, 2.0_dp, extent_floor(m, d%msh, e), &
+        call attach_estimates(m, e, e2, e4, 2.0_dp, extent_floors(m, d%msh, e), &
                               on_nodes .and. loads_on_nodes(m%loads, c4), edge)
     end subroutine estimate_errors
 
@@ -115,33 +117,67 @@ contains
         refined_fits = .not. allocated(err)
     end function refined_fits
 
-    !> The contact extent is a node: the boundary lies in the element beyond it, so the
-    !! extent's error is taken as at least half that element (as t; 0 in contact up to the
-    !! end).
-    pure real(dp) function extent_floor(m, msh, e) result(floor)
+    !> Per entry, the least estimate: a contact extent is a node, and the boundary lies in
+    !! the element beyond it (before it, for the leftmost station in contact), so its error
+    !! is taken as at least half that element (as t; 0 in contact up to the end); 0 for the
+    !! other keys.
+    pure function extent_floors(m, msh, e) result(floor)
         type(model_t), intent(in) :: m
         type(mesh_t), intent(in) :: msh
         type(entry_t), intent(in) :: e(:)
+        real(dp) :: floor(size(e))
         real(dp) :: x
         integer :: i, k
         floor = 0.0_dp
         do i = 1, size(e)
-            if (trim(e(i)%key) /= 'contact_extent_t' .or. .not. e(i)%defined) cycle
+            if (.not. e(i)%defined) cycle
             x = e(i)%value*m%structure%length
             k = count(msh%x(1:) <= x + 1.0e-9_dp*m%structure%length)  ! nodes at or before x
-            if (k < msh%ne) floor = 0.5_dp*(msh%x(k + 1) - msh%x(k))/m%structure%length
+            select case (trim(e(i)%key))
+            case ('contact_extent_t', 'contact_extent_right_t')
+                if (k < msh%ne) floor(i) = 0.5_dp*(msh%x(k + 1) - msh%x(k))/m%structure%length
+            case ('contact_extent_left_t')
+                if (k > 0) floor(i) = 0.5_dp*(msh%x(k) - msh%x(k - 1))/m%structure%length
+            end select
         end do
-    end function extent_floor
+    end function extent_floors
+
+    !> The lengths lifted off at the beam's ends move with the contact extents beside them
+    !! (summary_table: liftoff_left and contact_extent_left_t, liftoff_right and
+    !! contact_extent_right_t; a length = (t_left + 1/2) l or (1/2 - t_right) l, less half
+    !! a station spacing): each gets the estimate of its extent times l, in its unit.
+    pure subroutine liftoff_estimates(m, e)
+        type(model_t), intent(in) :: m        !! the model
+        type(entry_t), intent(inout) :: e(:)  !! the key results with their estimates, updated
+        character(len=*), parameter :: lengths(2) = [character(len=32) :: 'liftoff_left', &
+            'liftoff_right'], extents(2) = [character(len=32) :: 'contact_extent_left_t', &
+            'contact_extent_right_t']
+        type(scales_t) :: scales
+        real(dp) :: factor
+        integer :: i, j, k
+        scales = case_scale_factors(m)
+        factor = m%structure%length*scales%length
+        do k = 1, 2
+            i = entry_index(e, trim(lengths(k)))
+            j = entry_index(e, trim(extents(k)))
+            if (i == 0 .or. j == 0) cycle
+            if (.not. (e(j)%has_error .and. e(i)%defined)) cycle
+            e(i)%has_error = .true.
+            e(i)%error = e(j)%error*factor
+            e(i)%order = e(j)%order
+        end do
+    end subroutine liftoff_estimates
 
     !> Estimates of the estimated keys of e (on N_e elements) from the same keys on the
     !! nested coarser mesh (ec, every other node removed) and on the mesh with every element
     !! cut in two (ef): the module header's E, the observed order in [p_low, p_high] and at
-    !! most formal_order; the contact extent's estimate is at least extent_floor.
-    pure subroutine refined_estimate(m, e, ec, ef, extent_floor, kinks_on_nodes, singular_edge)
+    !! most formal_order; each estimate is at least its floor (the contact extents':
+    !! extent_floors); the lift-off lengths get their extents' (liftoff_estimates).
+    pure subroutine refined_estimate(m, e, ec, ef, floors, kinks_on_nodes, singular_edge)
         type(model_t), intent(in) :: m
         type(entry_t), intent(inout) :: e(:)
         type(entry_t), intent(in) :: ec(:), ef(:)
-        real(dp), intent(in) :: extent_floor
+        real(dp), intent(in) :: floors(:)          !! least estimate per entry (extent_floors)
         logical, intent(in) :: kinks_on_nodes      !! see formal_order
         logical, intent(in) :: singular_edge       !! see formal_order
         real(dp) :: q1, dc, df, p, p_max
@@ -161,25 +197,27 @@ contains
                 e(i)%order = p
             end if
             e(i)%error = max(safety*abs(df)*2.0_dp**p/(2.0_dp**p - 1.0_dp), &
-                             abs(dc)/coarse_share)
-            if (trim(e(i)%key) == 'contact_extent_t') e(i)%error = max(e(i)%error, extent_floor)
+                             abs(dc)/coarse_share, floors(i))
             e(i)%has_error = .true.
         end do
+        call liftoff_estimates(m, e)
     end subroutine refined_estimate
 
     !> Estimates of the estimated keys of e from the same keys on two coarser meshes of a
-    !! nested family (e2 about N_e/ratio, e4 about N_e/ratio^2 elements); the contact
-    !! extent's estimate is at least extent_floor (t). Each key is credited with at most the
+    !! nested family (e2 about N_e/ratio, e4 about N_e/ratio^2 elements); each estimate is
+    !! at least its floor (the contact extents' t); the lift-off lengths get their extents'
+    !! (liftoff_estimates). Each key is credited with at most the
     !! order of convergence the method has for it (formal_order): three coarse meshes are
     !! often short of the asymptotic range and show a higher order than that.
-    pure subroutine attach_estimates(m, e, e2, e4, ratio, extent_floor, kinks_on_nodes, &
+    pure subroutine attach_estimates(m, e, e2, e4, ratio, floors, kinks_on_nodes, &
                                      singular_edge)
         type(model_t), intent(in) :: m             !! the model
         type(entry_t), intent(inout) :: e(:)       !! the key results, updated
         !> the keys on about N_e/ratio and N_e/ratio^2 elements
         type(entry_t), intent(in) :: e2(:), e4(:)
         real(dp), intent(in) :: ratio              !! refinement ratio between the meshes
-        real(dp), intent(in) :: extent_floor       !! least estimate of the contact extent t
+        real(dp), intent(in) :: floors(:)          !! least estimate per entry (the contact
+                                                   !! extents' t; 0 for the others)
         logical, intent(in) :: kinks_on_nodes      !! see formal_order
         logical, intent(in), optional :: singular_edge  !! see formal_order
         logical :: edge
@@ -192,9 +230,10 @@ contains
             call richardson(compared(e(i)), compared(e2(i)), compared(e4(i)), ratio, &
                             formal_order(m, e(i)%key, kinks_on_nodes, edge), e(i)%error, &
                             e(i)%order)
-            if (trim(e(i)%key) == 'contact_extent_t') e(i)%error = max(e(i)%error, extent_floor)
+            e(i)%error = max(e(i)%error, floors(i))
             e(i)%has_error = .true.
         end do
+        call liftoff_estimates(m, e)
     end subroutine attach_estimates
 
     !> The value an estimate compares across the meshes: the magnitude of the largest shear

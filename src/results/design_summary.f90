@@ -54,6 +54,11 @@ module design_summary
         type(interval_t), allocatable :: slip_intervals(:) !! where the base slips (contact
                                                            !! true), in order of x
         real(dp) :: contact_length = 0.0_dp           !! beam: length in contact; plate: 0 [L]
+        real(dp) :: contact_ends(2) = 0.0_dp          !! t = x/l of the leftmost and the
+                                                      !! rightmost station in contact [-]
+        real(dp) :: liftoff(2) = 0.0_dp               !! beam: lifted off at the left / right
+                                                      !! end (contact_ends) [L]
+        logical :: contact_ends_defined = .false.     !! some station is in contact
         real(dp) :: contact_area = 0.0_dp             !! [L^2]
         real(dp) :: mean_pressure = 0.0_dp            !! V / contact area [F/L^2]
         type(located_t) :: pressure_max               !! largest station pressure [F/L^2]
@@ -144,6 +149,7 @@ contains
             m%structure%kind == MODEL_BEAM)   ! line load -> pressure
         s%intervals = contact_intervals(tab)
         s%slip_intervals = slip_runs(tab)
+        call contact_ends(m%structure, tab, s)
         s%contact_length = 0.0_dp
         s%contact_area = 0.0_dp
         do k = 1, size(s%intervals)
@@ -181,6 +187,30 @@ contains
         end if
         call centre_value(m%loads, tab, width, s)
     end subroutine contact_values
+
+    !> Both ends of the contact: t = x/l of the leftmost and the rightmost station in
+    !! contact (stick or slip), and the lengths lifted off at the beam's left and right ends,
+    !! the end runs of lifted-off stations of the contact intervals (the boundary midway
+    !! between a station in contact and one lifted off): a beam and its mirror image swap
+    !! the lengths and swap the t with their signs changed. Undefined when no station is in
+    !! contact.
+    pure subroutine contact_ends(structure, tab, s)
+        type(structure_t), intent(in) :: structure   !! the structure part of the model
+        type(station_table_t), intent(in) :: tab
+        type(summary_t), intent(inout) :: s
+        logical :: touching(tab%n)
+        integer :: n
+        touching = tab%state /= STATE_LIFTOFF
+        s%contact_ends_defined = any(touching)
+        s%contact_ends = 0.0_dp
+        s%liftoff = 0.0_dp
+        if (.not. s%contact_ends_defined) return
+        s%contact_ends = [minval(tab%val(Q_X, :), mask=touching), &
+                          maxval(tab%val(Q_X, :), mask=touching)]/structure%length
+        n = size(s%intervals)
+        if (.not. s%intervals(1)%contact) s%liftoff(1) = s%intervals(1)%x2 - s%intervals(1)%x1
+        if (.not. s%intervals(n)%contact) s%liftoff(2) = s%intervals(n)%x2 - s%intervals(n)%x1
+    end subroutine contact_ends
 
     !> The pressure at the centre x = 0 (the plate's axis, the middle of a beam), under the
     !! load of most footings. Not defined when x = 0 is off the base or lifted off (the

@@ -28,7 +28,7 @@ module summary_table
                                             !! mesh decides the value; no error estimate
     end type entry_t
 
-    public :: summary_entries, entry_keys
+    public :: summary_entries, entry_keys, entry_index
 
 contains
 
@@ -55,8 +55,9 @@ contains
              ent('angular_distortion', 'max angular distortion |dw/dx - tilt|', k%u_rotation, &
                  s%angular_distortion%value*k%rotation), &
              ent('angular_distortion_x', '  at', k%u_length, s%angular_distortion%x*k%length), &
-             ent('contact_extent_t', 'contact extent t (largest t >= 0 in contact)', '', extent), &
-             ent(choose(beam, 'contact_length', 'contact_area'), &
+             ent('contact_extent_t', 'contact extent t (largest t >= 0 in contact)', '', extent)]
+        if (beam) e = [e, end_entries(s, k)]
+        e = [e, ent(choose(beam, 'contact_length', 'contact_area'), &
                  choose(beam, 'contact length', 'contact area'), &
                  choose(beam, k%u_length, area_unit(k)), &
                  merge(s%contact_length*k%length, s%contact_area*k%length**2, beam)), &
@@ -108,6 +109,16 @@ contains
         end do
     end subroutine mark_singular
 
+    !> The index of the entry with the key in e (0 if none).
+    pure integer function entry_index(e, key) result(i)
+        type(entry_t), intent(in) :: e(:)      !! key results
+        character(len=*), intent(in) :: key    !! a key of summary_entries
+        do i = 1, size(e)
+            if (trim(e(i)%key) == key) return
+        end do
+        i = 0
+    end function entry_index
+
     !> The keys of summary_entries for a model (the sweep CSV header).
     pure function entry_keys(m) result(keys)
         type(model_t), intent(in) :: m   !! the model
@@ -118,6 +129,24 @@ contains
         e = summary_entries(m, empty, 0.0_dp)
         keys = [(e(i)%key, i=1, size(e))]
     end function entry_keys
+
+    !> A beam's two ends of contact: the t of the leftmost and the rightmost station in
+    !! contact and the lengths lifted off from the left and the right end to them.
+    pure function end_entries(s, k) result(e)
+        type(summary_t), intent(in) :: s
+        type(scales_t), intent(in) :: k
+        type(entry_t), allocatable :: e(:)
+        logical :: on
+        on = s%contact_ends_defined
+        e = [ent('contact_extent_left_t', 'contact from t (leftmost station in contact)', '', &
+                 s%contact_ends(1), on), &
+             ent('contact_extent_right_t', 'contact to t (rightmost station in contact)', '', &
+                 s%contact_ends(2), on), &
+             ent('liftoff_left', 'lift-off length at the left end', k%u_length, &
+                 s%liftoff(1)*k%length, on), &
+             ent('liftoff_right', 'lift-off length at the right end', k%u_length, &
+                 s%liftoff(2)*k%length, on)]
+    end function end_entries
 
     pure function moment_entries(structure, s, k) result(e)
         type(structure_t), intent(in) :: structure   !! the structure part of the model
