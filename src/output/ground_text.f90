@@ -14,13 +14,13 @@ contains
 
     !> The case's ground is layered.
     pure logical function layered(m)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the case
         layered = m%ground%kind == GROUND_LAYERED .and. layer_count(m%ground) > 0
     end function layered
 
     !> 'layered elastic ground: 2 layers, 10 m deep, over a ROUGH (rigid, bonded) base'.
     pure function ground_model_words(m) result(text)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! a case on layered ground
         character(len=:), allocatable :: text
         text = 'layered elastic ground: '//int_text(layer_count(m%ground))//' layer'// &
             trim(merge('s', ' ', layer_count(m%ground) > 1))//', '// &
@@ -43,8 +43,8 @@ contains
 
     !> The report's table of the layers and the base (physical units of the case).
     subroutine write_layer_table(u, m)
-        integer, intent(in) :: u
-        type(model_t), intent(in) :: m
+        integer, intent(in) :: u         !! the open report
+        type(model_t), intent(in) :: m   !! a case on layered ground
         real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:)
         real(dp) :: e_base, z
         character(len=:), allocatable :: stress
@@ -70,7 +70,7 @@ contains
 
     !> '# ground: LAYER h=4 E=8000..8000 nu=0.45; ...; BASE ROUGH' (units of the case).
     pure function ground_csv_line(m) result(text)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! a case on layered ground
         character(len=:), allocatable :: text
         real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:)
         real(dp) :: e_base
@@ -89,7 +89,7 @@ contains
 
     !> The JSON member `"ground": {...},` (one line; units of the case).
     pure function ground_json(m) result(text)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! a case on layered ground
         character(len=:), allocatable :: text
         real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:)
         real(dp) :: e_base

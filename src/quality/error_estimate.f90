@@ -138,10 +138,12 @@ contains
     !! cut in two (ef): the module header's E, the observed order in [p_low, p_high] and at
     !! most formal_order; the contact extent's estimate is at least extent_floor.
     pure subroutine refined_estimate(m, e, ec, ef, extent_floor, kinks_on_nodes, singular_edge)
-        type(model_t), intent(in) :: m
-        type(entry_t), intent(inout) :: e(:)
-        type(entry_t), intent(in) :: ec(:), ef(:)
-        real(dp), intent(in) :: extent_floor
+        type(model_t), intent(in) :: m             !! the case (formal orders by model kind)
+        type(entry_t), intent(inout) :: e(:)       !! key results on N_e elements; their
+                                                   !! estimates and orders are set
+        type(entry_t), intent(in) :: ec(:)         !! the same keys on the nested coarser mesh
+        type(entry_t), intent(in) :: ef(:)         !! the same keys on the mesh cut in two
+        real(dp), intent(in) :: extent_floor       !! least estimate of the contact extent (t)
         logical, intent(in) :: kinks_on_nodes      !! see formal_order
         logical, intent(in) :: singular_edge       !! see formal_order
         real(dp) :: q1, dc, df, p, p_max
