@@ -22,6 +22,8 @@ out=output/bench
 work=$(mktemp -d "${TMPDIR:-/tmp}/bench_layered.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
+# the commit measured (taken before the benchmark rewrites output/bench)
+commit="$(git rev-parse --short HEAD)$([ -n "$(git status --porcelain --untracked-files=no)" ] && echo ' + uncommitted changes')"
 
 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 fpm run --profile release --example bench_layered \
     >/dev/null
@@ -82,7 +84,7 @@ sweep_no=$(wall "$bin" --no-figures -q --no-estimates -j 2 -o "$work/sweep" \
     echo
     echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'),"
     echo "$(free -g | awk '/Mem:/ { print $2 }') GB, $(uname -sr), shared with other jobs; commit"
-    echo "$(git rev-parse --short HEAD)$([ -n "$(git status --porcelain --untracked-files=no)" ] && echo ' + uncommitted changes'), $(date -u +%Y-%m-%d). Release build; wall seconds of the whole"
+    echo "$commit, $(date -u +%Y-%m-%d). Release build; wall seconds of the whole"
     echo "process (deck read, solve, every output but the PNG: --no-figures), least of 3 runs,"
     echo "one thread (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1). The homogeneous case is"
     echo "bench/layered_plate.dat with SOIL 8000 kPa 0.45 (the top layer) in place of its three"
@@ -102,6 +104,12 @@ sweep_no=$(wall "$bin" --no-figures -q --no-estimates -j 2 -o "$work/sweep" \
             echo "| frictional raft, 3 layers on rock | $ne | $est | $h | $l | $(ratio "$l" "$h") | $target |"
         done
     done
+    echo
+    echo "With estimates a case is solved three times: on its mesh, on 2 N_e and on N_e/2 (the"
+    echo "estimate's re-solves, --no-estimates drops them); at N_e = 1000 one of them has 2000"
+    echo "elements (T of 4002 unknowns); the rows with and without estimates differ by their time,"
+    echo "for the homogeneous half-space as well. The 2 s target holds for the case's one"
+    echo "solve; with the estimates' two re-solves it is missed when the row above says MISSED."
     echo
     echo "Sweep bench/layered_sweep_1000.dat: $rows cases (5 E1 x 5 H1 x 5 E2 x 2 H2 x 2 E3 x"
     echo "2 DEPTH, N_e = 40, every case its own T), the whole process with -j 2 --no-figures:"
