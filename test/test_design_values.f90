@@ -24,7 +24,7 @@ module test_design_values
     use station_results, only: contact_extent
     implicit none
     private
-    public :: collect_design_values
+    public :: collect_design_values, json_value
 
 contains
 

@@ -10,16 +10,21 @@
 !!    independent Nystrom solution of the punch's Fredholm equation (test_layered_ground's
 !!    punch_nystrom: the compliance alone, no basis, no T);
 !!  * the same, NONDIM moduli and thicknesses: a deck with layers in units of a and moduli
-!!    relative to the top layer equals the physical deck that it stands for.
+!!    relative to the top layer equals the physical deck that it stands for;
+!!  * a layered SWEEP deck through the driver (run_analysis, files in build/): the run's one
+!!    flexibility cache keeps the grounds of its cases apart, and a SWEEP DEPTH value below
+!!    a swept layer is refused for the cases it makes impossible, and for those only.
 module test_layered_program
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
-    use errors, only: new_error, EXIT_INTERNAL
+    use errors, only: new_error, EXIT_INTERNAL, EXIT_OK, EXIT_INPUT
     use model, only: model_t, FIELD_W, layer_count
     use deck_reader, only: deck_t, read_deck, parse_deck, case_count, case_model
-    use deck_fields, only: field_text, format_real
+    use deck_fields, only: field_text, format_real, int_text
     use solved_case, only: case_t, solve_case
     use test_layered_ground, only: punch_nystrom
+    use test_design_values, only: json_value
+    use analysis_driver, only: run_analysis, run_options_t
     implicit none
     private
     public :: collect_layered_program
@@ -35,7 +40,9 @@ contains
         type(unittest_t), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('identical_layers_every_input_deck', test_identical_layers), &
                  new_unittest('rigid_punch_on_layer_vs_nystrom', test_punch), &
-                 new_unittest('nondim_layers_equal_physical', test_nondim_physical)]
+                 new_unittest('nondim_layers_equal_physical', test_nondim_physical), &
+                 new_unittest('layered_sweep_through_driver', test_sweep_driver), &
+                 new_unittest('depth_error_only_for_its_cases', test_depth_error)]
     end subroutine collect_layered_program
 
     !> Every case of every deck of input/ (the layered example decks excepted: they have no
@@ -262,4 +269,116 @@ contains
         call check_close(err, block_diff(c_ph%sol%z, c_nd%sol%z), 0.0_dp, 0.0_dp, 2.0e-4_dp, &
                          'NONDIM vs physical layered beam')
     end subroutine test_nondim_physical
+
+    !> The cards of a raft (a = 6 m) on two layers over rock under a central patch; `extra`
+    !! before END.
+    function raft_deck(e1, extra) result(lines)
+        character(len=*), intent(in) :: e1            !! the LAYER 1 modulus field
+        character(len=*), intent(in) :: extra(:)      !! more cards (SWEEP)
+        character(len=80), allocatable :: lines(:)
+        lines = [character(len=80) :: 'MODEL     PLATE', 'UNITS     kN        m', &
+                 'GEOMETRY  6.0       0.6', 'STRUCTURE 30.0E6    0.2', &
+                 'LAYER     4.0       '//e1//'0.45', 'LAYER     6.0       20.0E3    0.35', &
+                 'BASE      ROUGH', 'FRICTION  0.5', &
+                 'LOAD      PATCH     8000.0              0.0       0.4', 'MESH      20']
+        lines = [character(len=80) :: lines, extra, 'END']
+    end function raft_deck
+
+    !> A SWEEP over E1 (8 and 16 MPa) on one mesh through run_analysis: the two cases share
+    !! the mesh and the top layer's constants but not the ground, so the run's flexibility
+    !! cache must not hand the second case the first one's T. Expected: the stiffer top
+    !! layer settles less (elasticity: a stiffer layer, the same loads; with a cache keyed
+    !! on the mesh alone both would be equal), and each swept case's w_max equals that of
+    !! the single-case deck of its E1 run alone (its own run, its own cache: an independent
+    !! computation of the same case) to 1e-10.
+    subroutine test_sweep_driver(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = 'build/test_layered_sweep'
+        character(len=10), parameter :: moduli(2) = ['8.0E3     ', '16.0E3    ']
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        real(dp) :: w_sweep(2), w_single(2)
+        integer :: status, k, nul
+        opt%figures = .false.
+        opt%estimates = .false.
+        call execute_command_line('rm -rf '//dir)
+        call parse_deck('lsweep.dat', raft_deck(moduli(1), &
+            [character(len=80) :: 'SWEEP     E1        8.0E3     16.0E3']), deck, err)
+        if (allocated(err)) return
+        open (newunit=nul, file='/dev/null', action='write')
+        call run_analysis(deck, dir, nul, nul, status, opt)
+        call check(err, status == EXIT_OK, 'the sweep did not solve: status '// &
+                   int_text(status))
+        if (allocated(err)) return
+        cases: do k = 1, 2
+            w_sweep(k) = json_value(dir//'/lsweep_00'//achar(48 + k)//'.json', &
+                                    '"settlement_max":')
+            call parse_deck('lsingle.dat', raft_deck(moduli(k), [character(len=80) ::]), &
+                            deck, err)
+            if (allocated(err)) exit cases
+            call run_analysis(deck, dir, nul, nul, status, opt)
+            call check(err, status == EXIT_OK, 'a single case did not solve')
+            if (allocated(err)) exit cases
+            w_single(k) = json_value(dir//'/lsingle.json', '"settlement_max":')
+            call check_close(err, w_sweep(k), w_single(k), 1.0e-10_dp, 0.0_dp, &
+                             'swept w_max vs the single case of E1 = '//trim(moduli(k)))
+            if (allocated(err)) exit cases
+        end do cases
+        close (nul)
+        if (allocated(err)) return
+        call check(err, w_sweep(2) < 0.95_dp*w_sweep(1), 'E1 = 16 MPa settles '// &
+                   format_real(w_sweep(2))//' mm, E1 = 8 MPa '//format_real(w_sweep(1))// &
+                   ' mm: the cache gave both cases one ground')
+    end subroutine test_sweep_driver
+
+    !> SWEEP H1 4, 8 with SWEEP DEPTH 7: the base at 7 m lies inside the 8 m top layer, a
+    !! fault of cases 2 and 4 (H1 = 8) that only the case's model shows. The run is refused
+    !! (status 1, no output: README, exit 1 writes none), and the error names cases 2 and 4,
+    !! the SWEEP DEPTH card's line and columns (deck:13:21-30), and neither case 1 nor 3.
+    subroutine test_depth_error(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = 'build/test_layered_depth'
+        character(len=*), parameter :: log_path = 'build/test_layered_depth.log'
+        character(len=400) :: line
+        character(len=:), allocatable :: text
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: status, u, ios, nul
+        logical :: written
+        opt%figures = .false.
+        opt%estimates = .false.
+        call execute_command_line('rm -rf '//dir)
+        call parse_deck('ldepth.dat', raft_deck('8.0E3     ', [character(len=80) :: &
+            'SWEEP     E1        8.0E3     16.0E3', 'SWEEP     H1        4.0       8.0', &
+            'SWEEP     DEPTH     7.0']), deck, err)
+        if (allocated(err)) return
+        open (newunit=nul, file='/dev/null', action='write')
+        open (newunit=u, file=log_path, status='replace', action='readwrite')
+        call run_analysis(deck, dir, nul, u, status, opt)
+        close (nul)
+        rewind (u)
+        text = ''
+        read_log: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit read_log
+            text = text//trim(line)//new_line('a')
+        end do read_log
+        close (u, status='delete')
+        call check(err, status == EXIT_INPUT, 'status '//int_text(status)// &
+                   ', expected 1 (input error)')
+        if (allocated(err)) return
+        call check(err, index(text, 'case 2 (E1=8.0E3 H1=8.0 DEPTH=7.0)') > 0 .and. &
+                   index(text, 'case 4 (E1=16.0E3 H1=8.0 DEPTH=7.0)') > 0, &
+                   'cases 2 and 4 not named: '//text)
+        if (allocated(err)) return
+        call check(err, index(text, 'case 1 ') == 0 .and. index(text, 'case 3 ') == 0, &
+                   'a valid case was reported: '//text)
+        if (allocated(err)) return
+        call check(err, index(text, 'ldepth.dat:13:21-30: SWEEP DEPTH value v1 must be '// &
+                   'greater than the layers above the last, 8 deep, got 7') > 0, &
+                   'no deck:line:columns message: '//text)
+        if (allocated(err)) return
+        inquire (file=dir//'/ldepth_001.json', exist=written)
+        call check(err, .not. written, 'a case of a refused run wrote its files')
+    end subroutine test_depth_error
 end module test_layered_program

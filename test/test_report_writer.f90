@@ -12,7 +12,7 @@ module test_report_writer
     use file_system, only: make_folder, folder_entries
     use atomic_files, only: open_temporary, commit_file
     use analysis_driver, only: run_analysis, run_options_t
-    use figure_templates, only: panel_template, sweep_template
+    use figure_templates, only: panel_template, sweep_template, ground_template
     use blas_threads, only: set_blas_threads, blas_thread_count
     implicit none
     private
@@ -868,6 +868,8 @@ contains
         call compare_file('scripts/gnuplot/fricon_panels.gp', panel_template(), err)
         if (allocated(err)) return
         call compare_file('scripts/gnuplot/fricon_sweep.gp', sweep_template(), err)
+        if (allocated(err)) return
+        call compare_file('scripts/gnuplot/fricon_ground.gp', ground_template(), err)
     end subroutine test_templates
 
     subroutine compare_file(path, lines, err)

@@ -61,10 +61,11 @@ contains
     !! layer), nu, and the base's E (0 for a rigid base); layer 1 from e_f and nu_f.
     pure subroutine layer_profile(g, thickness, e_top, e_bottom, poisson, e_base)
         type(ground_t), intent(in) :: g                    !! a layered ground
-        real(dp), allocatable, intent(out) :: thickness(:) !! [L]
-        real(dp), allocatable, intent(out) :: e_top(:), e_bottom(:)  !! [F/L^2]
-        real(dp), allocatable, intent(out) :: poisson(:)
-        real(dp), intent(out) :: e_base                    !! [F/L^2]
+        real(dp), allocatable, intent(out) :: thickness(:) !! each layer's thickness [L]
+        real(dp), allocatable, intent(out) :: e_top(:)     !! E at each layer's top [F/L^2]
+        real(dp), allocatable, intent(out) :: e_bottom(:)  !! E at its bottom [F/L^2]
+        real(dp), allocatable, intent(out) :: poisson(:)   !! each layer's Poisson's ratio
+        real(dp), intent(out) :: e_base                    !! the base's E (0: rigid) [F/L^2]
         real(dp) :: scale
         integer :: n
         n = layer_count(g)

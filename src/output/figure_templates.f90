@@ -6,7 +6,7 @@ module figure_templates
 
     integer, parameter, public :: line_length = 400
 
-    public :: panel_template, sweep_template
+    public :: panel_template, sweep_template, ground_template
 
 contains
 
@@ -536,4 +536,164 @@ contains
             //" lw 2 lc rgb colour(i) dt dash(i) notitle, @zero_line"
         lines(134) = "unset multiplot"
     end function sweep_template
+
+    !> The lines of scripts/gnuplot/fricon_ground.gp.
+    pure function ground_template() result(lines)
+        character(len=line_length), allocatable :: lines(:)
+        allocate (lines(108))
+        lines(1) = "# fricon figure of a case on layered ground: the panels of f" &
+            //"ricon_panels.gp in two columns and"
+        lines(2) = "# the ground profile beside them, in a third. fricon writes " &
+            //"output/CASE.gp for such a case as"
+        lines(3) = "# the settings, then fricon_panels.gp with two changes taken" &
+            //" from this template: the lines up"
+        lines(4) = "# to the marker line below stand in place of its `set multip" &
+            //"lot layout` line, and the lines"
+        lines(5) = "# after the marker come just before its `unset multiplot`. (" &
+            //"A case on a homogeneous"
+        lines(6) = "# half-space, SOIL, gets fricon_panels.gp unchanged.)"
+        lines(7) = "# Settings beside those of fricon_panels.gp (written for lay" &
+            //"ered cases only):"
+        lines(8) = "#   n_layers and the arrays layer_z1, layer_z2 (depth of eac" &
+            //"h layer's top and bottom, the"
+        lines(9) = "#   plotted length unit), layer_e1, layer_e2 (Young's modulu" &
+            //"s at them, e_unit), layer_nu;"
+        lines(10) = "#   base_kind ('ROUGH', 'SMOOTH' or 'HALFSPACE'), base_e, ba" &
+            //"se_nu (of a HALFSPACE base);"
+        lines(11) = "#   lab_depth (depth axis label), z_unit and e_unit (written" &
+            //" after a thickness or a modulus,"
+        lines(12) = "#   e.g. ' m' and ' kPa'; NONDIM: ' a' and ' E_f'), struct_h" &
+            //" (the structure's thickness)."
+        lines(13) = "# The profile is a section: the structure on the ground's su" &
+            //"rface (x as in the panels, depth"
+        lines(14) = "# down), each layer shaded by its modulus (darker is stiffer" &
+            //"; a modulus varying with depth"
+        lines(15) = "# as a gradient) and labelled with its thickness, modulus an" &
+            //"d Poisson's ratio, the base below."
+        lines(16) = ""
+        lines(17) = "set terminal pngcairo size 2200,1100 font 'Sans,11' noenhanc" &
+            //"ed"
+        lines(18) = "set multiplot layout 3,3 columnsfirst title title.""\n"" fon" &
+            //"t 'Sans,14'"
+        lines(19) = "# ---- the profile panel (before the panels' unset multiplot" &
+            //") ----"
+        lines(20) = "unset object"
+        lines(21) = "unset arrow"
+        lines(22) = "unset label"
+        lines(23) = "unset key"
+        lines(24) = "unset y2label"
+        lines(25) = "unset y2tics"
+        lines(26) = "unset x2tics"
+        lines(27) = "set ytics mirror"
+        lines(28) = "set xtics mirror"
+        lines(29) = "set grid noxtics noytics"
+        lines(30) = "set lmargin at screen 0.712"
+        lines(31) = "set rmargin at screen 0.975"
+        lines(32) = "set tmargin at screen 0.885"
+        lines(33) = "set bmargin at screen 0.075"
+        lines(34) = "set offsets 0, 0, 0, 0"
+        lines(35) = "z_base = layer_z2[n_layers]"
+        lines(36) = "z_band = 0.12*z_base"
+        lines(37) = "x_span = x_hi - x_lo"
+        lines(38) = "g_lo = is_beam ? x_lo - 0.3*x_span : x_lo"
+        lines(39) = "g_hi = is_beam ? x_hi + 0.3*x_span : x_hi + 0.8*x_span"
+        lines(40) = "set xrange [g_lo:g_hi]"
+        lines(41) = "set yrange [z_base + z_band:-(struct_h + 0.06*z_base)]"
+        lines(42) = "set xlabel lab_x"
+        lines(43) = "set ylabel lab_depth"
+        lines(44) = "set title 'Ground profile (' . n_layers . (n_layers > 1 ? ' " &
+            //"layers' : ' layer') . ' over ' . \"
+        lines(45) = "    ((base_kind eq 'HALFSPACE') ? 'an elastic half-space)' :" &
+            //" 'a rigid base)')"
+        lines(46) = "# shade of a modulus: 0 for the softest of the profile, 1 fo" &
+            //"r the stiffest (log scale)"
+        lines(47) = "e_lo = layer_e1[1]"
+        lines(48) = "e_hi = layer_e1[1]"
+        lines(49) = "do for [k=1:n_layers] {"
+        lines(50) = "    e_lo = (layer_e1[k] < e_lo) ? layer_e1[k] : e_lo"
+        lines(51) = "    e_lo = (layer_e2[k] < e_lo) ? layer_e2[k] : e_lo"
+        lines(52) = "    e_hi = (layer_e1[k] > e_hi) ? layer_e1[k] : e_hi"
+        lines(53) = "    e_hi = (layer_e2[k] > e_hi) ? layer_e2[k] : e_hi"
+        lines(54) = "}"
+        lines(55) = "if (base_kind eq 'HALFSPACE') {"
+        lines(56) = "    e_lo = (base_e < e_lo) ? base_e : e_lo"
+        lines(57) = "    e_hi = (base_e > e_hi) ? base_e : e_hi"
+        lines(58) = "}"
+        lines(59) = "shade(e) = (e_hi > e_lo*1.0001) ? log(e/e_lo)/log(e_hi/e_lo)" &
+            //" : 0.5"
+        lines(60) = "# from a light sand colour (soft) to a slate blue (stiff)"
+        lines(61) = "mix(a, b, t) = int(a + (b - a)*t + 0.5)"
+        lines(62) = "soil_rgb(t) = mix(236, 96, t)*65536 + mix(214, 118, t)*256 +" &
+            //" mix(170, 150, t)"
+        lines(63) = "# a layer of constant modulus is one strip, a varying one 24" &
+            //" (each drawn over the top of the"
+        lines(64) = "# next, so that no seam shows between them)"
+        lines(65) = "do for [k=1:n_layers] {"
+        lines(66) = "    n_strips = (layer_e2[k] != layer_e1[k]) ? 24 : 1"
+        lines(67) = "    do for [j=1:n_strips] {"
+        lines(68) = "        za = layer_z1[k] + (j - 1)*(layer_z2[k] - layer_z1[k" &
+            //"])/n_strips"
+        lines(69) = "        zb = layer_z1[k] + ((j < n_strips) ? j + 0.5 : j)*(l" &
+            //"ayer_z2[k] - layer_z1[k])/n_strips"
+        lines(70) = "        ej = layer_e1[k] + (j - 0.5)*(layer_e2[k] - layer_e1" &
+            //"[k])/n_strips"
+        lines(71) = "        set object (1000 + 24*k + j) rect from graph 0, firs" &
+            //"t za to graph 1, first zb \"
+        lines(72) = "            behind fc rgb soil_rgb(shade(ej)) fs solid 1.0 n" &
+            //"oborder"
+        lines(73) = "    }"
+        lines(74) = "    if (k > 1) {"
+        lines(75) = "        set arrow (2000 + k) from graph 0, first layer_z1[k]" &
+            //" to graph 1, first layer_z1[k] \"
+        lines(76) = "            nohead front lw 1 lc rgb '#404040'"
+        lines(77) = "    }"
+        lines(78) = "    e_words = (layer_e2[k] != layer_e1[k]) ? \"
+        lines(79) = "        sprintf('E = %g to %g%s (linear)', layer_e1[k], laye" &
+            //"r_e2[k], e_unit) : \"
+        lines(80) = "        sprintf('E = %g%s', layer_e1[k], e_unit)"
+        lines(81) = "    set label (2000 + k) sprintf(""layer %d: h = %g%s\n%s, n" &
+            //"u = %g"", k, \"
+        lines(82) = "        layer_z2[k] - layer_z1[k], z_unit, e_words, layer_nu" &
+            //"[k]) \"
+        lines(83) = "        at graph 0.03, first 0.5*(layer_z1[k] + layer_z2[k])" &
+            //" left front \"
+        lines(84) = "        textcolor rgb ((shade(0.5*(layer_e1[k] + layer_e2[k]" &
+            //")) > 0.6) ? '#ffffff' : '#000000')"
+        lines(85) = "}"
+        lines(86) = "if (base_kind eq 'HALFSPACE') {"
+        lines(87) = "    set object 1999 rect from graph 0, first z_base to graph" &
+            //" 1, graph 0 behind \"
+        lines(88) = "        fc rgb soil_rgb(shade(base_e)) fs solid 1.0 noborder"
+        lines(89) = "    base_words = sprintf('elastic half-space below %g%s: E =" &
+            //" %g%s, nu = %g', z_base, z_unit, \"
+        lines(90) = "        base_e, e_unit, base_nu)"
+        lines(91) = "} else {"
+        lines(92) = "    set object 1999 rect from graph 0, first z_base to graph" &
+            //" 1, graph 0 behind \"
+        lines(93) = "        fc rgb '#5a5a5a' fs solid 1.0 noborder"
+        lines(94) = "    base_words = sprintf('rigid base at %g%s, %s', z_base, z" &
+            //"_unit, \"
+        lines(95) = "        (base_kind eq 'ROUGH') ? 'rough (bonded)' : 'smooth " &
+            //"(frictionless)')"
+        lines(96) = "}"
+        lines(97) = "set arrow 2000 from graph 0, first z_base to graph 1, first " &
+            //"z_base nohead front lw 2 lc rgb '#202020'"
+        lines(98) = "dark_base = (base_kind ne 'HALFSPACE') || (shade(base_e) > 0" &
+            //".5)"
+        lines(99) = "set label 2000 base_words at graph 0.03, first z_base + 0.5*" &
+            //"z_band left front \"
+        lines(100) = "    textcolor rgb (dark_base ? '#ffffff' : '#000000')"
+        lines(101) = "# the structure on the surface, drawn to the depth scale (it" &
+            //"s thickness h)"
+        lines(102) = "set object 1998 rect from first x_lo, first -struct_h to fir" &
+            //"st x_hi, first 0 front \"
+        lines(103) = "    fc rgb '#707070' fs solid 1.0 border lc rgb '#202020'"
+        lines(104) = "set label 1998 (is_beam ? 'beam' : 'plate') at first x_hi, f" &
+            //"irst -0.5*struct_h \"
+        lines(105) = "    left offset 0.6,0 front"
+        lines(106) = "# the ground surface beyond the structure"
+        lines(107) = "set arrow 1998 from graph 0, first 0 to graph 1, first 0 noh" &
+            //"ead front lw 1.5 lc rgb '#202020'"
+        lines(108) = "plot NaN notitle"
+    end function ground_template
 end module figure_templates

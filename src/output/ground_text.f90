@@ -4,23 +4,24 @@
 module ground_text
     use kinds, only: dp
     use deck_fields, only: format_real, int_text
-    use model, only: model_t, GROUND_LAYERED, GROUND_BASE_HALFSPACE, layer_count, &
+    use model, only: model_t, MODEL_BEAM, GROUND_LAYERED, GROUND_BASE_HALFSPACE, layer_count, &
                      layer_profile, ground_depth, base_name
     implicit none
     private
-    public :: layered, ground_model_words, write_layer_table, ground_csv_line, ground_json
+    public :: layered, ground_model_words, write_layer_table, ground_csv_line, ground_json, &
+              write_ground_figure_settings
 
 contains
 
     !> The case's ground is layered.
     pure logical function layered(m)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the case
         layered = m%ground%kind == GROUND_LAYERED .and. layer_count(m%ground) > 0
     end function layered
 
     !> 'layered elastic ground: 2 layers, 10 m deep, over a ROUGH (rigid, bonded) base'.
     pure function ground_model_words(m) result(text)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! a case on layered ground
         character(len=:), allocatable :: text
         text = 'layered elastic ground: '//int_text(layer_count(m%ground))//' layer'// &
             trim(merge('s', ' ', layer_count(m%ground) > 1))//', '// &
@@ -43,8 +44,8 @@ contains
 
     !> The report's table of the layers and the base (physical units of the case).
     subroutine write_layer_table(u, m)
-        integer, intent(in) :: u
-        type(model_t), intent(in) :: m
+        integer, intent(in) :: u         !! the open report
+        type(model_t), intent(in) :: m   !! a case on layered ground
         real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:)
         real(dp) :: e_base, z
         character(len=:), allocatable :: stress
@@ -70,7 +71,7 @@ contains
 
     !> '# ground: LAYER h=4 E=8000..8000 nu=0.45; ...; BASE ROUGH' (units of the case).
     pure function ground_csv_line(m) result(text)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! a case on layered ground
         character(len=:), allocatable :: text
         real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:)
         real(dp) :: e_base
@@ -89,7 +90,7 @@ contains
 
     !> The JSON member `"ground": {...},` (one line; units of the case).
     pure function ground_json(m) result(text)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! a case on layered ground
         character(len=:), allocatable :: text
         real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:)
         real(dp) :: e_base
@@ -101,6 +102,73 @@ contains
             format_real(e_base)//', "nu_base": '//format_real(m%ground%nu_base)
         text = text//'},'
     end function ground_json
+
+    !> The settings of the ground profile panel (scripts/gnuplot/fricon_ground.gp): each
+    !! layer's top and bottom depth, E at them and nu, the base, the structure's thickness,
+    !! labels and units. Lengths in the plotted unit of x (xs per deck length); moduli in the
+    !! deck's F/L^2 (named as the pressures are), or relative to E_f in a NONDIM deck.
+    subroutine write_ground_figure_settings(u, m, xs, e_unit)
+        integer, intent(in) :: u                   !! the open .gp file
+        type(model_t), intent(in) :: m             !! a case on layered ground
+        real(dp), intent(in) :: xs                 !! plotted length per deck length
+        character(len=*), intent(in) :: e_unit     !! the pressure unit, e.g. kPa
+        real(dp), allocatable :: h(:), e_top(:), e_bottom(:), nu(:), z(:)
+        real(dp) :: e_base, es
+        character(len=:), allocatable :: z_unit
+        integer :: n, j
+        call layer_profile(m%ground, h, e_top, e_bottom, nu, e_base)
+        n = size(h)
+        allocate (z(0:n))
+        z(0) = 0.0_dp
+        do j = 1, n
+            z(j) = z(j - 1) + h(j)*xs
+        end do
+        es = merge(1.0_dp/m%ground%e_f, 1.0_dp, m%nondim)
+        write (u, '(a)') '# ground profile from the surface down: depth of each layer''s top '// &
+            'and bottom, E there, nu; the base'
+        write (u, '(a)') 'n_layers = '//int_text(n)
+        call put_array(u, 'layer_z1', z(0:n - 1))
+        call put_array(u, 'layer_z2', z(1:n))
+        call put_array(u, 'layer_e1', es*e_top)
+        call put_array(u, 'layer_e2', es*e_bottom)
+        call put_array(u, 'layer_nu', nu)
+        write (u, '(a)') "base_kind = '"//base_name(m%ground)//"'"
+        write (u, '(a)') 'base_e = '//gp_number(es*e_base)
+        write (u, '(a)') 'base_nu = '//gp_number(m%ground%nu_base)
+        if (m%nondim) then
+            z_unit = trim(merge('l', 'a', m%structure%kind == MODEL_BEAM))
+            write (u, '(a)') "lab_depth = 'depth z/"//z_unit//"'"
+            write (u, '(a)') "z_unit = ' "//z_unit//"'"
+            write (u, '(a)') "e_unit = ' E_f'"
+        else
+            write (u, '(a)') "lab_depth = 'depth z ["//trim(m%units%length)//"]'"
+            write (u, '(a)') "z_unit = ' "//trim(m%units%length)//"'"
+            write (u, '(a)') "e_unit = ' "//trim(e_unit)//"'"
+        end if
+        write (u, '(a)') 'struct_h = '//gp_number(m%structure%h*xs)
+    end subroutine write_ground_figure_settings
+
+    !> `array NAME[n] = [x1, ..., xn]` in a gnuplot settings block.
+    subroutine put_array(u, name, x)
+        integer, intent(in) :: u
+        character(len=*), intent(in) :: name
+        real(dp), intent(in) :: x(:)
+        integer :: j
+        write (u, '(a)', advance='no') 'array '//name//'['//int_text(size(x))//'] = ['
+        do j = 1, size(x) - 1
+            write (u, '(a)', advance='no') gp_number(x(j))//', '
+        end do
+        write (u, '(a)') gp_number(x(size(x)))//']'
+    end subroutine put_array
+
+    !> A number for a gnuplot script (full precision).
+    pure function gp_number(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        write (buf, '(es22.14e3)') x
+        text = trim(adjustl(buf))
+    end function gp_number
 
     !> A column heading, right-justified in 16 characters.
     pure function heading(text) result(col)

@@ -22,12 +22,13 @@ module report_writer
     use case_scales, only: units_t, case_units
     use station_results, only: station_table_t, contact_extent, FLAG_TENSION, FLAG_OVERLAP
     use design_summary, only: summary_t, interval_t
-    use figure_templates, only: panel_template, sweep_template
+    use figure_templates, only: panel_template, sweep_template, ground_template, &
+                                line_length
     use summary_table, only: entry_t
     use adaptive_solve, only: adaptation_t
     use method_notes, only: simplification_text, error_method_text, adaptation_lines
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
-                           ground_json
+                           ground_json, write_ground_figure_settings
     implicit none
     private
 
@@ -430,7 +431,7 @@ contains
         write (u, '(a)') "png = exists(""png_override"") ? png_override : gp_dir.'"//name//".png'"
         write (u, '(a)') "title = '"//title//"'"
         call write_figure_settings(u, m, s%mean_pressure)
-        call write_lines(u, panel_template())
+        call write_panels(u, m)
         call commit_file(path, u, err)
     end subroutine write_plot_script
 
@@ -559,7 +560,46 @@ contains
         call put_num(u, 'edge_d', m%structure%h*xs)
         call put_num(u, 'friction', m%interface%f)
         call write_figure_loads(u, m%loads, xs)
+        if (layered(m)) call write_ground_figure_settings(u, m, xs, &
+                                                          trim(case_units_pressure(m)))
     end subroutine write_figure_settings
+
+    !> The pressure unit of the case (kPa for kN and m).
+    function case_units_pressure(m) result(unit)
+        type(model_t), intent(in) :: m    !! the case
+        character(len=:), allocatable :: unit
+        type(units_t) :: un
+        un = case_units(m)
+        unit = trim(un%pressure)
+    end function case_units_pressure
+
+    !> The panel template; for a case on layered ground with the ground template's two parts
+    !! (scripts/gnuplot/fricon_ground.gp): its layout in place of the panels' `set multiplot
+    !! layout` line, its profile panel before their `unset multiplot`.
+    subroutine write_panels(u, m)
+        integer, intent(in) :: u                   !! the open .gp file
+        type(model_t), intent(in) :: m             !! the case
+        character(len=line_length), allocatable :: panels(:), ground(:)
+        integer :: i, mark
+        panels = panel_template()
+        if (.not. layered(m)) then
+            call write_lines(u, panels)
+            return
+        end if
+        ground = ground_template()
+        mark = size(ground) + 1
+        do i = size(ground), 1, -1
+            if (index(ground(i), '# ---- the profile panel') == 1) mark = i
+        end do
+        do i = 1, size(panels)
+            if (index(panels(i), 'set multiplot layout') == 1) then
+                call write_lines(u, ground(1:mark - 1))
+                cycle
+            end if
+            if (trim(panels(i)) == 'unset multiplot') call write_lines(u, ground(mark:))
+            write (u, '(a)') trim(panels(i))
+        end do
+    end subroutine write_panels
 
     !> The line-load unit of a physical deck (force/length).
     function case_line_load(m) result(unit)

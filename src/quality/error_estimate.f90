@@ -174,9 +174,11 @@ contains
     !! most formal_order; each estimate is at least its floor (the contact extents':
     !! extent_floors); the lift-off lengths get their extents' (liftoff_estimates).
     pure subroutine refined_estimate(m, e, ec, ef, floors, kinks_on_nodes, singular_edge)
-        type(model_t), intent(in) :: m
-        type(entry_t), intent(inout) :: e(:)
-        type(entry_t), intent(in) :: ec(:), ef(:)
+        type(model_t), intent(in) :: m             !! the case (formal orders by model kind)
+        type(entry_t), intent(inout) :: e(:)       !! key results on N_e elements; their
+                                                   !! estimates and orders are set
+        type(entry_t), intent(in) :: ec(:)         !! the same keys on the nested coarser mesh
+        type(entry_t), intent(in) :: ef(:)         !! the same keys on the mesh cut in two
         real(dp), intent(in) :: floors(:)          !! least estimate per entry (extent_floors)
         logical, intent(in) :: kinks_on_nodes      !! see formal_order
         logical, intent(in) :: singular_edge       !! see formal_order

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Layered ground benchmark (the performance targets of the layered ground): first the time to
+# build T (example/bench_layered: output/bench/layered.md, .dat, .gp and the figure
+# layered.png), then whole cases solved by the release build of fricon, timed as processes
+# (wall clock, --no-figures, least of 3 runs), appended to output/bench/layered.md:
+#   - bench/layered_plate.dat, a frictional raft on three layers over rock, at N_e = 200
+#     against the same deck on the homogeneous half-space of the top layer (SOIL E1 nu1 in
+#     place of the LAYER and BASE cards): target at most 3 times the homogeneous time;
+#   - the same at N_e = 1000 (MESH 1000): target under 2 s;
+#   - bench/layered_sweep_1000.dat, 1000 cases over the layers' moduli and thicknesses (no
+#     two share T), the whole process with -j 2: target under 60 s on 2 cores.
+# Single cases run with one thread (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1), with and
+# without the error estimates (which re-solve each case on 2 N_e and N_e/2). Run from the
+# project root:  bash scripts/bench_layered.sh   (about 2 minutes on 2 shared cores)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# shellcheck source=scripts/bench_binaries.sh
+source scripts/bench_binaries.sh
+release_executable bench_layered . || exit 2
+bin=$executable
+out=output/bench
+work=$(mktemp -d "${TMPDIR:-/tmp}/bench_layered.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$out"
+# the commit measured (taken before the benchmark rewrites output/bench)
+commit="$(git rev-parse --short HEAD)$([ -n "$(git status --porcelain --untracked-files=no)" ] && echo ' + uncommitted changes')"
+
+OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 fpm run --profile release --example bench_layered \
+    >/dev/null
+gnuplot "$out/layered.gp"
+
+# the decks of the single cases: layered and homogeneous, N_e = 200 and 1000
+homogeneous() { sed -e 's/^LAYER     4.0       8.0E3     0.45 *$/SOIL      8.0E3     0.45/' \
+    -e '/^LAYER/d' -e '/^BASE/d' "$1"; }
+mesh1000() { sed -e 's/^MESH      200$/MESH      1000/' "$1"; }
+cp bench/layered_plate.dat "$work/layered_200.dat"
+homogeneous bench/layered_plate.dat >"$work/homogeneous_200.dat"
+mesh1000 "$work/layered_200.dat" >"$work/layered_1000.dat"
+mesh1000 "$work/homogeneous_200.dat" >"$work/homogeneous_1000.dat"
+for f in homogeneous_200 homogeneous_1000 layered_1000; do
+    cmp -s "$work/$f.dat" "$work/layered_200.dat" && { echo "bench_layered: $f unchanged" >&2; exit 2; }
+done
+
+# wall SECONDS of one run: wall ARGS...
+wall() {
+    local s e
+    s=$(date +%s.%N)
+    "$@" >/dev/null 2>&1 || { echo "bench_layered: failed: $*" >&2; exit 2; }
+    e=$(date +%s.%N)
+    awk -v a="$s" -v b="$e" 'BEGIN { printf "%.3f", b - a }'
+}
+# least of 3 single-thread runs: best DECK [OPTION...]
+best() {
+    local deck=$1 t m=''
+    shift
+    for _ in 1 2 3; do
+        rm -rf "$work/out"
+        t=$(OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 wall "$bin" --no-figures -q "$@" \
+            -o "$work/out" "$deck")
+        m=$(awk -v a="$t" -v b="$m" 'BEGIN { print (b == "" || a < b) ? a : b }')
+    done
+    echo "$m"
+}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
+
+declare -A t
+for est in yes no; do
+    opt=()
+    [ "$est" = no ] && opt=(--no-estimates)
+    for f in homogeneous_200 layered_200 homogeneous_1000 layered_1000; do
+        t[$f,$est]=$(best "$work/$f.dat" "${opt[@]}")
+    done
+done
+rm -rf "$work/sweep"
+sweep_est=$(wall "$bin" --no-figures -q -j 2 -o "$work/sweep" bench/layered_sweep_1000.dat)
+rows=$(($(wc -l <"$work/sweep/layered_sweep_1000_summary.csv") - 1))
+rm -rf "$work/sweep"
+sweep_no=$(wall "$bin" --no-figures -q --no-estimates -j 2 -o "$work/sweep" \
+    bench/layered_sweep_1000.dat)
+
+{
+    echo
+    echo "## Whole cases (scripts/bench_layered.sh)"
+    echo
+    echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'),"
+    echo "$(free -g | awk '/Mem:/ { print $2 }') GB, $(uname -sr), shared with other jobs; commit"
+    echo "$commit, $(date -u +%Y-%m-%d). Release build; wall seconds of the whole"
+    echo "process (deck read, solve, every output but the PNG: --no-figures), least of 3 runs,"
+    echo "one thread (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1). The homogeneous case is"
+    echo "bench/layered_plate.dat with SOIL 8000 kPa 0.45 (the top layer) in place of its three"
+    echo "layers (h 4, 6, 10 m; E 8, 20, 60 MPa; nu 0.45, 0.35, 0.3) on a ROUGH base."
+    echo
+    echo "| case | N_e | estimates | homogeneous s | layered s | ratio | target |"
+    echo "|---|---:|---|---:|---:|---:|---|"
+    for est in yes no; do
+        for ne in 200 1000; do
+            h=${t[homogeneous_$ne,$est]}
+            l=${t[layered_$ne,$est]}
+            if [ "$ne" = 200 ]; then
+                target="ratio <= 3: $(awk -v r="$(ratio "$l" "$h")" 'BEGIN { print (r <= 3) ? "met" : "MISSED" }')"
+            else
+                target="layered < 2 s: $(awk -v a="$l" 'BEGIN { print (a < 2) ? "met" : "MISSED" }')"
+            fi
+            echo "| frictional raft, 3 layers on rock | $ne | $est | $h | $l | $(ratio "$l" "$h") | $target |"
+        done
+    done
+    echo
+    echo "With estimates a case is solved three times: on its mesh, on 2 N_e and on N_e/2 (the"
+    echo "estimate's re-solves, --no-estimates drops them); at N_e = 1000 one of them has 2000"
+    echo "elements (T of 4002 unknowns); the rows with and without estimates differ by their time,"
+    echo "for the homogeneous half-space as well. The 2 s target holds for the case's one"
+    echo "solve; with the estimates' two re-solves it is missed when the row above says MISSED."
+    echo
+    echo "Sweep bench/layered_sweep_1000.dat: $rows cases (5 E1 x 5 H1 x 5 E2 x 2 H2 x 2 E3 x"
+    echo "2 DEPTH, N_e = 40, every case its own T), the whole process with -j 2 --no-figures:"
+    echo
+    echo "| estimates | wall s | per case ms | target |"
+    echo "|---|---:|---:|---|"
+    for est in yes no; do
+        s=$sweep_est
+        [ "$est" = no ] && s=$sweep_no
+        echo "| $est | $s | $(awk -v a="$s" -v n="$rows" 'BEGIN { printf "%.1f", 1000 * a / n }') | < 60 s: $(awk -v a="$s" 'BEGIN { print (a < 60) ? "met" : "MISSED" }') |"
+    done
+} >>"$out/layered.md"
+sed -n '/^## Whole cases/,$p' "$out/layered.md"
