@@ -13,7 +13,7 @@ contains
     !> The lines of scripts/gnuplot/fricon_panels.gp.
     pure function panel_template() result(lines)
         character(len=line_length), allocatable :: lines(:)
-        allocate (lines(226))
+        allocate (lines(233))
         lines(1) = "# fricon figure of one case: six panels from the station fil" &
             //"e of the case."
         lines(2) = "# fricon writes output/CASE.gp: the settings below, then thi" &
@@ -203,142 +203,152 @@ contains
         lines(128) = "set ylabel lab_p"
         lines(129) = "if (line_width > 0) {"
         lines(130) = "    set y2label lab_line"
-        lines(131) = "    set y2tics"
-        lines(132) = "    set ytics nomirror"
-        lines(133) = "    set link y2 via y*line_width inverse y/line_width"
-        lines(134) = "}"
-        lines(135) = "# the true peaks are written in the legend, where no curve c" &
+        lines(131) = "    # gnuplot 5.4 draws no automatic tics on a linked axis w" &
+            //"hose primary range is below 1"
+        lines(132) = "    # (a pressure in MPa): a step of 1, 2 or 5 times a power" &
+            //" of ten, about 5 tics"
+        lines(133) = "    y2_top = line_width*((p_top < p_clip) ? p_top : p_clip)"
+        lines(134) = "    y2_raw = (y2_top > 0) ? y2_top/5.0 : 1.0"
+        lines(135) = "    y2_mag = 10.0**floor(log10(y2_raw))"
+        lines(136) = "    y2_step = y2_mag*((y2_raw/y2_mag < 1.5) ? 1 : (y2_raw/y2" &
+            //"_mag < 3.5) ? 2 : \"
+        lines(137) = "                      (y2_raw/y2_mag < 7.5) ? 5 : 10)"
+        lines(138) = "    set y2tics y2_step"
+        lines(139) = "    set ytics nomirror"
+        lines(140) = "    set link y2 via y*line_width inverse y/line_width"
+        lines(141) = "}"
+        lines(142) = "# the true peaks are written in the legend, where no curve c" &
             //"an cross them (beside their"
-        lines(136) = "# markers a steep curve did, and an opaque box hid the curve" &
+        lines(143) = "# markers a steep curve did, and an opaque box hid the curve" &
             //")"
-        lines(137) = "p_peaks = ''"
-        lines(138) = "if (p_cut) {"
-        lines(139) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
+        lines(144) = "p_peaks = ''"
+        lines(145) = "if (p_cut) {"
+        lines(146) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
             //" 1/0 : column(c_p)) nooutput"
-        lines(140) = "    p_right = STATS_max_y"
-        lines(141) = "    p_left = 0"
-        lines(142) = "    if (is_beam) {"
-        lines(143) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
+        lines(147) = "    p_right = STATS_max_y"
+        lines(148) = "    p_left = 0"
+        lines(149) = "    if (is_beam) {"
+        lines(150) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
             //"d) ? column(c_p) : 1/0) nooutput"
-        lines(144) = "        p_left = STATS_max_y"
-        lines(145) = "    }"
-        lines(146) = "    # only the ends that are clipped: a beam loaded at one e" &
+        lines(151) = "        p_left = STATS_max_y"
+        lines(152) = "    }"
+        lines(153) = "    # only the ends that are clipped: a beam loaded at one e" &
             //"nd has one spike"
-        lines(147) = "    if (p_left > p_clip*1.0001 && p_right > p_clip*1.0001) {"
-        lines(148) = "        p_peaks = sprintf('%.4g (left), %.4g %s (right)', p_" &
+        lines(154) = "    if (p_left > p_clip*1.0001 && p_right > p_clip*1.0001) {"
+        lines(155) = "        p_peaks = sprintf('%.4g (left), %.4g %s (right)', p_" &
             //"left, p_right, p_unit)"
-        lines(149) = "    } else {"
-        lines(150) = "        p_peaks = sprintf('%.4g %s', (p_left > p_right) ? p_" &
+        lines(156) = "    } else {"
+        lines(157) = "        p_peaks = sprintf('%.4g %s', (p_left > p_right) ? p_" &
             //"left : p_right, p_unit)"
-        lines(151) = "    }"
-        lines(152) = "}"
-        lines(153) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
+        lines(158) = "    }"
+        lines(159) = "}"
+        lines(160) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
             //"p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '" &
             //"#c00000' t 'clipped, peak '.p_peaks"" : ""NaN notitle"""
-        lines(154) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
+        lines(161) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \"
-        lines(155) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
-        lines(156) = "unset y2label"
-        lines(157) = "unset y2tics"
-        lines(158) = "unset link y2"
-        lines(159) = "set ytics mirror"
-        lines(160) = ""
-        lines(161) = "# 3 shear traction with the friction limit +-f p. The limit " &
+        lines(162) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
+        lines(163) = "unset y2label"
+        lines(164) = "unset y2tics"
+        lines(165) = "unset link y2"
+        lines(166) = "set ytics mirror"
+        lines(167) = ""
+        lines(168) = "# 3 shear traction with the friction limit +-f p. The limit " &
             //"is drawn unclipped in a y range"
-        lines(162) = "# fixed at 1.15 times the clip level: where it leaves the fr" &
+        lines(169) = "# fixed at 1.15 times the clip level: where it leaves the fr" &
             //"ame it is seen to lie above the"
-        lines(163) = "# clipped markers (both clipped to one level, a sticking sta" &
+        lines(170) = "# clipped markers (both clipped to one level, a sticking sta" &
             //"tion looked as if on the limit)."
-        lines(164) = "# The true peak is written in the legend; slipping stations " &
+        lines(171) = "# The true peak is written in the legend; slipping stations " &
             //"are marked over clipped ones."
-        lines(165) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
+        lines(172) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
             //"ed at %.4g %s)', s_clip, p_unit) : 'Shear traction on the so" &
             //"il'"
-        lines(166) = "set ylabel lab_s"
-        lines(167) = "s_peak = 0"
-        lines(168) = "if (s_cut) {"
-        lines(169) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
-        lines(170) = "    s_peak = STATS_max"
-        lines(171) = "}"
-        lines(172) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
+        lines(173) = "set ylabel lab_s"
+        lines(174) = "s_peak = 0"
+        lines(175) = "if (s_cut) {"
+        lines(176) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
+        lines(177) = "    s_peak = STATS_max"
+        lines(178) = "}"
+        lines(179) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
             //"ooutput"
-        lines(173) = "n_slip = STATS_sum"
-        lines(174) = "# (after the stats: stats keeps to the axis ranges)"
-        lines(175) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
-        lines(176) = "set yrange [-s_span:s_span]"
-        lines(177) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
+        lines(180) = "n_slip = STATS_sum"
+        lines(181) = "# (after the stats: stats keeps to the axis ranges)"
+        lines(182) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
+        lines(183) = "set yrange [-s_span:s_span]"
+        lines(184) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
             //"lumn(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps" &
             //" 1.1 lc rgb '#ff7f0e' t 'slipping station'"" : ""NaN notitle" &
             //""""
-        lines(178) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
+        lines(185) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
             //"n(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt" &
             //" 9 ps 1.8 lc rgb '#c00000' t sprintf('clipped, peak %.4g %s'" &
             //", s_peak, p_unit)"" : ""NaN notitle"""
-        lines(179) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
+        lines(186) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
             //"ction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' t sprint" &
             //"f('+-f %s (f = %g)', key_p, friction), data skip skip_rows u" &
             //" c_x:(-friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050" &
             //"' notitle"" : ""NaN notitle"""
-        lines(180) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
+        lines(187) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \"
-        lines(181) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
+        lines(188) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
             //"_zone, @dummy_load"
-        lines(182) = "set yrange [*:*]"
-        lines(183) = ""
-        lines(184) = "# 4 bending moments"
-        lines(185) = "set title 'Bending moment (> 0 hogging, top in tension)'"
-        lines(186) = "set ylabel lab_m"
-        lines(187) = "if (c_mt > 0) {"
-        lines(188) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(189) = "set yrange [*:*]"
+        lines(190) = ""
+        lines(191) = "# 4 bending moments"
+        lines(192) = "set title 'Bending moment (> 0 hogging, top in tension)'"
+        lines(193) = "set ylabel lab_m"
+        lines(194) = "if (c_mt > 0) {"
+        lines(195) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(189) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
+        lines(196) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
             //" dt 2 lc rgb '#8c564b' t key_mt, \"
-        lines(190) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(191) = "} else {"
-        lines(192) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(197) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(198) = "} else {"
+        lines(199) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(193) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(194) = "}"
-        lines(195) = ""
-        lines(196) = "# 5 shear force"
-        lines(197) = "set title 'Shear force'"
-        lines(198) = "set ylabel lab_q"
-        lines(199) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
+        lines(200) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(201) = "}"
+        lines(202) = ""
+        lines(203) = "# 5 shear force"
+        lines(204) = "set title 'Shear force'"
+        lines(205) = "set ylabel lab_q"
+        lines(206) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
             //" rgb '#17becf' t key_q, \"
-        lines(200) = "     @zero_line, @dummy_zone, @dummy_load"
-        lines(201) = ""
-        lines(202) = "# 6 slip (left axis) and membrane / axial force (right axis)"
-        lines(203) = "set title 'Interface slip and axial force'"
-        lines(204) = "set ylabel lab_slip"
-        lines(205) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
-        lines(206) = "slip_span = 0.01*STATS_max"
-        lines(207) = "set yrange [*<-slip_span:slip_span<*]"
-        lines(208) = "set y2label lab_n"
-        lines(209) = "set y2tics"
-        lines(210) = "set ytics nomirror"
-        lines(211) = "set autoscale y2"
-        lines(212) = "# a structure with no membrane force (f = 0: no shear tracti" &
+        lines(207) = "     @zero_line, @dummy_zone, @dummy_load"
+        lines(208) = ""
+        lines(209) = "# 6 slip (left axis) and membrane / axial force (right axis)"
+        lines(210) = "set title 'Interface slip and axial force'"
+        lines(211) = "set ylabel lab_slip"
+        lines(212) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
+        lines(213) = "slip_span = 0.01*STATS_max"
+        lines(214) = "set yrange [*<-slip_span:slip_span<*]"
+        lines(215) = "set y2label lab_n"
+        lines(216) = "set y2tics autofreq"
+        lines(217) = "set ytics nomirror"
+        lines(218) = "set autoscale y2"
+        lines(219) = "# a structure with no membrane force (f = 0: no shear tracti" &
             //"on) gets a fixed axis, not"
-        lines(213) = "# gnuplot's ""empty y2 range"" warning"
-        lines(214) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
+        lines(220) = "# gnuplot's ""empty y2 range"" warning"
+        lines(221) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
             //"abs(column(c_nt)) : 0)) nooutput"
-        lines(215) = "if (STATS_max == 0) { set y2range [-1:1] }"
-        lines(216) = "if (c_nt > 0) {"
-        lines(217) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(222) = "if (STATS_max == 0) { set y2range [-1:1] }"
+        lines(223) = "if (c_nt > 0) {"
+        lines(224) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(218) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(225) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(219) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
+        lines(226) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
             //"t 2 lc rgb '#7f1f3f' t key_nt, \"
-        lines(220) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(221) = "} else {"
-        lines(222) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(227) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(228) = "} else {"
+        lines(229) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(223) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(230) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(224) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(225) = "}"
-        lines(226) = "unset multiplot"
+        lines(231) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(232) = "}"
+        lines(233) = "unset multiplot"
     end function panel_template
 
     !> The lines of scripts/gnuplot/fricon_sweep.gp.

@@ -545,7 +545,8 @@ contains
         call write_figure_labels(u, cols, m%nondim, beam)
         if (beam .and. phys) then
             write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
-            call put_num(u, 'line_width', m%structure%b)
+            ! line load [F/L] = b [L] times the pressure in F/L^2 (display / its factor)
+            call put_num(u, 'line_width', m%structure%b/pressure_scale(m, cols))
             call put_text(u, 'lab_line', 'line load b p_z ['//trim(case_line_load(m))//']')
         else
             call put_num(u, 'line_width', 0.0_dp)
