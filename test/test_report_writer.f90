@@ -44,7 +44,8 @@ contains
                  new_unittest('positions_fit_their_columns', test_position_formats), &
                  new_unittest('tension_flags_warned', test_tension_warning), &
                  new_unittest('file_cut_at_line_end_not_committed', test_cut_at_line_end), &
-                 new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case)]
+                 new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case), &
+                 new_unittest('moments_about_mid_plane_and_base', test_moment_conventions)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -628,6 +629,106 @@ contains
         ! trapezoid on 16 elements: O(h^2) error, a few per cent near a lift-off edge
         call check_close(err, total, 1.0_dp, 5.0e-2_dp, 0.0_dp, 'int Sigma_z 2t dt from .dat')
     end subroutine test_data_file
+
+    !> The stated conventions, by statics. Beam h = 0.8 m: a POINT load F_z = 1000 kN with
+    !! F_x = 100 kN (top face) at x = 0 and a MOMENT M0 = 500 kN.m at x = 2.5 m. Moment of
+    !! the loads about x = 0: on the mid-plane M0 + F_x h/2 = 540 kN.m, on the base (bottom
+    !! face) M0 + F_x h = 580 kN.m; the reactions balance both. Across x = 0 the bending
+    !! moment drops by F_x h/2 = 40 kN.m (the top-face load acts h/2 above the mid-plane),
+    !! across x = 2.5 m by M0 = 500 kN.m; a positive MOMENT turns the beam clockwise as drawn
+    !! (x right, w down), so w(+l/2) > w(-l/2).
+    subroutine test_moment_conventions(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status
+        real(dp) :: base(2), jump(2), w_ends(2)
+        character(len=80), allocatable :: lines(:)
+        call clean_dir()
+        lines = beam_deck([character(len=10) ::])
+        lines(7) = card('LOAD', ['POINT ', '1000.0', '100.0 ', '0.0   '])
+        lines = [lines(1:7), card('LOAD', ['MOMENT', '500.0 ', '      ', '2.5   ']), lines(8:)]
+        call parse_deck('rm.dat', lines, deck, err)
+        if (allocated(err)) return
+        deck%stem = 'rm'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_OK, 'the moment test case did not solve')
+        if (allocated(err)) return
+        call report_numbers(dir//'/rm.txt', 'the same about x = 0 on the base z = h/2', base, err)
+        if (allocated(err)) return
+        call check_close(err, base(2), 580.0_dp, 1.0e-12_dp, 0.0_dp, 'load moment about the base')
+        if (allocated(err)) return
+        call check_close(err, base(1), 580.0_dp, 1.0e-8_dp, 0.0_dp, 'reaction moment, base')
+        if (allocated(err)) return
+        call moment_jumps(dir//'/rm.csv', [0.0_dp, 2.5_dp], jump, w_ends, err)
+        if (allocated(err)) return
+        call check_close(err, jump(1), -40.0_dp, 1.0e-4_dp, 0.0_dp, 'M jump at the F_x load')
+        if (allocated(err)) return
+        call check_close(err, jump(2), -500.0_dp, 1.0e-4_dp, 0.0_dp, 'M jump at the MOMENT')
+        if (allocated(err)) return
+        call check(err, w_ends(2) > w_ends(1), 'a positive MOMENT did not press the +x end down')
+    end subroutine test_moment_conventions
+
+    !> The two numbers after `label` on its line of a report.
+    subroutine report_numbers(path, label, values, err)
+        character(len=*), intent(in) :: path, label
+        real(dp), intent(out) :: values(2)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=400) :: line
+        integer :: u, ios, k
+        values = 0.0_dp
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'cannot open '//path)
+        if (allocated(err)) return
+        k = 0
+        find: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit find
+            k = index(line, label)
+            if (k > 0) exit find
+        end do find
+        close (u)
+        call check(err, k > 0, 'no line "'//label//'" in '//path)
+        if (allocated(err)) return
+        read (line(k + len(label):), *, iostat=ios) values
+        call check(err, ios == 0, 'unreadable numbers: '//trim(line))
+    end subroutine report_numbers
+
+    !> From a physical beam CSV: M after minus M before each position in at (each a station
+    !! listed twice, before and after the jump), and w at both ends.
+    subroutine moment_jumps(path, at, jump, w_ends, err)
+        character(len=*), intent(in) :: path
+        real(dp), intent(in) :: at(:)
+        real(dp), intent(out) :: jump(size(at)), w_ends(2)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=600) :: line
+        real(dp) :: row(13)
+        integer :: u, ios, k, seen(size(at))
+        integer, parameter :: c_x = 1, c_w = 3, c_m = 13   ! x, w, M in the beam CSV
+        jump = 0.0_dp
+        w_ends = 0.0_dp
+        seen = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'cannot open '//path)
+        if (allocated(err)) return
+        read (u, '(a)', iostat=ios) line
+        call check(err, index(line, 'M [kN.m]') > 0 .and. index(line, 'w [mm]') > 0, &
+                   'CSV header: '//trim(line))
+        if (allocated(err)) return
+        rows: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit rows
+            read (line, *) row
+            do k = 1, size(at)
+                if (abs(row(c_x) - at(k)) > 1.0e-9_dp) cycle
+                seen(k) = seen(k) + 1
+                jump(k) = jump(k) + merge(-row(c_m), row(c_m), seen(k) == 1)
+            end do
+            w_ends(2) = row(c_w)
+            if (row(c_x) <= -5.0_dp + 1.0e-9_dp) w_ends(1) = row(c_w)
+        end do rows
+        close (u)
+        call check(err, all(seen == 2), 'each position must be listed twice')
+    end subroutine moment_jumps
 
     !> run_analysis validates every case before it solves any: a sweep whose second case puts
     !! its load off the beam (L = 6 m with a POINT load at x = 4 m, |x| <= 3 m) gives status 1

@@ -881,6 +881,24 @@ contains
                 ', max inner ', m%solver%max_inner
     end subroutine write_groups
 
+    !> The moment balance of a beam about x = 0, on the mid-plane (the check) and on the
+    !! bottom face (base statics): the base moment is the mid-plane one plus (h/2) times the
+    !! horizontal force, of the loads (on the top face) and of the reactions alike.
+    subroutine write_moment_checks(u, m, sol, v)
+        integer, intent(in) :: u                !! the open report
+        type(model_t), intent(in) :: m          !! the case
+        type(solution_t), intent(in) :: sol     !! reactions and loads
+        real(dp), intent(in) :: v               !! total vertical load [F]
+        real(dp) :: half_h
+        half_h = 0.5_dp*m%structure%h
+        write (u, '(3x,a,2es16.8,a,es9.2,a)') 'moment:     reaction, load ', sol%reaction(3), &
+            sol%applied(3), '  rel.diff ', rel_diff(sol%reaction(3), sol%applied(3), &
+            v*m%structure%length), '  (about x = 0 on the mid-plane z = 0)'
+        write (u, '(3x,a,2es16.8,a)') '            the same about x = 0 on the base z = h/2', &
+            sol%reaction(3) + half_h*sol%reaction(2), sol%applied(3) + half_h*sol%applied(2), &
+            '  (mid-plane + (h/2) H: base statics)'
+    end subroutine write_moment_checks
+
     subroutine write_conventions(u, m)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
@@ -896,6 +914,12 @@ contains
         if (m%structure%kind == MODEL_BEAM) then
             write (u, '(a)') '   BEAM: sigma are line loads (force/length) over the width b; '// &
                 'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh (w''-psi).'
+            write (u, '(a)') '   M is the moment about the mid-plane. A MOMENT load M0 > 0 turns '// &
+                'the beam clockwise as the figure draws it'
+            write (u, '(a)') '   (x to the right, w down: the +x side settles more); M drops by '// &
+                'M0 across it. A horizontal load F_x'
+            write (u, '(a)') '   on the top face acts h/2 above the mid-plane: M drops by '// &
+                'F_x h/2 across it (at once at a POINT load).'
             write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F l^2), '// &
                 'Sigma = l sigma/F, N/F, M/(F l), Q/F.'
         else
@@ -1145,9 +1169,7 @@ contains
             sol%applied(1), '  rel.diff ', rel_diff(sol%reaction(1), sol%applied(1), v)
         write (u, '(3x,a,2es16.8,a,es9.2)') 'horizontal: reaction, load ', sol%reaction(2), &
             sol%applied(2), '  rel.diff ', rel_diff(sol%reaction(2), sol%applied(2), v)
-        if (m%structure%kind == MODEL_BEAM) write (u, '(3x,a,2es16.8,a,es9.2)') &
-            'moment:     reaction, load ', sol%reaction(3), sol%applied(3), '  rel.diff ', &
-            rel_diff(sol%reaction(3), sol%applied(3), v*m%structure%length)
+        if (m%structure%kind == MODEL_BEAM) call write_moment_checks(u, m, sol, v)
         write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z gap|/max W at lift-off '// &
             'stations ', tab%complementarity, '  (penalty: O(eta_bar))'
         write (u, '(3x,a,es10.2,a)') 'compatibility max |pointwise gap|/max w at contact '// &
