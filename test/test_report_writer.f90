@@ -28,6 +28,7 @@ contains
                  new_unittest('input_error_writes_nothing', test_input_error), &
                  new_unittest('failed_case_report_only', test_failed_case), &
                  new_unittest('sweep_summary', test_sweep), &
+                 new_unittest('sweep_ready_to_plot', test_sweep_ready_to_plot), &
                  new_unittest('sweep_first_case_fails', test_sweep_first_fails), &
                  new_unittest('embedded_templates_match', test_templates), &
                  new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep), &
@@ -819,6 +820,132 @@ contains
         close (u)
         call check(err, n == 5, 'summary should have a header and 4 rows')
     end subroutine test_sweep
+
+    !> A sweep ready to plot (SWEEP F 0.0 0.5 x SWEEP RHO 0.01 1.0, last fastest: case 2 is
+    !! F = 0.0, RHO = 1.0, the deck's values): the summary has a column per swept parameter
+    !! holding numbers; each console line names its case's values; the response script
+    !! plots column 3 (F) with one curve per RHO value, and its key columns are the key
+    !! results' columns of the summary header; the overlay's clip markers are drawn in the
+    !! red its title names.
+    subroutine test_sweep_ready_to_plot(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u, log_unit, ios
+        character(len=2000) :: header, row, line
+        character(len=:), allocatable :: field(:)
+        real(dp) :: f, rho
+        call clean_dir()
+        call parse_deck('sw.dat', plate_deck(' ', [card('SWEEP', ['F  ', '0.0', '0.5']), &
+                                                   card('SWEEP', ['RHO ', '0.01', '1.0 '])]), &
+                        deck, err)
+        if (allocated(err)) return
+        deck%stem = 'sw'
+        open (newunit=log_unit, file=dir//'/console.log', status='replace', action='readwrite')
+        call run_analysis(deck, dir, log_unit, error_unit, status)
+        rewind (log_unit)
+        find: do
+            read (log_unit, '(a)', iostat=ios) line
+            if (ios /= 0 .or. index(line, 'sw_002') == 1) exit find
+        end do find
+        close (log_unit, status='delete')
+        call check(err, status == EXIT_OK .and. index(line, 'sw_002 [F=0.0 RHO=1.0]: solved') &
+                   == 1, 'console line of case 2: '//trim(line))
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/sw_summary.csv', status='old', action='read')
+        read (u, '(a)') header
+        read (u, '(a)') row
+        read (u, '(a)') row
+        close (u)
+        call check(err, index(header, 'case,parameters,F,RHO,status,') == 1, &
+                   'summary header: '//trim(header))
+        if (allocated(err)) return
+        field = csv_fields(row)
+        read (field(3), *, iostat=ios) f
+        if (ios == 0) read (field(4), *, iostat=ios) rho
+        call check(err, ios == 0, 'swept columns not numbers: '//trim(row))
+        if (allocated(err)) return
+        call check(err, f == 0.0_dp .and. rho == 1.0_dp, 'swept values of case 2: '//trim(row))
+        if (allocated(err)) return
+        call check_response_script(dir//'/sw_response.gp', csv_fields(header), err)
+        if (allocated(err)) return
+        call check(err, exists(dir//'/sw_response.png') .or. .not. exists(dir//'/sw_sweep.png'), &
+                   'response figure not drawn where the overlay was')
+        if (allocated(err)) return
+        call check_clip_markers(err)
+    end subroutine test_sweep_ready_to_plot
+
+    !> The response script's settings: x_col = 3, two curves RHO=0.01 and RHO=1.0, every
+    !! key column a key result of the summary header (not a position _x, not a count).
+    subroutine check_response_script(path, header, err)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: header(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=400) :: line
+        integer :: u, ios, col, n_cols, at
+        logical :: x3, groups
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'no response script '//path)
+        if (allocated(err)) return
+        x3 = .false.
+        groups = .false.
+        n_cols = 0
+        lines: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit lines
+            x3 = x3 .or. trim(line) == 'x_col = 3'
+            groups = groups .or. trim(line) == "group_title[2] = 'RHO=1.0'"
+            if (index(line, 'key_col[') /= 1) cycle lines
+            at = index(line, '=')
+            read (line(at + 1:), *) col
+            n_cols = n_cols + 1
+            call check(err, col > 8 .and. col <= size(header), 'key column '//trim(line))
+            if (allocated(err)) exit lines
+            call check(err, index(header(col), '_x') == 0 .and. &
+                       index(header(col), 'linear_solves') == 0, 'key column '//trim(line)// &
+                       ' is '//trim(header(col)))
+            if (allocated(err)) exit lines
+        end do lines
+        close (u)
+        if (allocated(err)) return
+        call check(err, x3 .and. groups .and. n_cols > 3, 'response settings: x_col 3 '// &
+                   'and the RHO curves, more than three keys')
+    end subroutine check_response_script
+
+    !> The overlay template's clip markers are red ('#c00000'), as its title says.
+    subroutine check_clip_markers(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=400), allocatable :: lines(:)
+        integer :: i
+        logical :: named, red
+        lines = sweep_template()
+        named = .false.
+        red = .false.
+        do i = 1, size(lines)
+            named = named .or. index(lines(i), 'red triangles') > 0
+            if (index(lines(i), '? p_clip : 1/0) w p pt 9') > 0) &
+                red = index(lines(i), "lc rgb '#c00000'") > 0
+        end do
+        call check(err, named .and. red, 'sweep overlay: clip markers not drawn red')
+    end subroutine check_clip_markers
+
+    !> The comma-separated fields of a CSV line (no field holds a comma).
+    function csv_fields(line) result(field)
+        character(len=*), intent(in) :: line
+        character(len=:), allocatable :: field(:)
+        integer :: i, start, n
+        n = count([(line(i:i) == ',', i=1, len_trim(line))]) + 1
+        allocate (character(len=len_trim(line)) :: field(n))
+        start = 1
+        n = 0
+        do i = 1, len_trim(line) + 1
+            if (i <= len_trim(line)) then
+                if (line(i:i) /= ',') cycle
+            end if
+            n = n + 1
+            field(n) = line(start:i - 1)
+            start = i + 1
+        end do
+    end function csv_fields
     !> A beam sweep whose first case slides (F = 0 with H = 0.3 V) and whose second solves
     !! (F = 0.5): the run ends with status 2, the summary has both rows, the failed one with
     !! its message and empty result fields (not zeros), the solved one with numbers (the
@@ -884,11 +1011,11 @@ contains
         end do
         ! every file of the two-thread run equals the serial one (a race in writing once
         ! corrupted JSON files), and the merged shards give the serial summary and case files
-        ! (shards draw no sweep overlay)
+        ! (shards draw no sweep overlay and no response figure)
         call execute_command_line('bash scripts/merge_shards.sh build/test_sweep_sh/sw > /dev/null '// &
             '&& for f in build/test_sweep_j1/*; do b=$(basename $f); '// &
             'cmp -s $f build/test_sweep_j2/$b || exit 1; '// &
-            'case $b in *_sweep.*) continue;; esac; '// &
+            'case $b in *_sweep.* | *_response.*) continue;; esac; '// &
             'cmp -s $f build/test_sweep_sh/$b || exit 1; done', exitstat=exit_status)
         call check(err, exit_status == 0, 'parallel or sharded sweep differs from the serial one')
     end subroutine test_parallel_sweep

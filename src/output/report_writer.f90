@@ -31,6 +31,7 @@ module report_writer
     implicit none
     private
 
+    public :: write_script_folder
     public :: write_data_file, write_physical_csv, write_summary_json, write_plot_script, &
               write_sweep_script, write_report, shell_safe, json_string
 
