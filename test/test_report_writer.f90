@@ -2,7 +2,8 @@
 !! a failed analysis leaves only its report (under a banner), atomic writes leave no .tmp.
 module test_report_writer
     use deck_fields, only: int_text
-    use iso_fortran_env, only: output_unit, error_unit
+    use iso_fortran_env, only: output_unit, error_unit, int64
+    use run_identity, only: run_time, iso_time_of_epoch
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
@@ -46,7 +47,9 @@ contains
                  new_unittest('tension_flags_warned', test_tension_warning), &
                  new_unittest('file_cut_at_line_end_not_committed', test_cut_at_line_end), &
                  new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case), &
-                 new_unittest('moments_about_mid_plane_and_base', test_moment_conventions)]
+                 new_unittest('moments_about_mid_plane_and_base', test_moment_conventions), &
+                 new_unittest('epoch_to_iso_time', test_epoch_time), &
+                 new_unittest('version_and_run_time_in_every_file', test_traceability)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -631,6 +634,111 @@ contains
         call check_close(err, total, 1.0_dp, 5.0e-2_dp, 0.0_dp, 'int Sigma_z 2t dt from .dat')
     end subroutine test_data_file
 
+    !> Seconds since 1970-01-01T00:00:00Z to ISO 8601 UTC, against dates counted by hand:
+    !! 0 is the epoch; 951782400 = 11016 days (30 years with 7 leap days, 1972 ... 1996,
+    !! plus January and 28 days of February 2000) is 2000-02-29, a leap day of a year
+    !! divisible by 400; 1700000000 = 19675 days + 80000 s is 2023-11-14T22:13:20;
+    !! 4107542399 is the last second of 2100-02-28 (2100 is no leap year).
+    subroutine test_epoch_time(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer(int64), parameter :: t(4) = [0_int64, 951782400_int64, 1700000000_int64, &
+                                             4107542399_int64]
+        character(len=25), parameter :: iso(4) = ['1970-01-01T00:00:00+00:00', &
+            '2000-02-29T00:00:00+00:00', '2023-11-14T22:13:20+00:00', &
+            '2100-02-28T23:59:59+00:00']
+        integer :: k
+        do k = 1, size(t)
+            call check(err, iso_time_of_epoch(t(k)) == iso(k), 'epoch '//int_text(int(t(k) &
+                       /86400_int64))//' days: '//iso_time_of_epoch(t(k))//' expected '//iso(k))
+            if (allocated(err)) return
+        end do
+    end subroutine test_epoch_time
+
+    !> Version and run time in the report, the station CSV and the JSON of a case: the version
+    !! is fpm.toml's (read here), the time the run's (ISO 8601 with its offset, the same in
+    !! every file); the summary CSV's stamp is checked in sweep_ready_to_plot.
+    subroutine test_traceability(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status
+        character(len=:), allocatable :: version, stamp
+        version = fpm_version()
+        call check(err, len(version) > 0 .and. iso_shape(run_time), 'fpm.toml version '// &
+                   version//' / run time '//run_time)
+        if (allocated(err)) return
+        stamp = 'fricon '//version//', run '//trim(run_time)
+        call clean_dir()
+        call parse_deck('tr.dat', beam_deck([character(len=10) ::]), deck, err)
+        if (allocated(err)) return
+        deck%stem = 'tr'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_OK, 'the traceability case did not solve')
+        if (allocated(err)) return
+        call check(err, file_has_line(dir//'/tr.txt', ' '//stamp), 'report: no line " '// &
+                   stamp//'"')
+        if (allocated(err)) return
+        call check(err, file_has_line(dir//'/tr.csv', '# '//stamp), 'CSV: no line "# '// &
+                   stamp//'"')
+        if (allocated(err)) return
+        call check(err, file_has_line(dir//'/tr.json', '  "program": "fricon",') .and. &
+                   file_has_line(dir//'/tr.json', '  "version": "'//version//'",') .and. &
+                   file_has_line(dir//'/tr.json', '  "run_time": "'//trim(run_time)//'",'), &
+                   'JSON: program, version or run_time missing')
+    end subroutine test_traceability
+
+    !> 'YYYY-MM-DDTHH:MM:SS+HH:MM' (or -HH:MM): digits and separators where ISO 8601 has them.
+    pure logical function iso_shape(text)
+        character(len=*), intent(in) :: text
+        integer, parameter :: digits(14) = [1, 2, 3, 4, 6, 7, 9, 10, 12, 13, 15, 16, 18, 19]
+        integer :: i
+        iso_shape = len_trim(text) == 25
+        if (.not. iso_shape) return
+        do i = 1, size(digits)
+            iso_shape = iso_shape .and. index('0123456789', text(digits(i):digits(i))) > 0
+        end do
+        iso_shape = iso_shape .and. text(5:5) == '-' .and. text(11:11) == 'T' .and. &
+                    text(14:14) == ':' .and. index('+-', text(20:20)) > 0 .and. text(23:23) == ':'
+    end function iso_shape
+
+    !> The version line of fpm.toml, 'version = "0.2.0"' -> 0.2.0 ('' if none).
+    function fpm_version() result(version)
+        character(len=:), allocatable :: version
+        character(len=200) :: line
+        integer :: u, ios, a, b
+        version = ''
+        open (newunit=u, file='fpm.toml', status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, 'version') /= 1) cycle
+            a = index(line, '"')
+            b = index(line, '"', back=.true.)
+            if (b > a + 1) version = line(a + 1:b - 1)
+            exit
+        end do
+        close (u)
+    end function fpm_version
+
+    !> The file holds this exact line.
+    logical function file_has_line(path, text)
+        character(len=*), intent(in) :: path, text
+        character(len=2000) :: line
+        integer :: u, ios
+        file_has_line = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (trim(line) == text) then
+                file_has_line = .true.
+                exit
+            end if
+        end do
+        close (u)
+    end function file_has_line
+
     !> The stated conventions, by statics. Beam h = 0.8 m: a POINT load F_z = 1000 kN with
     !! F_x = 100 kN (top face) at x = 0 and a MOMENT M0 = 500 kN.m at x = 2.5 m. Moment of
     !! the loads about x = 0: on the mid-plane M0 + F_x h/2 = 540 kN.m, on the base (bottom
@@ -711,6 +819,7 @@ contains
         open (newunit=u, file=path, status='old', action='read', iostat=ios)
         call check(err, ios == 0, 'cannot open '//path)
         if (allocated(err)) return
+        read (u, '(a)', iostat=ios) line      ! the stamp line '# fricon ...'
         read (u, '(a)', iostat=ios) line
         call check(err, index(line, 'M [kN.m]') > 0 .and. index(line, 'w [mm]') > 0, &
                    'CSV header: '//trim(line))
@@ -818,7 +927,7 @@ contains
             n = n + 1
         end do
         close (u)
-        call check(err, n == 5, 'summary should have a header and 4 rows')
+        call check(err, n == 6, 'summary should have a stamp line, a header and 4 rows')
     end subroutine test_sweep
 
     !> A sweep ready to plot (SWEEP F 0.0 0.5 x SWEEP RHO 0.01 1.0, last fastest: case 2 is
@@ -852,6 +961,9 @@ contains
                    == 1, 'console line of case 2: '//trim(line))
         if (allocated(err)) return
         open (newunit=u, file=dir//'/sw_summary.csv', status='old', action='read')
+        read (u, '(a)') header
+        call check(err, index(header, '# fricon ') == 1, 'summary stamp line: '//trim(header))
+        if (allocated(err)) return
         read (u, '(a)') header
         read (u, '(a)') row
         read (u, '(a)') row
@@ -969,6 +1081,7 @@ contains
         open (newunit=u, file=dir//'/sb_summary.csv', status='old', action='read', iostat=ios)
         call check(err, ios == 0, 'no summary for a sweep whose first case failed')
         if (allocated(err)) return
+        read (u, '(a)') header      ! the stamp line
         read (u, '(a)') header
         read (u, '(a)') row1
         read (u, '(a)') row2

@@ -1,6 +1,7 @@
 # fricon response figure: each key result of a sweep against the first swept parameter, one
 # curve per value of the other swept parameters (their combinations), read from the sweep's
-# summary CSV. fricon writes output/STEM_response.gp with these settings, then this template:
+# summary CSV (its two lines before the rows: a '#' line and the header). fricon writes
+# output/STEM_response.gp with these settings, then this template:
 #   summary, response_png, title   the summary CSV and the figure (relative to gp_dir)
 #   x_col, x_label, x_log          the first swept parameter's column and name; 1: log axis
 #   n_keys, key_col[k], key_title[k]   the key results plotted: columns, panel titles
@@ -40,7 +41,7 @@ do for [k=1:n_keys] {
     } else {
         unset key
     }
-    plot for [g=1:n_groups] summary skip 1 every n_groups::(g - 1) \
+    plot for [g=1:n_groups] summary skip 2 every n_groups::(g - 1) \
         u (column(x_col)):(column(key_col[k])) smooth unique \
         w lp lw 2 pt marker(g) ps 1.1 lc rgb colour(g) t group_title[g]
 }

@@ -550,74 +550,76 @@ contains
     !> The lines of scripts/gnuplot/fricon_response.gp.
     pure function response_template() result(lines)
         character(len=line_length), allocatable :: lines(:)
-        allocate (lines(47))
+        allocate (lines(48))
         lines(1) = "# fricon response figure: each key result of a sweep against" &
             //" the first swept parameter, one"
         lines(2) = "# curve per value of the other swept parameters (their combi" &
             //"nations), read from the sweep's"
-        lines(3) = "# summary CSV. fricon writes output/STEM_response.gp with th" &
-            //"ese settings, then this template:"
-        lines(4) = "#   summary, response_png, title   the summary CSV and the f" &
+        lines(3) = "# summary CSV (its two lines before the rows: a '#' line and" &
+            //" the header). fricon writes"
+        lines(4) = "# output/STEM_response.gp with these settings, then this tem" &
+            //"plate:"
+        lines(5) = "#   summary, response_png, title   the summary CSV and the f" &
             //"igure (relative to gp_dir)"
-        lines(5) = "#   x_col, x_label, x_log          the first swept parameter" &
+        lines(6) = "#   x_col, x_label, x_log          the first swept parameter" &
             //"'s column and name; 1: log axis"
-        lines(6) = "#   n_keys, key_col[k], key_title[k]   the key results plott" &
+        lines(7) = "#   n_keys, key_col[k], key_title[k]   the key results plott" &
             //"ed: columns, panel titles"
-        lines(7) = "#   n_groups, group_title[g]       the curves: the combinati" &
+        lines(8) = "#   n_groups, group_title[g]       the curves: the combinati" &
             //"ons of the other swept values"
-        lines(8) = "# The summary lists the cases in case order, the last SWEEP " &
+        lines(9) = "# The summary lists the cases in case order, the last SWEEP " &
             //"varying fastest, so curve g is"
-        lines(9) = "# every n_groups-th row from row g (every n_groups::g-1); gn" &
+        lines(10) = "# every n_groups-th row from row g (every n_groups::g-1); gn" &
             //"uplot 5.4 has no row filter that"
-        lines(10) = "# keeps a curve unbroken. A failed case has empty fields: no" &
+        lines(11) = "# keeps a curve unbroken. A failed case has empty fields: no" &
             //" point there. A variable"
-        lines(11) = "# png_override (gnuplot -e) replaces response_png (fricon re" &
+        lines(12) = "# png_override (gnuplot -e) replaces response_png (fricon re" &
             //"nders to a temporary name)."
-        lines(12) = "png = exists(""png_override"") ? png_override : response_png"
-        lines(13) = "n_cols = (n_keys < 4) ? n_keys : 4"
-        lines(14) = "n_rows = int((n_keys + n_cols - 1)/n_cols)"
-        lines(15) = "key_rows = (n_groups > 1) ? int((n_groups + 5)/6) : 0"
-        lines(16) = "set terminal pngcairo size 1600, 300*n_rows + 120 + 30*key_r" &
+        lines(13) = "png = exists(""png_override"") ? png_override : response_png"
+        lines(14) = "n_cols = (n_keys < 4) ? n_keys : 4"
+        lines(15) = "n_rows = int((n_keys + n_cols - 1)/n_cols)"
+        lines(16) = "key_rows = (n_groups > 1) ? int((n_groups + 5)/6) : 0"
+        lines(17) = "set terminal pngcairo size 1600, 300*n_rows + 120 + 30*key_r" &
             //"ows font 'Sans,10' noenhanced"
-        lines(17) = "set output png"
-        lines(18) = "set datafile separator comma"
-        lines(19) = "bottom = (60.0 + 30*key_rows)/(300*n_rows + 120 + 30*key_row" &
+        lines(18) = "set output png"
+        lines(19) = "set datafile separator comma"
+        lines(20) = "bottom = (60.0 + 30*key_rows)/(300*n_rows + 120 + 30*key_row" &
             //"s)"
-        lines(20) = "set multiplot layout n_rows, n_cols title title font 'Sans,1" &
+        lines(21) = "set multiplot layout n_rows, n_cols title title font 'Sans,1" &
             //"4' \"
-        lines(21) = "    margins 0.05, 0.98, bottom, 1.0 - 70.0/(300*n_rows + 120" &
+        lines(22) = "    margins 0.05, 0.98, bottom, 1.0 - 70.0/(300*n_rows + 120" &
             //" + 30*key_rows) spacing 0.06, 0.1"
-        lines(22) = "set grid"
-        lines(23) = "set format y '%g'"
-        lines(24) = "set xlabel x_label offset 0, 0.5"
-        lines(25) = "if (x_log) { set logscale x; set format x '%g' }"
-        lines(26) = "set autoscale xfix"
-        lines(27) = "set offsets graph 0.04, graph 0.04, graph 0.08, graph 0.08"
-        lines(28) = ""
-        lines(29) = "# 12 distinguishable colours and point types; one per curve"
-        lines(30) = "array palette[12] = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f" &
+        lines(23) = "set grid"
+        lines(24) = "set format y '%g'"
+        lines(25) = "set xlabel x_label offset 0, 0.5"
+        lines(26) = "if (x_log) { set logscale x; set format x '%g' }"
+        lines(27) = "set autoscale xfix"
+        lines(28) = "set offsets graph 0.04, graph 0.04, graph 0.08, graph 0.08"
+        lines(29) = ""
+        lines(30) = "# 12 distinguishable colours and point types; one per curve"
+        lines(31) = "array palette[12] = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f" &
             //"0e', '#9467bd', '#8c564b', \"
-        lines(31) = "                     '#e377c2', '#17becf', '#000000', '#bcbd" &
+        lines(32) = "                     '#e377c2', '#17becf', '#000000', '#bcbd" &
             //"22', '#7f7f7f', '#0b3d91']"
-        lines(32) = "colour(g) = palette[(g - 1)%12 + 1]"
-        lines(33) = "marker(g) = (g - 1)%12 + 4"
-        lines(34) = ""
-        lines(35) = "do for [k=1:n_keys] {"
-        lines(36) = "    set title key_title[k]"
-        lines(37) = "    if (k == 1 && n_groups > 1) {"
-        lines(38) = "        set key at screen 0.5, 0.01 center bottom horizontal" &
+        lines(33) = "colour(g) = palette[(g - 1)%12 + 1]"
+        lines(34) = "marker(g) = (g - 1)%12 + 4"
+        lines(35) = ""
+        lines(36) = "do for [k=1:n_keys] {"
+        lines(37) = "    set title key_title[k]"
+        lines(38) = "    if (k == 1 && n_groups > 1) {"
+        lines(39) = "        set key at screen 0.5, 0.01 center bottom horizontal" &
             //" maxrows key_rows width 2 \"
-        lines(39) = "            samplen 3 spacing 1.2 font ',10' box opaque"
-        lines(40) = "    } else {"
-        lines(41) = "        unset key"
-        lines(42) = "    }"
-        lines(43) = "    plot for [g=1:n_groups] summary skip 1 every n_groups::(" &
+        lines(40) = "            samplen 3 spacing 1.2 font ',10' box opaque"
+        lines(41) = "    } else {"
+        lines(42) = "        unset key"
+        lines(43) = "    }"
+        lines(44) = "    plot for [g=1:n_groups] summary skip 2 every n_groups::(" &
             //"g - 1) \"
-        lines(44) = "        u (column(x_col)):(column(key_col[k])) smooth unique" &
+        lines(45) = "        u (column(x_col)):(column(key_col[k])) smooth unique" &
             //" \"
-        lines(45) = "        w lp lw 2 pt marker(g) ps 1.1 lc rgb colour(g) t gro" &
+        lines(46) = "        w lp lw 2 pt marker(g) ps 1.1 lc rgb colour(g) t gro" &
             //"up_title[g]"
-        lines(46) = "}"
-        lines(47) = "unset multiplot"
+        lines(47) = "}"
+        lines(48) = "unset multiplot"
     end function response_template
 end module figure_templates

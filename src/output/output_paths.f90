@@ -283,7 +283,8 @@ contains
         else if (ends_with(name, '.json')) then
             looks_like_output = head(1:1) == '{'
         else if (ends_with(name, '.csv')) then
-            looks_like_output = head(1:5) == 'case,' .or. index(head(1:max(n, 1)), ' [') > 0
+            looks_like_output = head(1:5) == 'case,' .or. index(head(1:max(n, 1)), ' [') > 0 &
+                                .or. head(1:9) == '# fricon '
         else if (ends_with(name, '.png')) then
             looks_like_output = head(1:4) == achar(137)//'PNG'
         end if

@@ -28,6 +28,7 @@ module report_writer
     use method_notes, only: simplification_text, error_method_text, adaptation_lines
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
                            ground_json
+    use run_identity, only: program_name, program_version, run_time, run_stamp
     implicit none
     private
 
@@ -62,7 +63,8 @@ contains
     end subroutine write_physical_csv
 
     !> A station file: whitespace with `#` header lines (sep ' '), or CSV with one header line
-    !! (after a `#` line stating a layered ground, when there is one).
+    !! (after the `#` line of the program, version and run time, and a `#` line stating a
+    !! layered ground, when there is one).
     subroutine write_station_file(path, title, cols, tab, sep, err, ground)
         character(len=*), intent(in) :: path, title
         type(column_t), intent(in) :: cols(:)
@@ -73,6 +75,7 @@ contains
         integer :: u, c
         call open_temporary(path, u, err)
         if (allocated(err)) return
+        write (u, '(a)') '# '//run_stamp()
         if (present(ground)) then
             if (len(ground) > 0) write (u, '(a)') ground
         end if
@@ -154,6 +157,9 @@ contains
         if (allocated(err)) return
         un = case_units(m)
         write (u, '(a)') '{'
+        write (u, '(a)') '  "program": '//json_string(program_name)//','
+        write (u, '(a)') '  "version": '//json_string(program_version)//','
+        write (u, '(a)') '  "run_time": '//json_string(trim(run_time))//','
         write (u, '(a)') '  "case": '//json_string(name)//','
         write (u, '(a)') '  "deck": '//json_string(deck_path)//','
         ! the deck's canonical path: how a later run of the same deck, from any folder, knows
@@ -763,6 +769,7 @@ contains
         write (u, '(a)') ' fricon - beam / circular raft on an elastic half-space with lift-off and friction'
         write (u, '(a)') ' deck: '//deck_path//'    case: '//label
         write (u, '(a)') ' title: '//trim(m%title)
+        write (u, '(a)') ' '//run_stamp()
         write (u, '(a)') repeat('=', 100)
         if (len_trim(failure) > 0) then
             write (u, '(/,a,/,a,/)') ' *** ANALYSIS FAILED ***', ' '//failure

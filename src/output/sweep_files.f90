@@ -9,6 +9,7 @@ module sweep_files
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: remove_output, remove_shard_summaries, remove_sweep_outputs
     use case_files, only: case_result_t, render_png
+    use run_identity, only: run_stamp
     use response_figure, only: swept_values, write_response_script
     implicit none
     private
@@ -132,7 +133,8 @@ contains
         word = "'"//word//"'"
     end function one_word
 
-    !> output/STEM_summary.csv: one row per case, with the key results of summary_table
+    !> output/STEM_summary.csv: a `#` line (program, version, run time), the header, one row
+    !! per case, with the key results of summary_table
     !! (display units, named in the header); a failed case has empty result fields.
     subroutine write_summary_csv(path, m, results, err)
         character(len=*), intent(in) :: path
@@ -147,6 +149,7 @@ contains
         call swept_values(results(1)%label, names, texts, values)
         call open_temporary(path, u, err)
         if (allocated(err)) return
+        write (u, '(a)') '# '//run_stamp()
         write (u, '(a)', advance='no') 'case,parameters'
         do k = 1, size(names)
             write (u, '(a)', advance='no') ','//trim(names(k))
