@@ -902,7 +902,7 @@ contains
         write (u, '(3x,a,2es16.8,a,es9.2,a)') 'moment:     reaction, load ', sol%reaction(3), &
             sol%applied(3), '  rel.diff ', rel_diff(sol%reaction(3), sol%applied(3), &
             v*m%structure%length), '  (about x = 0 on the mid-plane z = 0)'
-        write (u, '(3x,a,2es16.8,a)') '            the same about x = 0 on the base z = h/2', &
+        write (u, '(3x,a,2es16.8,a)') '            the same about x = 0 on the base z = h/2 ', &
             sol%reaction(3) + half_h*sol%reaction(2), sol%applied(3) + half_h*sol%applied(2), &
             '  (mid-plane + (h/2) H: base statics)'
     end subroutine write_moment_checks
