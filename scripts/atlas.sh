@@ -52,7 +52,7 @@ def finer(m, p, ne=80):
     return f'on N_e = {ne}: ' + ('solved' if st == 0 else f'status {st}')
 
 def cases(name):
-    rows = list(csv.DictReader(open(f'{out}/{name}_summary.csv')))
+    rows = list(csv.DictReader(l for l in open(f'{out}/{name}_summary.csv') if not l.startswith('#')))
     for r in rows:
         r['p'] = dict(kv.split('=') for kv in r['parameters'].split(': ')[1].split())
     return rows
@@ -114,7 +114,7 @@ lines = ['# Hard-case atlas', '', 'Cases: rho 1e-6 ... 1e6 (6), zeta 0.001 ... 0
          'eps_bar 1e-12, 1e-6, 0.1, nu_f 0, 0.5; N_e 20, P1, Newton. Beam: central load with',
          'H = 0.3 V (f = 0 must slide); plate: disk load r <= 0.1 a.', '']
 for m in ['beam', 'plate']:
-    rows = list(csv.DictReader(open(f'{out}/{m}_summary.csv')))
+    rows = list(csv.DictReader(l for l in open(f'{out}/{m}_summary.csv') if not l.startswith('#')))
     par = lambda r: dict(kv.split('=') for kv in r['parameters'].split(': ')[1].split())
     count = collections.Counter(); fails = []; solves = []
     grid = {}

@@ -9,6 +9,9 @@
 #
 # BEFORE_BIN, AFTER_BIN: e.g. release builds of two commits copied out of build/.
 set -euo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 if [ $# -lt 4 ]; then
     echo "usage: bash scripts/bench_ab.sh BEFORE_BIN AFTER_BIN REPS DECK..." >&2
     exit 1

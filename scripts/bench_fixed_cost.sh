@@ -16,6 +16,9 @@
 # with (about 90 s a run before they used both cores; SWEEPS=no leaves the sweeps out, for a
 # quick look). Writes output/bench/fixed_cost.md.
 set -euo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 reps=20
 bins=()
 for arg in "$@"; do

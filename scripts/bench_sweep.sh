@@ -3,6 +3,9 @@
 # --jobs 2, no figures; writes output/bench/sweep_scaling.md with the machine, the wall times
 # and whether the two summaries are identical. Run from the project root after fpm build.
 set -euo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 cd "$(dirname "$0")/.."
 fpm build >/dev/null
 bin=$(fpm run --runner echo 2>/dev/null | tail -n 1)

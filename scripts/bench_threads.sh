@@ -10,6 +10,9 @@
 # blas_threads.png (figure), and checks that each case's data file is the same, byte for
 # byte, from AFTER_BIN with the default threads and from BEFORE_BIN on one thread.
 set -euo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 if [ $# -lt 2 ]; then
     echo "usage: bash scripts/bench_threads.sh BEFORE_BIN AFTER_BIN [REPS]" >&2
     exit 1

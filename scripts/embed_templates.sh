@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates src/output/figure_templates.f90 from scripts/gnuplot/fricon_panels.gp,
-# fricon_sweep.gp and fricon_ground.gp: the gnuplot templates become part of the program, so a
-# figure script written by fricon is self-contained (it draws from any folder, and an installed
-# binary needs no file of the source tree). Run after editing a template; the test
+# fricon_sweep.gp, fricon_ground.gp and fricon_response.gp: the gnuplot templates become part
+# of the program, so a figure script written by fricon is self-contained (it draws from any
+# folder, and an installed binary needs no file of the source tree). Run after editing a
+# template; the test
 # report_writer/embedded_templates_match fails while the module and the templates differ.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,12 +34,13 @@ emit() { # emit NAME FILE: a pure function NAME returning the lines of FILE
     echo ""
     echo "    integer, parameter, public :: line_length = 400"
     echo ""
-    echo "    public :: panel_template, sweep_template, ground_template"
+    echo "    public :: panel_template, sweep_template, ground_template, response_template"
     echo ""
     echo "contains"
     emit panel_template scripts/gnuplot/fricon_panels.gp
     emit sweep_template scripts/gnuplot/fricon_sweep.gp
     emit ground_template scripts/gnuplot/fricon_ground.gp
+    emit response_template scripts/gnuplot/fricon_response.gp
     echo "end module figure_templates"
 } >"$out.tmp"
 mv "$out.tmp" "$out"

@@ -7,6 +7,9 @@
 # script (they would summarise part of the sweep). Run from the project root after fpm build:
 #   sudo bash scripts/full_disk_test.sh [BINARY]     (writes output/bench/full_disk_test.txt)
 set -uo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 cd "$(dirname "$0")/.."
 bin=${1:-$(fpm run --runner echo 2>/dev/null | tail -n 1)}
 bin=$(readlink -f "$bin")

@@ -23,7 +23,7 @@ for f in sorted(os.listdir(d)):
         if f.endswith('.json'):
             j = json.load(open(p)); assert 'status' in j
         elif f.endswith('.csv'):
-            rows = [r for r in open(p).read().splitlines()]
+            rows = [r for r in open(p).read().splitlines() if not r.startswith('#')]
             n = len(rows[0].split(','))
             assert all(len(r.split(',')) >= n for r in rows[1:]) and len(rows) > 1
         elif f.endswith('.dat'):

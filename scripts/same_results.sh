@@ -29,8 +29,8 @@
 # Filter (applied to every compared file): only the progress lines of standard error carry
 # measured times, `fricon: 3 of 6 done (NAME), 0.4 s elapsed, about 0.8 s left`; their
 # "N s elapsed" and "about N s left" become "T s elapsed" and "about T s left". Found by
-# running every deck twice with the same build and diffing (the outputs, JSON included, hold
-# no date or time; the absolute paths they hold, deck_file in the JSON and the output folder
+# running every deck twice with the same build and diffing (the outputs' run time is fixed by
+# SOURCE_DATE_EPOCH, exported below; the absolute paths they hold, deck_file in the JSON and the output folder
 # on standard output, are the same in both runs by construction). The size announcement of a
 # large case ("about 12.0 s and 0.3 GB (rough estimates)") is a formula of the case's size,
 # not a measurement: it is compared.
@@ -41,6 +41,9 @@
 # usage or build error. About a minute on two shared cores (30 to 90 s, most of it the
 # reference's release build; the runs take about 10 s, --figures adds about 30 s).
 set -uo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 figures=--no-figures
 if [ "${1:-}" = --figures ]; then
     figures=''

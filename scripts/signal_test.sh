@@ -31,7 +31,8 @@ def problems(d):
             if f.endswith('.json'):
                 assert 'status' in json.load(open(p))
             elif f.endswith('.csv'):
-                rows = open(p).read().splitlines(); n = len(rows[0].split(','))
+                rows = [r for r in open(p).read().splitlines() if not r.startswith('#')]
+                n = len(rows[0].split(','))
                 assert len(rows) > 1 and all(len(r.split(',')) >= n for r in rows[1:])
             elif f.endswith('.txt'):
                 t = open(p).read(); assert ' 8. CHECKS' in t or 'ANALYSIS FAILED' in t

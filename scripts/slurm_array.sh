@@ -13,6 +13,9 @@
 # ran, the comparison, the machine). The daemons' files live in a temporary folder, removed at
 # the end (kept, and named, when something fails).
 set -euo pipefail
+# one run time for the runs compared, so that their outputs can be the same bytes (the
+# run's date and time are stamped on the outputs: src/run_identity.f90)
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1700000000}
 deck_arg=${1:-input/sweep.dat}
 tasks=${2:-3}
 [ "$(id -u)" -eq 0 ] || { echo "slurm_array: run as root (it starts slurmctld and slurmd)" >&2; exit 1; }
@@ -140,12 +143,13 @@ cp "$work/results/${stem}_summary.csv" "$out/"
 # the swept values (after 'case i of n: ') label the cases
 keys='settlement_max differential_settlement pressure_max contact_extent_t'
 awk -F, -v keys="$keys" '
-    NR == 1 { n = split(keys, k, " ")
+    /^#/ { next }
+    !header { header = 1; n = split(keys, k, " ")
               for (i = 1; i <= NF; i++) { split($i, w, " "); c[w[1]] = i; h[w[1]] = $i }
               for (j = 1; j <= n; j++) print h[k[j]] >"/dev/stderr"
               next }
     { label = $2; gsub(/"/, "", label); sub(/^case [0-9]+ of [0-9]+: /, "", label)
-      printf "%d", NR - 1
+      printf "%d", ++row
       for (j = 1; j <= n; j++) printf " %s", $c[k[j]]
       printf " \"%s\"\n", label }' \
     "$out/${stem}_summary.csv" >"$work/response.dat" 2>"$work/titles"

@@ -25,6 +25,7 @@ program tester
     use test_architecture, only: collect_architecture
     use test_layered_ground, only: collect_layered_ground
     use test_layered_program, only: collect_layered_program
+    use test_unit_checks, only: collect_unit_checks
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -33,7 +34,7 @@ program tester
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
         'simplifications adaptive nested_spaces architecture layered_ground layered_program '// &
-        'foundation_springs '
+        'foundation_springs unit_checks '
 
     want_suite = ''
     want_test = ''
@@ -132,6 +133,10 @@ program tester
     if (wanted('adaptive')) then
         call collect_adaptive(tests)
         call run_suite('adaptive', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('unit_checks')) then
+        call collect_unit_checks(tests)
+        call run_suite('unit_checks', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)

@@ -1061,7 +1061,10 @@ contains
         real(dp) :: x
         v = -huge(1.0_dp)
         open (newunit=u, file=path, status='old', action='read')
-        read (u, '(a)') line
+        line = '#'
+        do while (line(1:1) == '#')        ! the stamp and ground lines before the header
+            read (u, '(a)') line
+        end do
         col = 0
         start = 1
         k = 0

@@ -2,7 +2,8 @@
 !! a failed analysis leaves only its report (under a banner), atomic writes leave no .tmp.
 module test_report_writer
     use deck_fields, only: int_text
-    use iso_fortran_env, only: output_unit, error_unit
+    use iso_fortran_env, only: output_unit, error_unit, int64
+    use run_identity, only: run_time, iso_time_of_epoch
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK, EXIT_INPUT, EXIT_ANALYSIS
@@ -28,6 +29,7 @@ contains
                  new_unittest('input_error_writes_nothing', test_input_error), &
                  new_unittest('failed_case_report_only', test_failed_case), &
                  new_unittest('sweep_summary', test_sweep), &
+                 new_unittest('sweep_ready_to_plot', test_sweep_ready_to_plot), &
                  new_unittest('sweep_first_case_fails', test_sweep_first_fails), &
                  new_unittest('embedded_templates_match', test_templates), &
                  new_unittest('parallel_and_sharded_sweeps_match_serial', test_parallel_sweep), &
@@ -44,7 +46,10 @@ contains
                  new_unittest('positions_fit_their_columns', test_position_formats), &
                  new_unittest('tension_flags_warned', test_tension_warning), &
                  new_unittest('file_cut_at_line_end_not_committed', test_cut_at_line_end), &
-                 new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case)]
+                 new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case), &
+                 new_unittest('moments_about_mid_plane_and_base', test_moment_conventions), &
+                 new_unittest('epoch_to_iso_time', test_epoch_time), &
+                 new_unittest('version_and_run_time_in_every_file', test_traceability)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -629,6 +634,212 @@ contains
         call check_close(err, total, 1.0_dp, 5.0e-2_dp, 0.0_dp, 'int Sigma_z 2t dt from .dat')
     end subroutine test_data_file
 
+    !> Seconds since 1970-01-01T00:00:00Z to ISO 8601 UTC, against dates counted by hand:
+    !! 0 is the epoch; 951782400 = 11016 days (30 years with 7 leap days, 1972 ... 1996,
+    !! plus January and 28 days of February 2000) is 2000-02-29, a leap day of a year
+    !! divisible by 400; 1700000000 = 19675 days + 80000 s is 2023-11-14T22:13:20;
+    !! 4107542399 is the last second of 2100-02-28 (2100 is no leap year).
+    subroutine test_epoch_time(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer(int64), parameter :: t(4) = [0_int64, 951782400_int64, 1700000000_int64, &
+                                             4107542399_int64]
+        character(len=25), parameter :: iso(4) = ['1970-01-01T00:00:00+00:00', &
+            '2000-02-29T00:00:00+00:00', '2023-11-14T22:13:20+00:00', &
+            '2100-02-28T23:59:59+00:00']
+        integer :: k
+        do k = 1, size(t)
+            call check(err, iso_time_of_epoch(t(k)) == iso(k), 'epoch '//int_text(int(t(k) &
+                       /86400_int64))//' days: '//iso_time_of_epoch(t(k))//' expected '//iso(k))
+            if (allocated(err)) return
+        end do
+    end subroutine test_epoch_time
+
+    !> Version and run time in the report, the station CSV and the JSON of a case: the version
+    !! is fpm.toml's (read here), the time the run's (ISO 8601 with its offset, the same in
+    !! every file); the summary CSV's stamp is checked in sweep_ready_to_plot.
+    subroutine test_traceability(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status
+        character(len=:), allocatable :: version, stamp
+        version = fpm_version()
+        call check(err, len(version) > 0 .and. iso_shape(run_time), 'fpm.toml version '// &
+                   version//' / run time '//run_time)
+        if (allocated(err)) return
+        stamp = 'fricon '//version//', run '//trim(run_time)
+        call clean_dir()
+        call parse_deck('tr.dat', beam_deck([character(len=10) ::]), deck, err)
+        if (allocated(err)) return
+        deck%stem = 'tr'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_OK, 'the traceability case did not solve')
+        if (allocated(err)) return
+        call check(err, file_has_line(dir//'/tr.txt', ' '//stamp), 'report: no line " '// &
+                   stamp//'"')
+        if (allocated(err)) return
+        call check(err, file_has_line(dir//'/tr.csv', '# '//stamp), 'CSV: no line "# '// &
+                   stamp//'"')
+        if (allocated(err)) return
+        call check(err, file_has_line(dir//'/tr.json', '  "program": "fricon",') .and. &
+                   file_has_line(dir//'/tr.json', '  "version": "'//version//'",') .and. &
+                   file_has_line(dir//'/tr.json', '  "run_time": "'//trim(run_time)//'",'), &
+                   'JSON: program, version or run_time missing')
+    end subroutine test_traceability
+
+    !> 'YYYY-MM-DDTHH:MM:SS+HH:MM' (or -HH:MM): digits and separators where ISO 8601 has them.
+    pure logical function iso_shape(text)
+        character(len=*), intent(in) :: text
+        integer, parameter :: digits(14) = [1, 2, 3, 4, 6, 7, 9, 10, 12, 13, 15, 16, 18, 19]
+        integer :: i
+        iso_shape = len_trim(text) == 25
+        if (.not. iso_shape) return
+        do i = 1, size(digits)
+            iso_shape = iso_shape .and. index('0123456789', text(digits(i):digits(i))) > 0
+        end do
+        iso_shape = iso_shape .and. text(5:5) == '-' .and. text(11:11) == 'T' .and. &
+                    text(14:14) == ':' .and. index('+-', text(20:20)) > 0 .and. text(23:23) == ':'
+    end function iso_shape
+
+    !> The version line of fpm.toml, 'version = "0.2.0"' -> 0.2.0 ('' if none).
+    function fpm_version() result(version)
+        character(len=:), allocatable :: version
+        character(len=200) :: line
+        integer :: u, ios, a, b
+        version = ''
+        open (newunit=u, file='fpm.toml', status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, 'version') /= 1) cycle
+            a = index(line, '"')
+            b = index(line, '"', back=.true.)
+            if (b > a + 1) version = line(a + 1:b - 1)
+            exit
+        end do
+        close (u)
+    end function fpm_version
+
+    !> The file holds this exact line.
+    logical function file_has_line(path, text)
+        character(len=*), intent(in) :: path, text
+        character(len=2000) :: line
+        integer :: u, ios
+        file_has_line = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (trim(line) == text) then
+                file_has_line = .true.
+                exit
+            end if
+        end do
+        close (u)
+    end function file_has_line
+
+    !> The stated conventions, by statics. Beam h = 0.8 m: a POINT load F_z = 1000 kN with
+    !! F_x = 100 kN (top face) at x = 0 and a MOMENT M0 = 500 kN.m at x = 2.5 m. Moment of
+    !! the loads about x = 0: on the mid-plane M0 + F_x h/2 = 540 kN.m, on the base (bottom
+    !! face) M0 + F_x h = 580 kN.m; the reactions balance both. Across x = 0 the bending
+    !! moment drops by F_x h/2 = 40 kN.m (the top-face load acts h/2 above the mid-plane),
+    !! across x = 2.5 m by M0 = 500 kN.m; a positive MOMENT turns the beam clockwise as drawn
+    !! (x right, w down), so w(+l/2) > w(-l/2).
+    subroutine test_moment_conventions(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status
+        real(dp) :: base(2), jump(2), w_ends(2)
+        character(len=80), allocatable :: lines(:)
+        call clean_dir()
+        lines = beam_deck([character(len=10) ::])
+        lines(7) = card('LOAD', ['POINT ', '1000.0', '100.0 ', '0.0   '])
+        lines = [lines(1:7), card('LOAD', ['MOMENT', '500.0 ', '      ', '2.5   ']), lines(8:)]
+        call parse_deck('rm.dat', lines, deck, err)
+        if (allocated(err)) return
+        deck%stem = 'rm'
+        call run_analysis(deck, dir, output_unit, error_unit, status)
+        call check(err, status == EXIT_OK, 'the moment test case did not solve')
+        if (allocated(err)) return
+        call report_numbers(dir//'/rm.txt', 'the same about x = 0 on the base z = h/2', base, err)
+        if (allocated(err)) return
+        call check_close(err, base(2), 580.0_dp, 1.0e-12_dp, 0.0_dp, 'load moment about the base')
+        if (allocated(err)) return
+        call check_close(err, base(1), 580.0_dp, 1.0e-8_dp, 0.0_dp, 'reaction moment, base')
+        if (allocated(err)) return
+        call moment_jumps(dir//'/rm.csv', [0.0_dp, 2.5_dp], jump, w_ends, err)
+        if (allocated(err)) return
+        call check_close(err, jump(1), -40.0_dp, 1.0e-4_dp, 0.0_dp, 'M jump at the F_x load')
+        if (allocated(err)) return
+        call check_close(err, jump(2), -500.0_dp, 1.0e-4_dp, 0.0_dp, 'M jump at the MOMENT')
+        if (allocated(err)) return
+        call check(err, w_ends(2) > w_ends(1), 'a positive MOMENT did not press the +x end down')
+    end subroutine test_moment_conventions
+
+    !> The two numbers after `label` on its line of a report.
+    subroutine report_numbers(path, label, values, err)
+        character(len=*), intent(in) :: path, label
+        real(dp), intent(out) :: values(2)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=400) :: line
+        integer :: u, ios, k
+        values = 0.0_dp
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'cannot open '//path)
+        if (allocated(err)) return
+        k = 0
+        find: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit find
+            k = index(line, label)
+            if (k > 0) exit find
+        end do find
+        close (u)
+        call check(err, k > 0, 'no line "'//label//'" in '//path)
+        if (allocated(err)) return
+        read (line(k + len(label):), *, iostat=ios) values
+        call check(err, ios == 0, 'unreadable numbers: '//trim(line))
+    end subroutine report_numbers
+
+    !> From a physical beam CSV: M after minus M before each position in at (each a station
+    !! listed twice, before and after the jump), and w at both ends.
+    subroutine moment_jumps(path, at, jump, w_ends, err)
+        character(len=*), intent(in) :: path
+        real(dp), intent(in) :: at(:)
+        real(dp), intent(out) :: jump(size(at)), w_ends(2)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=600) :: line
+        real(dp) :: row(13)
+        integer :: u, ios, k, seen(size(at))
+        integer, parameter :: c_x = 1, c_w = 3, c_m = 13   ! x, w, M in the beam CSV
+        jump = 0.0_dp
+        w_ends = 0.0_dp
+        seen = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'cannot open '//path)
+        if (allocated(err)) return
+        read (u, '(a)', iostat=ios) line      ! the stamp line '# fricon ...'
+        read (u, '(a)', iostat=ios) line
+        call check(err, index(line, 'M [kN.m]') > 0 .and. index(line, 'w [mm]') > 0, &
+                   'CSV header: '//trim(line))
+        if (allocated(err)) return
+        rows: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit rows
+            read (line, *) row
+            do k = 1, size(at)
+                if (abs(row(c_x) - at(k)) > 1.0e-9_dp) cycle
+                seen(k) = seen(k) + 1
+                jump(k) = jump(k) + merge(-row(c_m), row(c_m), seen(k) == 1)
+            end do
+            w_ends(2) = row(c_w)
+            if (row(c_x) <= -5.0_dp + 1.0e-9_dp) w_ends(1) = row(c_w)
+        end do rows
+        close (u)
+        call check(err, all(seen == 2), 'each position must be listed twice')
+    end subroutine moment_jumps
+
     !> run_analysis validates every case before it solves any: a sweep whose second case puts
     !! its load off the beam (L = 6 m with a POINT load at x = 4 m, |x| <= 3 m) gives status 1
     !! and an empty output directory, not even case 1 is written. parse_deck refuses such a
@@ -716,8 +927,137 @@ contains
             n = n + 1
         end do
         close (u)
-        call check(err, n == 5, 'summary should have a header and 4 rows')
+        call check(err, n == 6, 'summary should have a stamp line, a header and 4 rows')
     end subroutine test_sweep
+
+    !> A sweep ready to plot (SWEEP F 0.0 0.5 x SWEEP RHO 0.01 1.0, last fastest: case 2 is
+    !! F = 0.0, RHO = 1.0, the deck's values): the summary has a column per swept parameter
+    !! holding numbers; each console line names its case's values; the response script
+    !! plots column 3 (F) with one curve per RHO value, and its key columns are the key
+    !! results' columns of the summary header; the overlay's clip markers are drawn in the
+    !! red its title names.
+    subroutine test_sweep_ready_to_plot(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status, u, log_unit, ios
+        character(len=2000) :: header, row, line
+        character(len=:), allocatable :: field(:)
+        real(dp) :: f, rho
+        call clean_dir()
+        call parse_deck('sw.dat', plate_deck(' ', [card('SWEEP', ['F  ', '0.0', '0.5']), &
+                                                   card('SWEEP', ['RHO ', '0.01', '1.0 '])]), &
+                        deck, err)
+        if (allocated(err)) return
+        deck%stem = 'sw'
+        open (newunit=log_unit, file=dir//'/console.log', status='replace', action='readwrite')
+        call run_analysis(deck, dir, log_unit, error_unit, status)
+        rewind (log_unit)
+        find: do
+            read (log_unit, '(a)', iostat=ios) line
+            if (ios /= 0 .or. index(line, 'sw_002') == 1) exit find
+        end do find
+        close (log_unit, status='delete')
+        call check(err, status == EXIT_OK .and. index(line, 'sw_002 [F=0.0 RHO=1.0]: solved') &
+                   == 1, 'console line of case 2: '//trim(line))
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/sw_summary.csv', status='old', action='read')
+        read (u, '(a)') header
+        call check(err, index(header, '# fricon ') == 1, 'summary stamp line: '//trim(header))
+        if (allocated(err)) return
+        read (u, '(a)') header
+        read (u, '(a)') row
+        read (u, '(a)') row
+        close (u)
+        call check(err, index(header, 'case,parameters,F,RHO,status,') == 1, &
+                   'summary header: '//trim(header))
+        if (allocated(err)) return
+        field = csv_fields(row)
+        read (field(3), *, iostat=ios) f
+        if (ios == 0) read (field(4), *, iostat=ios) rho
+        call check(err, ios == 0, 'swept columns not numbers: '//trim(row))
+        if (allocated(err)) return
+        call check(err, f == 0.0_dp .and. rho == 1.0_dp, 'swept values of case 2: '//trim(row))
+        if (allocated(err)) return
+        call check_response_script(dir//'/sw_response.gp', csv_fields(header), err)
+        if (allocated(err)) return
+        call check(err, exists(dir//'/sw_response.png') .or. .not. exists(dir//'/sw_sweep.png'), &
+                   'response figure not drawn where the overlay was')
+        if (allocated(err)) return
+        call check_clip_markers(err)
+    end subroutine test_sweep_ready_to_plot
+
+    !> The response script's settings: x_col = 3, two curves RHO=0.01 and RHO=1.0, every
+    !! key column a key result of the summary header (not a position _x, not a count).
+    subroutine check_response_script(path, header, err)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: header(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=400) :: line
+        integer :: u, ios, col, n_cols, at
+        logical :: x3, groups
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        call check(err, ios == 0, 'no response script '//path)
+        if (allocated(err)) return
+        x3 = .false.
+        groups = .false.
+        n_cols = 0
+        lines: do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit lines
+            x3 = x3 .or. trim(line) == 'x_col = 3'
+            groups = groups .or. trim(line) == "group_title[2] = 'RHO=1.0'"
+            if (index(line, 'key_col[') /= 1) cycle lines
+            at = index(line, '=')
+            read (line(at + 1:), *) col
+            n_cols = n_cols + 1
+            call check(err, col > 8 .and. col <= size(header), 'key column '//trim(line))
+            if (allocated(err)) exit lines
+            call check(err, index(header(col), '_x') == 0 .and. &
+                       index(header(col), 'linear_solves') == 0, 'key column '//trim(line)// &
+                       ' is '//trim(header(col)))
+            if (allocated(err)) exit lines
+        end do lines
+        close (u)
+        if (allocated(err)) return
+        call check(err, x3 .and. groups .and. n_cols > 3, 'response settings: x_col 3 '// &
+                   'and the RHO curves, more than three keys')
+    end subroutine check_response_script
+
+    !> The overlay template's clip markers are red ('#c00000'), as its title says.
+    subroutine check_clip_markers(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=400), allocatable :: lines(:)
+        integer :: i
+        logical :: named, red
+        lines = sweep_template()
+        named = .false.
+        red = .false.
+        do i = 1, size(lines)
+            named = named .or. index(lines(i), 'red triangles') > 0
+            if (index(lines(i), '? p_clip : 1/0) w p pt 9') > 0) &
+                red = index(lines(i), "lc rgb '#c00000'") > 0
+        end do
+        call check(err, named .and. red, 'sweep overlay: clip markers not drawn red')
+    end subroutine check_clip_markers
+
+    !> The comma-separated fields of a CSV line (no field holds a comma).
+    function csv_fields(line) result(field)
+        character(len=*), intent(in) :: line
+        character(len=:), allocatable :: field(:)
+        integer :: i, start, n
+        n = count([(line(i:i) == ',', i=1, len_trim(line))]) + 1
+        allocate (character(len=len_trim(line)) :: field(n))
+        start = 1
+        n = 0
+        do i = 1, len_trim(line) + 1
+            if (i <= len_trim(line)) then
+                if (line(i:i) /= ',') cycle
+            end if
+            n = n + 1
+            field(n) = line(start:i - 1)
+            start = i + 1
+        end do
+    end function csv_fields
     !> A beam sweep whose first case slides (F = 0 with H = 0.3 V) and whose second solves
     !! (F = 0.5): the run ends with status 2, the summary has both rows, the failed one with
     !! its message and empty result fields (not zeros), the solved one with numbers (the
@@ -741,6 +1081,7 @@ contains
         open (newunit=u, file=dir//'/sb_summary.csv', status='old', action='read', iostat=ios)
         call check(err, ios == 0, 'no summary for a sweep whose first case failed')
         if (allocated(err)) return
+        read (u, '(a)') header      ! the stamp line
         read (u, '(a)') header
         read (u, '(a)') row1
         read (u, '(a)') row2
@@ -783,11 +1124,11 @@ contains
         end do
         ! every file of the two-thread run equals the serial one (a race in writing once
         ! corrupted JSON files), and the merged shards give the serial summary and case files
-        ! (shards draw no sweep overlay)
+        ! (shards draw no sweep overlay and no response figure)
         call execute_command_line('bash scripts/merge_shards.sh build/test_sweep_sh/sw > /dev/null '// &
             '&& for f in build/test_sweep_j1/*; do b=$(basename $f); '// &
             'cmp -s $f build/test_sweep_j2/$b || exit 1; '// &
-            'case $b in *_sweep.*) continue;; esac; '// &
+            'case $b in *_sweep.* | *_response.*) continue;; esac; '// &
             'cmp -s $f build/test_sweep_sh/$b || exit 1; done', exitstat=exit_status)
         call check(err, exit_status == 0, 'parallel or sharded sweep differs from the serial one')
     end subroutine test_parallel_sweep

@@ -128,7 +128,14 @@ set title p_cut ? sprintf('Contact pressure (clipped at %.4g %s: %s)', p_clip, p
 set ylabel lab_p
 if (line_width > 0) {
     set y2label lab_line
-    set y2tics
+    # gnuplot 5.4 draws no automatic tics on a linked axis whose primary range is below 1
+    # (a pressure in MPa): a step of 1, 2 or 5 times a power of ten, about 5 tics
+    y2_top = line_width*((p_top < p_clip) ? p_top : p_clip)
+    y2_raw = (y2_top > 0) ? y2_top/5.0 : 1.0
+    y2_mag = 10.0**floor(log10(y2_raw))
+    y2_step = y2_mag*((y2_raw/y2_mag < 1.5) ? 1 : (y2_raw/y2_mag < 3.5) ? 2 : \
+                      (y2_raw/y2_mag < 7.5) ? 5 : 10)
+    set y2tics y2_step
     set ytics nomirror
     set link y2 via y*line_width inverse y/line_width
 }
@@ -206,7 +213,7 @@ stats data skip skip_rows u (abs(column(c_w))) nooutput
 slip_span = 0.01*STATS_max
 set yrange [*<-slip_span:slip_span<*]
 set y2label lab_n
-set y2tics
+set y2tics autofreq
 set ytics nomirror
 set autoscale y2
 # a structure with no membrane force (f = 0: no shear traction) gets a fixed axis, not

@@ -11,7 +11,7 @@
 !!     *...+....1....+....2....+....3....+....4....+....5....+....6....+....7....+....8
 !!     TITLE     Circular concrete raft, 8000 kN column load, elastic half-space
 !!     MODEL     PLATE
-!!     UNITS     kN        m
+!!     UNITS     kN        m         mm        kPa
 !!     GEOMETRY  6.0       0.6
 !!     STRUCTURE 30.0E6    0.2
 !!     SOIL      40.0E3    0.3
@@ -44,6 +44,9 @@ module deck_reader
                      GROUND_LAYERED, GROUND_BASE_ROUGH, GROUND_BASE_SMOOTH, &
                      GROUND_BASE_HALFSPACE, layer_count, ground_t, &
                      LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP
+    use physical_units, only: force_in_newtons, length_in_metres, disp_in_metres, &
+                              pressure_in_pascals, force_words, length_words, disp_words, &
+                              pressure_words
     use shape_functions, only: interp_code
     use discretization, only: fewest_elements
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
@@ -782,13 +785,41 @@ contains
     ! The cards
     ! ---------------------------------------------------------------------------------------
 
-    !> UNITS force-label length-label (labels only; default N and m).
+    !> UNITS force length [settlement-display pressure-display]: the deck's unit labels
+    !! (default N and m; never converted) and, where the deck's words are known units
+    !! (physical_units), the display units of settlements and pressures.
     subroutine read_units(st, cd)
         type(state_t), intent(inout) :: st
         type(card_t), intent(in) :: cd
+        logical :: length_known, force_known
+        st%m%units%stated = .true.
         call take_label(st, cd, 1, 'UNITS force label', st%m%units%force)
         call take_label(st, cd, 2, 'UNITS length label', st%m%units%length)
-        call check_unused(st, cd, 2)
+        call take_label(st, cd, 3, 'UNITS settlement display unit', st%m%units%disp)
+        call take_label(st, cd, 4, 'UNITS pressure display unit', st%m%units%pressure)
+        call check_unused(st, cd, 4)
+        length_known = length_in_metres(st%m%units%length) > 0.0_dp
+        force_known = force_in_newtons(st%m%units%force) > 0.0_dp
+        if (len_trim(st%m%units%disp) > 0) then
+            if (disp_in_metres(st%m%units%disp) <= 0.0_dp) then
+                call field_error(st, cd, 3, 'UNITS settlement display unit must be one of '// &
+                                 disp_words//', got '''//trim(st%m%units%disp)//'''')
+            else if (.not. length_known) then
+                call field_error(st, cd, 3, 'UNITS settlement display unit needs a known '// &
+                                 'length unit in f2 ('//length_words//'), got '''// &
+                                 trim(st%m%units%length)//'''')
+            end if
+        end if
+        if (len_trim(st%m%units%pressure) == 0) return
+        if (pressure_in_pascals(st%m%units%pressure) <= 0.0_dp) then
+            call field_error(st, cd, 4, 'UNITS pressure display unit must be one of '// &
+                             pressure_words//', got '''//trim(st%m%units%pressure)//'''')
+        else if (.not. (length_known .and. force_known)) then
+            call field_error(st, cd, 4, 'UNITS pressure display unit needs known force and '// &
+                             'length units in f1 and f2 ('//force_words//'; '//length_words// &
+                             '), got '''//trim(st%m%units%force)//''' and '''// &
+                             trim(st%m%units%length)//'''')
+        end if
     end subroutine read_units
 
     !> GEOMETRY l|a h b: b required for BEAM, must be blank for PLATE.

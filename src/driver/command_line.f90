@@ -4,10 +4,11 @@
 module command_line
     use errors, only: error_t, new_error, EXIT_INPUT
     use analysis_driver, only: run_options_t
+    use run_identity, only: program_version
     implicit none
     private
 
-    character(len=*), parameter, public :: version = '0.2.0'   !! as in fpm.toml
+    character(len=*), parameter, public :: version = program_version   !! as in fpm.toml
 
     !> What the command line asks for.
     type, public :: command_t

@@ -21,11 +21,13 @@ contains
         type(case_result_t), intent(in) :: r                 !! the case's outcome
         integer, intent(inout) :: status   !! the worst exit status so far, raised by this case's
         integer :: k
+        character(len=:), allocatable :: who
+        who = r%name//swept_text(r%label)
         if (r%status == EXIT_OK) then
-            write (log_unit, '(a)') r%name//': solved  '//console_summary(r%entries)// &
+            write (log_unit, '(a)') who//': solved  '//console_summary(r%entries)// &
                 '  -> '//out_dir//'/'//r%name//'.txt'
         else
-            write (err_unit, '(a)') 'ERROR: '//r%name//' ('//deck_path//'): '//r%message
+            write (err_unit, '(a)') 'ERROR: '//who//' ('//deck_path//'): '//r%message
         end if
         if (len(r%message) > 0 .and. r%status == EXIT_OK) &
             write (err_unit, '(a)') 'WARNING: '//r%name//': '//r%message
@@ -34,6 +36,17 @@ contains
         end do
         status = max(status, r%status)
     end subroutine report_case
+
+    !> ' [RHO=0.01 F=0.5]': the swept values of a sweep's case from its label ('case 002 of
+    !! 006: RHO=0.01 F=0.5'); '' for a deck without SWEEP ('case 1 of 1').
+    pure function swept_text(label) result(text)
+        character(len=*), intent(in) :: label   !! the case label
+        character(len=:), allocatable :: text
+        text = ''
+        if (index(label, ':') == 0) return
+        text = trim(adjustl(label(index(label, ':') + 1:)))
+        if (len(text) > 0) text = ' ['//text//']'
+    end function swept_text
 
     !> Standard-error progress: cases done of n, the elapsed time and an estimate of the time
     !! left (the mean time per case so far).

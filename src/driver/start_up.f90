@@ -1,9 +1,11 @@
 !> What every program of the project does once before any work, while it runs one thread:
 !! GSL's error handler off (its default aborts the process; every GSL status is checked
-!! instead) and the process's quadrature tables written (afterwards only read).
+!! instead), the process's quadrature tables written (afterwards only read) and the run's
+!! date and time recorded (run_identity).
 module start_up
     use gsl_wrappers, only: gsl_start
     use singular_quadrature, only: start_gauss_tables
+    use run_identity, only: record_run_time
     implicit none
     private
 
@@ -15,5 +17,6 @@ contains
     subroutine start_program()
         call gsl_start()
         call start_gauss_tables()
+        call record_run_time()
     end subroutine start_program
 end module start_up

@@ -33,10 +33,14 @@ module model
     public :: mesh_request_t, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     public :: solver_controls_t, METHOD_NEWTON, METHOD_TWOLOOP
 
-    !> The deck's unit labels (UNITS card); labels only, fricon converts nothing.
+    !> The deck's unit words (UNITS card): labels of the deck's units, which fricon never
+    !! converts, and the display units of settlements and pressures (physical_units).
     type, public :: unit_labels_t
         character(len=10) :: force = 'N'    !! force unit F
         character(len=10) :: length = 'm'   !! length unit L
+        character(len=10) :: disp = ''      !! settlement display unit ('': by default)
+        character(len=10) :: pressure = ''  !! pressure display unit ('': by default)
+        logical :: stated = .false.         !! the deck has a UNITS card
     end type unit_labels_t
 
     !> The nondimensional groups of a NONDIM card (SPEC §6, paper 5.2).

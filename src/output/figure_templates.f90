@@ -6,14 +6,14 @@ module figure_templates
 
     integer, parameter, public :: line_length = 400
 
-    public :: panel_template, sweep_template, ground_template
+    public :: panel_template, sweep_template, ground_template, response_template
 
 contains
 
     !> The lines of scripts/gnuplot/fricon_panels.gp.
     pure function panel_template() result(lines)
         character(len=line_length), allocatable :: lines(:)
-        allocate (lines(226))
+        allocate (lines(233))
         lines(1) = "# fricon figure of one case: six panels from the station fil" &
             //"e of the case."
         lines(2) = "# fricon writes output/CASE.gp: the settings below, then thi" &
@@ -203,142 +203,152 @@ contains
         lines(128) = "set ylabel lab_p"
         lines(129) = "if (line_width > 0) {"
         lines(130) = "    set y2label lab_line"
-        lines(131) = "    set y2tics"
-        lines(132) = "    set ytics nomirror"
-        lines(133) = "    set link y2 via y*line_width inverse y/line_width"
-        lines(134) = "}"
-        lines(135) = "# the true peaks are written in the legend, where no curve c" &
+        lines(131) = "    # gnuplot 5.4 draws no automatic tics on a linked axis w" &
+            //"hose primary range is below 1"
+        lines(132) = "    # (a pressure in MPa): a step of 1, 2 or 5 times a power" &
+            //" of ten, about 5 tics"
+        lines(133) = "    y2_top = line_width*((p_top < p_clip) ? p_top : p_clip)"
+        lines(134) = "    y2_raw = (y2_top > 0) ? y2_top/5.0 : 1.0"
+        lines(135) = "    y2_mag = 10.0**floor(log10(y2_raw))"
+        lines(136) = "    y2_step = y2_mag*((y2_raw/y2_mag < 1.5) ? 1 : (y2_raw/y2" &
+            //"_mag < 3.5) ? 2 : \"
+        lines(137) = "                      (y2_raw/y2_mag < 7.5) ? 5 : 10)"
+        lines(138) = "    set y2tics y2_step"
+        lines(139) = "    set ytics nomirror"
+        lines(140) = "    set link y2 via y*line_width inverse y/line_width"
+        lines(141) = "}"
+        lines(142) = "# the true peaks are written in the legend, where no curve c" &
             //"an cross them (beside their"
-        lines(136) = "# markers a steep curve did, and an opaque box hid the curve" &
+        lines(143) = "# markers a steep curve did, and an opaque box hid the curve" &
             //")"
-        lines(137) = "p_peaks = ''"
-        lines(138) = "if (p_cut) {"
-        lines(139) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
+        lines(144) = "p_peaks = ''"
+        lines(145) = "if (p_cut) {"
+        lines(146) = "    stats data skip skip_rows u c_x:((column(c_x) < x_mid) ?" &
             //" 1/0 : column(c_p)) nooutput"
-        lines(140) = "    p_right = STATS_max_y"
-        lines(141) = "    p_left = 0"
-        lines(142) = "    if (is_beam) {"
-        lines(143) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
+        lines(147) = "    p_right = STATS_max_y"
+        lines(148) = "    p_left = 0"
+        lines(149) = "    if (is_beam) {"
+        lines(150) = "        stats data skip skip_rows u c_x:((column(c_x) < x_mi" &
             //"d) ? column(c_p) : 1/0) nooutput"
-        lines(144) = "        p_left = STATS_max_y"
-        lines(145) = "    }"
-        lines(146) = "    # only the ends that are clipped: a beam loaded at one e" &
+        lines(151) = "        p_left = STATS_max_y"
+        lines(152) = "    }"
+        lines(153) = "    # only the ends that are clipped: a beam loaded at one e" &
             //"nd has one spike"
-        lines(147) = "    if (p_left > p_clip*1.0001 && p_right > p_clip*1.0001) {"
-        lines(148) = "        p_peaks = sprintf('%.4g (left), %.4g %s (right)', p_" &
+        lines(154) = "    if (p_left > p_clip*1.0001 && p_right > p_clip*1.0001) {"
+        lines(155) = "        p_peaks = sprintf('%.4g (left), %.4g %s (right)', p_" &
             //"left, p_right, p_unit)"
-        lines(149) = "    } else {"
-        lines(150) = "        p_peaks = sprintf('%.4g %s', (p_left > p_right) ? p_" &
+        lines(156) = "    } else {"
+        lines(157) = "        p_peaks = sprintf('%.4g %s', (p_left > p_right) ? p_" &
             //"left : p_right, p_unit)"
-        lines(151) = "    }"
-        lines(152) = "}"
-        lines(153) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
+        lines(158) = "    }"
+        lines(159) = "}"
+        lines(160) = "clip_marks = p_cut ? ""data skip skip_rows u c_x:((column(c_" &
             //"p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.8 lc rgb '" &
             //"#c00000' t 'clipped, peak '.p_peaks"" : ""NaN notitle"""
-        lines(154) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
+        lines(161) = "plot data skip skip_rows u c_x:(clip_p(column(c_p))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#d62728' t key_p, \"
-        lines(155) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
-        lines(156) = "unset y2label"
-        lines(157) = "unset y2tics"
-        lines(158) = "unset link y2"
-        lines(159) = "set ytics mirror"
-        lines(160) = ""
-        lines(161) = "# 3 shear traction with the friction limit +-f p. The limit " &
+        lines(162) = "     @clip_marks, @zero_line, @dummy_zone, @dummy_load"
+        lines(163) = "unset y2label"
+        lines(164) = "unset y2tics"
+        lines(165) = "unset link y2"
+        lines(166) = "set ytics mirror"
+        lines(167) = ""
+        lines(168) = "# 3 shear traction with the friction limit +-f p. The limit " &
             //"is drawn unclipped in a y range"
-        lines(162) = "# fixed at 1.15 times the clip level: where it leaves the fr" &
+        lines(169) = "# fixed at 1.15 times the clip level: where it leaves the fr" &
             //"ame it is seen to lie above the"
-        lines(163) = "# clipped markers (both clipped to one level, a sticking sta" &
+        lines(170) = "# clipped markers (both clipped to one level, a sticking sta" &
             //"tion looked as if on the limit)."
-        lines(164) = "# The true peak is written in the legend; slipping stations " &
+        lines(171) = "# The true peak is written in the legend; slipping stations " &
             //"are marked over clipped ones."
-        lines(165) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
+        lines(172) = "set title s_cut ? sprintf('Shear traction on the soil (clipp" &
             //"ed at %.4g %s)', s_clip, p_unit) : 'Shear traction on the so" &
             //"il'"
-        lines(166) = "set ylabel lab_s"
-        lines(167) = "s_peak = 0"
-        lines(168) = "if (s_cut) {"
-        lines(169) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
-        lines(170) = "    s_peak = STATS_max"
-        lines(171) = "}"
-        lines(172) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
+        lines(173) = "set ylabel lab_s"
+        lines(174) = "s_peak = 0"
+        lines(175) = "if (s_cut) {"
+        lines(176) = "    stats data skip skip_rows u (abs(column(c_s))) nooutput"
+        lines(177) = "    s_peak = STATS_max"
+        lines(178) = "}"
+        lines(179) = "stats data skip skip_rows u (column(c_state) == 2 ? 1 : 0) n" &
             //"ooutput"
-        lines(173) = "n_slip = STATS_sum"
-        lines(174) = "# (after the stats: stats keeps to the axis ranges)"
-        lines(175) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
-        lines(176) = "set yrange [-s_span:s_span]"
-        lines(177) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
+        lines(180) = "n_slip = STATS_sum"
+        lines(181) = "# (after the stats: stats keeps to the axis ranges)"
+        lines(182) = "s_span = (s_clip > 0) ? 1.15*s_clip : 1"
+        lines(183) = "set yrange [-s_span:s_span]"
+        lines(184) = "slip_marks = (n_slip > 0) ? ""data skip skip_rows u c_x:((co" &
             //"lumn(c_state) == 2) ? clip_s(column(c_s)) : 1/0) w p pt 6 ps" &
             //" 1.1 lc rgb '#ff7f0e' t 'slipping station'"" : ""NaN notitle" &
             //""""
-        lines(178) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
+        lines(185) = "clip_marks = s_cut ? ""data skip skip_rows u c_x:((abs(colum" &
             //"n(c_s)) > s_clip*1.0001) ? clip_s(column(c_s)) : 1/0) w p pt" &
             //" 9 ps 1.8 lc rgb '#c00000' t sprintf('clipped, peak %.4g %s'" &
             //", s_peak, p_unit)"" : ""NaN notitle"""
-        lines(179) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
+        lines(186) = "envelope = (friction > 0) ? ""data skip skip_rows u c_x:(fri" &
             //"ction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050' t sprint" &
             //"f('+-f %s (f = %g)', key_p, friction), data skip skip_rows u" &
             //" c_x:(-friction*column(c_p)) w l dt 3 lw 1.2 lc rgb '#505050" &
             //"' notitle"" : ""NaN notitle"""
-        lines(180) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
+        lines(187) = "plot data skip skip_rows u c_x:(clip_s(column(c_s))) w lp pt" &
             //" 7 ps 0.45 lw 2 lc rgb '#2ca02c' t key_s, \"
-        lines(181) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
+        lines(188) = "     @clip_marks, @slip_marks, @envelope, @zero_line, @dummy" &
             //"_zone, @dummy_load"
-        lines(182) = "set yrange [*:*]"
-        lines(183) = ""
-        lines(184) = "# 4 bending moments"
-        lines(185) = "set title 'Bending moment (> 0 hogging, top in tension)'"
-        lines(186) = "set ylabel lab_m"
-        lines(187) = "if (c_mt > 0) {"
-        lines(188) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(189) = "set yrange [*:*]"
+        lines(190) = ""
+        lines(191) = "# 4 bending moments"
+        lines(192) = "set title 'Bending moment (> 0 hogging, top in tension)'"
+        lines(193) = "set ylabel lab_m"
+        lines(194) = "if (c_mt > 0) {"
+        lines(195) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(189) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
+        lines(196) = "         '' skip skip_rows u c_x:c_mt w lp pt 5 ps 0.45 lw 2" &
             //" dt 2 lc rgb '#8c564b' t key_mt, \"
-        lines(190) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(191) = "} else {"
-        lines(192) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
+        lines(197) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(198) = "} else {"
+        lines(199) = "    plot data skip skip_rows u c_x:c_m w lp pt 7 ps 0.45 lw " &
             //"2 lc rgb '#9467bd' t key_m, \"
-        lines(193) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(194) = "}"
-        lines(195) = ""
-        lines(196) = "# 5 shear force"
-        lines(197) = "set title 'Shear force'"
-        lines(198) = "set ylabel lab_q"
-        lines(199) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
+        lines(200) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(201) = "}"
+        lines(202) = ""
+        lines(203) = "# 5 shear force"
+        lines(204) = "set title 'Shear force'"
+        lines(205) = "set ylabel lab_q"
+        lines(206) = "plot data skip skip_rows u c_x:c_q w lp pt 7 ps 0.45 lw 2 lc" &
             //" rgb '#17becf' t key_q, \"
-        lines(200) = "     @zero_line, @dummy_zone, @dummy_load"
-        lines(201) = ""
-        lines(202) = "# 6 slip (left axis) and membrane / axial force (right axis)"
-        lines(203) = "set title 'Interface slip and axial force'"
-        lines(204) = "set ylabel lab_slip"
-        lines(205) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
-        lines(206) = "slip_span = 0.01*STATS_max"
-        lines(207) = "set yrange [*<-slip_span:slip_span<*]"
-        lines(208) = "set y2label lab_n"
-        lines(209) = "set y2tics"
-        lines(210) = "set ytics nomirror"
-        lines(211) = "set autoscale y2"
-        lines(212) = "# a structure with no membrane force (f = 0: no shear tracti" &
+        lines(207) = "     @zero_line, @dummy_zone, @dummy_load"
+        lines(208) = ""
+        lines(209) = "# 6 slip (left axis) and membrane / axial force (right axis)"
+        lines(210) = "set title 'Interface slip and axial force'"
+        lines(211) = "set ylabel lab_slip"
+        lines(212) = "stats data skip skip_rows u (abs(column(c_w))) nooutput"
+        lines(213) = "slip_span = 0.01*STATS_max"
+        lines(214) = "set yrange [*<-slip_span:slip_span<*]"
+        lines(215) = "set y2label lab_n"
+        lines(216) = "set y2tics autofreq"
+        lines(217) = "set ytics nomirror"
+        lines(218) = "set autoscale y2"
+        lines(219) = "# a structure with no membrane force (f = 0: no shear tracti" &
             //"on) gets a fixed axis, not"
-        lines(213) = "# gnuplot's ""empty y2 range"" warning"
-        lines(214) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
+        lines(220) = "# gnuplot's ""empty y2 range"" warning"
+        lines(221) = "stats data skip skip_rows u (abs(column(c_n)) + (c_nt > 0 ? " &
             //"abs(column(c_nt)) : 0)) nooutput"
-        lines(215) = "if (STATS_max == 0) { set y2range [-1:1] }"
-        lines(216) = "if (c_nt > 0) {"
-        lines(217) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(222) = "if (STATS_max == 0) { set y2range [-1:1] }"
+        lines(223) = "if (c_nt > 0) {"
+        lines(224) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(218) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(225) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(219) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
+        lines(226) = "         '' skip skip_rows u c_x:c_nt axes x1y2 w l lw 1.5 d" &
             //"t 2 lc rgb '#7f1f3f' t key_nt, \"
-        lines(220) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(221) = "} else {"
-        lines(222) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
+        lines(227) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(228) = "} else {"
+        lines(229) = "    plot data skip skip_rows u c_x:c_slip w lp pt 7 ps 0.45 " &
             //"lw 2 lc rgb '#bcbd22' t key_slip, \"
-        lines(223) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
+        lines(230) = "         '' skip skip_rows u c_x:c_n axes x1y2 w l lw 1.5 lc" &
             //" rgb '#1f3f7f' t key_n, \"
-        lines(224) = "         @zero_line, @dummy_zone, @dummy_load"
-        lines(225) = "}"
-        lines(226) = "unset multiplot"
+        lines(231) = "         @zero_line, @dummy_zone, @dummy_load"
+        lines(232) = "}"
+        lines(233) = "unset multiplot"
     end function panel_template
 
     !> The lines of scripts/gnuplot/fricon_sweep.gp.
@@ -494,7 +504,7 @@ contains
             //" \"
         lines(102) = "     for [i=1:n] word(files, i) skip skip_rows u c_x:((colum" &
             //"n(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.5 lc r" &
-            //"gb colour(i) notitle, \"
+            //"gb '#c00000' notitle, \"
         lines(103) = "     @zero_line"
         lines(104) = ""
         lines(105) = "set title 'Shear traction on the soil'"
@@ -696,4 +706,80 @@ contains
             //"ead front lw 1.5 lc rgb '#202020'"
         lines(108) = "plot NaN notitle"
     end function ground_template
+
+    !> The lines of scripts/gnuplot/fricon_response.gp.
+    pure function response_template() result(lines)
+        character(len=line_length), allocatable :: lines(:)
+        allocate (lines(48))
+        lines(1) = "# fricon response figure: each key result of a sweep against" &
+            //" the first swept parameter, one"
+        lines(2) = "# curve per value of the other swept parameters (their combi" &
+            //"nations), read from the sweep's"
+        lines(3) = "# summary CSV (its two lines before the rows: a '#' line and" &
+            //" the header). fricon writes"
+        lines(4) = "# output/STEM_response.gp with these settings, then this tem" &
+            //"plate:"
+        lines(5) = "#   summary, response_png, title   the summary CSV and the f" &
+            //"igure (relative to gp_dir)"
+        lines(6) = "#   x_col, x_label, x_log          the first swept parameter" &
+            //"'s column and name; 1: log axis"
+        lines(7) = "#   n_keys, key_col[k], key_title[k]   the key results plott" &
+            //"ed: columns, panel titles"
+        lines(8) = "#   n_groups, group_title[g]       the curves: the combinati" &
+            //"ons of the other swept values"
+        lines(9) = "# The summary lists the cases in case order, the last SWEEP " &
+            //"varying fastest, so curve g is"
+        lines(10) = "# every n_groups-th row from row g (every n_groups::g-1); gn" &
+            //"uplot 5.4 has no row filter that"
+        lines(11) = "# keeps a curve unbroken. A failed case has empty fields: no" &
+            //" point there. A variable"
+        lines(12) = "# png_override (gnuplot -e) replaces response_png (fricon re" &
+            //"nders to a temporary name)."
+        lines(13) = "png = exists(""png_override"") ? png_override : response_png"
+        lines(14) = "n_cols = (n_keys < 4) ? n_keys : 4"
+        lines(15) = "n_rows = int((n_keys + n_cols - 1)/n_cols)"
+        lines(16) = "key_rows = (n_groups > 1) ? int((n_groups + 5)/6) : 0"
+        lines(17) = "set terminal pngcairo size 1600, 300*n_rows + 120 + 30*key_r" &
+            //"ows font 'Sans,10' noenhanced"
+        lines(18) = "set output png"
+        lines(19) = "set datafile separator comma"
+        lines(20) = "bottom = (60.0 + 30*key_rows)/(300*n_rows + 120 + 30*key_row" &
+            //"s)"
+        lines(21) = "set multiplot layout n_rows, n_cols title title font 'Sans,1" &
+            //"4' \"
+        lines(22) = "    margins 0.05, 0.98, bottom, 1.0 - 70.0/(300*n_rows + 120" &
+            //" + 30*key_rows) spacing 0.06, 0.1"
+        lines(23) = "set grid"
+        lines(24) = "set format y '%g'"
+        lines(25) = "set xlabel x_label offset 0, 0.5"
+        lines(26) = "if (x_log) { set logscale x; set format x '%g' }"
+        lines(27) = "set autoscale xfix"
+        lines(28) = "set offsets graph 0.04, graph 0.04, graph 0.08, graph 0.08"
+        lines(29) = ""
+        lines(30) = "# 12 distinguishable colours and point types; one per curve"
+        lines(31) = "array palette[12] = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f" &
+            //"0e', '#9467bd', '#8c564b', \"
+        lines(32) = "                     '#e377c2', '#17becf', '#000000', '#bcbd" &
+            //"22', '#7f7f7f', '#0b3d91']"
+        lines(33) = "colour(g) = palette[(g - 1)%12 + 1]"
+        lines(34) = "marker(g) = (g - 1)%12 + 4"
+        lines(35) = ""
+        lines(36) = "do for [k=1:n_keys] {"
+        lines(37) = "    set title key_title[k]"
+        lines(38) = "    if (k == 1 && n_groups > 1) {"
+        lines(39) = "        set key at screen 0.5, 0.01 center bottom horizontal" &
+            //" maxrows key_rows width 2 \"
+        lines(40) = "            samplen 3 spacing 1.2 font ',10' box opaque"
+        lines(41) = "    } else {"
+        lines(42) = "        unset key"
+        lines(43) = "    }"
+        lines(44) = "    plot for [g=1:n_groups] summary skip 2 every n_groups::(" &
+            //"g - 1) \"
+        lines(45) = "        u (column(x_col)):(column(key_col[k])) smooth unique" &
+            //" \"
+        lines(46) = "        w lp lw 2 pt marker(g) ps 1.1 lc rgb colour(g) t gro" &
+            //"up_title[g]"
+        lines(47) = "}"
+        lines(48) = "unset multiplot"
+    end function response_template
 end module figure_templates

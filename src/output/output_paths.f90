@@ -12,8 +12,8 @@ module output_paths
 
     integer, parameter :: path_max = 4096
 
-    !> The extensions fricon writes (a case: NAME.ext; a sweep also STEM_summary.csv and
-    !! STEM_sweep.gp, .png).
+    !> The extensions fricon writes (a case: NAME.ext; a sweep also STEM_summary.csv,
+    !! STEM_sweep.gp, .png and STEM_response.gp, .png).
     character(len=*), parameter :: output_extensions(6) = ['.txt ', '.dat ', '.csv ', &
                                                            '.json', '.gp  ', '.png ']
 
@@ -162,9 +162,7 @@ contains
             swept = .true.
         end do cases
         if (.not. swept .or. n > 1) return
-        call remove_output(dir//'/'//stem//'_summary.csv')
-        call remove_output(dir//'/'//stem//'_sweep.gp')
-        call remove_output(dir//'/'//stem//'_sweep.png')
+        call remove_sweep_outputs(dir, stem, '')
         call remove_shard_summaries(dir, stem, 0)
     end subroutine remove_stale_outputs
 
@@ -213,7 +211,8 @@ contains
         character(len=*), intent(in) :: dir, stem  !! the output folder; the deck's file stem
         character(len=*), intent(in) :: shard      !! '' or '.shard-I-of-N'
         integer :: k
-        character(len=*), parameter :: tails(2) = ['_sweep.gp ', '_sweep.png']
+        character(len=*), parameter :: tails(4) = ['_sweep.gp    ', '_sweep.png   ', &
+                                                   '_response.gp ', '_response.png']
         call remove_output(dir//'/'//stem//'_summary'//shard//'.csv.tmp')
         call remove_output(dir//'/'//stem//'_summary'//shard//'.csv')
         if (len(shard) > 0) return
@@ -284,7 +283,8 @@ contains
         else if (ends_with(name, '.json')) then
             looks_like_output = head(1:1) == '{'
         else if (ends_with(name, '.csv')) then
-            looks_like_output = head(1:5) == 'case,' .or. index(head(1:max(n, 1)), ' [') > 0
+            looks_like_output = head(1:5) == 'case,' .or. index(head(1:max(n, 1)), ' [') > 0 &
+                                .or. head(1:9) == '# fricon '
         else if (ends_with(name, '.png')) then
             looks_like_output = head(1:4) == achar(137)//'PNG'
         end if
@@ -384,7 +384,8 @@ contains
 
     !> Whether `file` (a name without its folder) is one of the outputs of a deck of file
     !! stem `stem` with n cases: STEM.ext for one case; for a sweep STEM_NNN.ext (NNN a case
-    !! number, case_number) and STEM_summary.csv, STEM_sweep.gp, STEM_sweep.png; ext one of
+    !! number, case_number) and STEM_summary.csv, STEM_sweep.gp, STEM_sweep.png,
+    !! STEM_response.gp, STEM_response.png; ext one of
     !! output_extensions, or that with .tmp (written first, then renamed).
     pure logical function writes_file(stem, n, file)
         !> the deck's file stem; a file name without its folder
@@ -399,7 +400,8 @@ contains
         end if
         if (n > 1) then
             writes_file = name == stem//'_summary.csv' .or. name == stem//'_sweep.gp' .or. &
-                          name == stem//'_sweep.png'
+                          name == stem//'_sweep.png' .or. name == stem//'_response.gp' .or. &
+                          name == stem//'_response.png'
             ! a shard's summary, STEM_summary.shard-I-of-N.csv (--shard I/N)
             if (len(name) > len(stem) + 19) writes_file = writes_file .or. &
                 (name(1:len(stem) + 15) == stem//'_summary.shard-' .and. ends_with(name, '.csv'))
@@ -430,16 +432,17 @@ contains
         character(len=:), allocatable :: files(:)
         integer :: i, k, width
         width = len(stem) + 1 + len(case_number(n, n)) + maxval(len_trim(output_extensions))
-        width = max(width, len(stem) + len('_summary.csv'))
-        allocate (character(len=width) :: files(size(output_extensions)*n + merge(3, 0, n > 1)))
+        width = max(width, len(stem) + len('_response.png'))
+        allocate (character(len=width) :: files(size(output_extensions)*n + merge(5, 0, n > 1)))
         do i = 1, n
             do k = 1, size(output_extensions)
                 files(size(output_extensions)*(i - 1) + k) = case_name(stem, i, n)// &
                                                                trim(output_extensions(k))
             end do
         end do
-        if (n > 1) files(size(files) - 2:) = [character(len=width) :: stem//'_summary.csv', &
-                                              stem//'_sweep.gp', stem//'_sweep.png']
+        if (n > 1) files(size(files) - 4:) = [character(len=width) :: stem//'_summary.csv', &
+                                              stem//'_sweep.gp', stem//'_sweep.png', &
+                                              stem//'_response.gp', stem//'_response.png']
     end function output_files
 
     !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits).

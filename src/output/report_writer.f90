@@ -29,9 +29,11 @@ module report_writer
     use method_notes, only: simplification_text, error_method_text, adaptation_lines
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
                            ground_json, write_ground_figure_settings
+    use run_identity, only: program_name, program_version, run_time, run_stamp
     implicit none
     private
 
+    public :: write_script_folder
     public :: write_data_file, write_physical_csv, write_summary_json, write_plot_script, &
               write_sweep_script, write_report, shell_safe, json_string
 
@@ -62,7 +64,8 @@ contains
     end subroutine write_physical_csv
 
     !> A station file: whitespace with `#` header lines (sep ' '), or CSV with one header line
-    !! (after a `#` line stating a layered ground, when there is one).
+    !! (after the `#` line of the program, version and run time, and a `#` line stating a
+    !! layered ground, when there is one).
     subroutine write_station_file(path, title, cols, tab, sep, err, ground)
         character(len=*), intent(in) :: path, title
         type(column_t), intent(in) :: cols(:)
@@ -73,6 +76,7 @@ contains
         integer :: u, c
         call open_temporary(path, u, err)
         if (allocated(err)) return
+        write (u, '(a)') '# '//run_stamp()
         if (present(ground)) then
             if (len(ground) > 0) write (u, '(a)') ground
         end if
@@ -154,6 +158,9 @@ contains
         if (allocated(err)) return
         un = case_units(m)
         write (u, '(a)') '{'
+        write (u, '(a)') '  "program": '//json_string(program_name)//','
+        write (u, '(a)') '  "version": '//json_string(program_version)//','
+        write (u, '(a)') '  "run_time": '//json_string(trim(run_time))//','
         write (u, '(a)') '  "case": '//json_string(name)//','
         write (u, '(a)') '  "deck": '//json_string(deck_path)//','
         ! the deck's canonical path: how a later run of the same deck, from any folder, knows
@@ -546,7 +553,8 @@ contains
         call write_figure_labels(u, cols, m%nondim, beam)
         if (beam .and. phys) then
             write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
-            call put_num(u, 'line_width', m%structure%b)
+            ! line load [F/L] = b [L] times the pressure in F/L^2 (display / its factor)
+            call put_num(u, 'line_width', m%structure%b/pressure_scale(m, cols))
             call put_text(u, 'lab_line', 'line load b p_z ['//trim(case_line_load(m))//']')
         else
             call put_num(u, 'line_width', 0.0_dp)
@@ -801,6 +809,7 @@ contains
         write (u, '(a)') ' fricon - beam / circular raft on an elastic half-space with lift-off and friction'
         write (u, '(a)') ' deck: '//deck_path//'    case: '//label
         write (u, '(a)') ' title: '//trim(m%title)
+        write (u, '(a)') ' '//run_stamp()
         write (u, '(a)') repeat('=', 100)
         if (len_trim(failure) > 0) then
             write (u, '(/,a,/,a,/)') ' *** ANALYSIS FAILED ***', ' '//failure
@@ -920,6 +929,24 @@ contains
                 ', max inner ', m%solver%max_inner
     end subroutine write_groups
 
+    !> The moment balance of a beam about x = 0, on the mid-plane (the check) and on the
+    !! bottom face (base statics): the base moment is the mid-plane one plus (h/2) times the
+    !! horizontal force, of the loads (on the top face) and of the reactions alike.
+    subroutine write_moment_checks(u, m, sol, v)
+        integer, intent(in) :: u                !! the open report
+        type(model_t), intent(in) :: m          !! the case
+        type(solution_t), intent(in) :: sol     !! reactions and loads
+        real(dp), intent(in) :: v               !! total vertical load [F]
+        real(dp) :: half_h
+        half_h = 0.5_dp*m%structure%h
+        write (u, '(3x,a,2es16.8,a,es9.2,a)') 'moment:     reaction, load ', sol%reaction(3), &
+            sol%applied(3), '  rel.diff ', rel_diff(sol%reaction(3), sol%applied(3), &
+            v*m%structure%length), '  (about x = 0 on the mid-plane z = 0)'
+        write (u, '(3x,a,2es16.8,a)') '            the same about x = 0 on the base z = h/2 ', &
+            sol%reaction(3) + half_h*sol%reaction(2), sol%applied(3) + half_h*sol%applied(2), &
+            '  (mid-plane + (h/2) H: base statics)'
+    end subroutine write_moment_checks
+
     subroutine write_conventions(u, m)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
@@ -935,6 +962,12 @@ contains
         if (m%structure%kind == MODEL_BEAM) then
             write (u, '(a)') '   BEAM: sigma are line loads (force/length) over the width b; '// &
                 'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh (w''-psi).'
+            write (u, '(a)') '   M is the moment about the mid-plane. A MOMENT load M0 > 0 turns '// &
+                'the beam clockwise as the figure draws it'
+            write (u, '(a)') '   (x to the right, w down: the +x side settles more); M drops by '// &
+                'M0 across it. A horizontal load F_x'
+            write (u, '(a)') '   on the top face acts h/2 above the mid-plane: M drops by '// &
+                'F_x h/2 across it (at once at a POINT load).'
             write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F l^2), '// &
                 'Sigma = l sigma/F, N/F, M/(F l), Q/F.'
         else
@@ -1184,9 +1217,7 @@ contains
             sol%applied(1), '  rel.diff ', rel_diff(sol%reaction(1), sol%applied(1), v)
         write (u, '(3x,a,2es16.8,a,es9.2)') 'horizontal: reaction, load ', sol%reaction(2), &
             sol%applied(2), '  rel.diff ', rel_diff(sol%reaction(2), sol%applied(2), v)
-        if (m%structure%kind == MODEL_BEAM) write (u, '(3x,a,2es16.8,a,es9.2)') &
-            'moment:     reaction, load ', sol%reaction(3), sol%applied(3), '  rel.diff ', &
-            rel_diff(sol%reaction(3), sol%applied(3), v*m%structure%length)
+        if (m%structure%kind == MODEL_BEAM) call write_moment_checks(u, m, sol, v)
         write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z gap|/max W at lift-off '// &
             'stations ', tab%complementarity, '  (penalty: O(eta_bar))'
         write (u, '(3x,a,es10.2,a)') 'compatibility max |pointwise gap|/max w at contact '// &

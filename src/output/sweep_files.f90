@@ -9,6 +9,8 @@ module sweep_files
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: remove_output, remove_shard_summaries, remove_sweep_outputs
     use case_files, only: case_result_t, render_png
+    use run_identity, only: run_stamp
+    use response_figure, only: swept_values, write_response_script
     implicit none
     private
 
@@ -53,11 +55,11 @@ contains
             call write_summary_csv(out_dir//'/'//stem//'_summary.csv', cases(1), results, err)
             if (.not. allocated(err)) call write_sweep_plot(out_dir, stem, cases, results, &
                                                             figures, err)
+            if (.not. allocated(err)) call write_response_plot(out_dir, stem, cases(1)%title, &
+                                                               results, figures, err)
             if (allocated(err)) then
-                ! no summary or overlay of an earlier run beside this run's cases
-                call remove_output(out_dir//'/'//stem//'_summary.csv')
-                call remove_output(out_dir//'/'//stem//'_sweep.gp')
-                call remove_output(out_dir//'/'//stem//'_sweep.png')
+                ! no summary or figure of an earlier run beside this run's cases
+                call remove_sweep_outputs(out_dir, stem, '')
             end if
         end if
     end subroutine write_sweep_outputs
@@ -96,6 +98,26 @@ contains
         if (figures) call render_png(out_dir//'/'//stem//'_sweep', note)
     end subroutine write_sweep_plot
 
+    !> output/STEM_response.gp and .png (response_figure); an earlier run's are removed
+    !! when this run has none (no solved case, or no figures for the PNG).
+    subroutine write_response_plot(out_dir, stem, title, results, figures, err)
+        character(len=*), intent(in) :: out_dir, stem, title
+        type(case_result_t), intent(in) :: results(:)
+        logical, intent(in) :: figures
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: base, note
+        logical :: written
+        base = out_dir//'/'//stem//'_response'
+        call write_response_script(base//'.gp', stem, title, results, written, err)
+        if (allocated(err)) return
+        if (.not. written) call remove_output(base//'.gp')
+        if (written .and. figures) then
+            call render_png(base, note)
+        else
+            call remove_output(base//'.png')
+        end if
+    end subroutine write_response_plot
+
     !> A sweep label as one quoted gnuplot word (for word() and the legend):
     !! 'case 002 of 006: RHO=0.01 F=0.5' -> 'RHO=0.01 F=0.5' in single quotes.
     pure function one_word(label) result(word)
@@ -111,7 +133,8 @@ contains
         word = "'"//word//"'"
     end function one_word
 
-    !> output/STEM_summary.csv: one row per case, with the key results of summary_table
+    !> output/STEM_summary.csv: a `#` line (program, version, run time), the header, one row
+    !! per case, with the key results of summary_table
     !! (display units, named in the header); a failed case has empty result fields.
     subroutine write_summary_csv(path, m, results, err)
         character(len=*), intent(in) :: path
@@ -119,19 +142,32 @@ contains
         type(case_result_t), intent(in) :: results(:)
         type(error_t), allocatable, intent(out) :: err
         character(len=32), allocatable :: keys(:)
+        character(len=16), allocatable :: names(:), texts(:)
+        real(dp), allocatable :: values(:)
         integer :: u, i, k
         keys = entry_keys(m)
+        call swept_values(results(1)%label, names, texts, values)
         call open_temporary(path, u, err)
         if (allocated(err)) return
-        write (u, '(a)', advance='no') 'case,parameters,status,rho,outer_iterations,elements'
+        write (u, '(a)') '# '//run_stamp()
+        write (u, '(a)', advance='no') 'case,parameters'
+        do k = 1, size(names)
+            write (u, '(a)', advance='no') ','//trim(names(k))
+        end do
+        write (u, '(a)', advance='no') ',status,rho,outer_iterations,elements'
         do k = 1, size(keys)
             write (u, '(a)', advance='no') ','//trim(keys(k))//unit_suffix(results, k)
         end do
         write (u, '(a)') ',message'
         do i = 1, size(results)
             associate (r => results(i))
-                write (u, '(a,",",a,",",i0,",",es15.7,",",i0,",",i0)', advance='no') r%name, &
-                    '"'//r%label//'"', r%status, r%rho, r%n_outer, r%elements
+                write (u, '(a,",",a)', advance='no') r%name, '"'//r%label//'"'
+                call swept_values(r%label, names, texts, values)
+                do k = 1, size(values)
+                    write (u, '(",",es15.7)', advance='no') values(k)
+                end do
+                write (u, '(",",i0,",",es15.7,",",i0,",",i0)', advance='no') r%status, r%rho, &
+                    r%n_outer, r%elements
                 do k = 1, size(keys)
                     if (r%status /= EXIT_OK .or. .not. allocated(r%entries)) then
                         write (u, '(a)', advance='no') ','

@@ -7,7 +7,9 @@
 !! Display units for physical decks: settlements in mm when the deck's length unit is `m`
 !! (else in the deck's length unit); pressures as force/length^2 with the usual SI name (kPa
 !! for kN and m); beam tractions as line loads (force/length, the unknowns of the model) and
-!! as pressures over the width b; plate resultants per unit length.
+!! as pressures over the width b; plate resultants per unit length. The UNITS card's f3 and
+!! f4 choose the settlement and pressure units instead (physical_units: the deck's words are
+!! then known units, and the factors their ratios).
 !!
 !! Nondimensional groups (SPEC §6; F the total vertical load, l or a the length, D or EI the
 !! flexural rigidity): beam W = EI w/(F l^3), Psi = EI psi/(F l^2), Sigma = l sigma/F,
@@ -16,6 +18,8 @@ module case_scales
     use kinds, only: dp
     use model, only: model_t, MODEL_BEAM, flexural_rigidity, total_vertical_load, &
                      traction_measure
+    use physical_units, only: force_in_newtons, length_in_metres, disp_in_metres, &
+                              pressure_in_pascals
     implicit none
     private
 
@@ -26,6 +30,7 @@ module case_scales
         real(dp) :: disp_factor = 1.0e3_dp      !! deck length -> disp unit
         character(len=16) :: force = 'kN'
         character(len=16) :: pressure = 'kPa'   !! force/length^2
+        real(dp) :: pressure_factor = 1.0_dp    !! deck force/length^2 -> pressure unit
         character(len=16) :: line_load = 'kN/m' !! force/length
         character(len=16) :: moment = 'kN.m'    !! force*length
     end type units_t
@@ -68,6 +73,16 @@ contains
         un%pressure = pressure_unit(m%units%force, m%units%length)
         un%line_load = trim(m%units%force)//'/'//trim(m%units%length)
         un%moment = trim(m%units%force)//'.'//trim(m%units%length)
+        if (m%nondim) return
+        if (len_trim(m%units%disp) > 0) then
+            un%disp = m%units%disp
+            un%disp_factor = length_in_metres(m%units%length)/disp_in_metres(m%units%disp)
+        end if
+        if (len_trim(m%units%pressure) > 0) then
+            un%pressure = m%units%pressure
+            un%pressure_factor = force_in_newtons(m%units%force)/ &
+                (length_in_metres(m%units%length)**2*pressure_in_pascals(m%units%pressure))
+        end if
     end function case_units
 
     !> The SI name of force/length^2 where there is one (kN/m^2 = kPa), else 'F/L^2'.
@@ -99,6 +114,7 @@ contains
         end if
         k = unit_scales(m)
         k%disp = k%units%disp_factor
+        k%pressure = k%units%pressure_factor
         k%u_disp = k%units%disp
         k%u_length = k%units%length
         k%u_pressure = k%units%pressure

@@ -111,9 +111,12 @@ contains
         type(column_t), allocatable :: cols(:)
         type(units_t) :: un
         character(len=16) :: traction
+        real(dp) :: s_trac
         integer :: n_before
         un = case_units(m)
         traction = merge(un%line_load, un%pressure, m%structure%kind == MODEL_BEAM)
+        ! the beam's tractions are line loads in the deck's units, the plate's pressures
+        s_trac = merge(1.0_dp, un%pressure_factor, m%structure%kind == MODEL_BEAM)
         cols = [col(merge('x', 'r', m%structure%kind == MODEL_BEAM), merge('x', 'r', &
             m%structure%kind == MODEL_BEAM), &
                     un%length, 'position', Q_X, 1.0_dp), &
@@ -122,14 +125,14 @@ contains
                 col('w', 'w', un%disp, 'settlement', Q_W, un%disp_factor), &
                 col('psi', 'psi', 'rad', 'section rotation', Q_PSI, 1.0_dp), &
                 col('sigma_x', 'sigma_x', traction, 'shear traction on the soil, element mean', &
-                    Q_SX, 1.0_dp), &
+                    Q_SX, s_trac), &
                 col('sigma_z', 'sigma_z', traction, 'contact pressure (compression > 0), '// &
-                    'element mean', Q_SZ, 1.0_dp)]
+                    'element mean', Q_SZ, s_trac)]
         if (m%structure%kind == MODEL_BEAM) then
             cols = [cols, col('p_x', 'p_x', un%pressure, 'shear stress sigma_x/b', Q_SX, &
-                              1.0_dp/m%structure%b), &
+                              un%pressure_factor/m%structure%b), &
                     col('p_z', 'p_z', un%pressure, 'contact pressure sigma_z/b', Q_SZ, &
-                        1.0_dp/m%structure%b)]
+                        un%pressure_factor/m%structure%b)]
         end if
         cols = [cols, col('gap', 'gap', un%disp, 'gap w_f - w_b (0 where in contact)', Q_GAP, &
                           un%disp_factor), &
@@ -152,14 +155,14 @@ contains
         ! the pointwise finite-element traction (see nondim_columns), last, out of the report
         n_before = size(cols)
         cols = [cols, col('sigma_x_fe', 'sigma_x_fe', traction, 'shear traction, '// &
-                          'finite-element field at the station', Q_SX_FE, 1.0_dp), &
+                          'finite-element field at the station', Q_SX_FE, s_trac), &
                 col('sigma_z_fe', 'sigma_z_fe', traction, 'contact pressure, finite-element '// &
-                    'field at the station', Q_SZ_FE, 1.0_dp)]
+                    'field at the station', Q_SZ_FE, s_trac)]
         if (m%structure%kind == MODEL_BEAM) then
             cols = [cols, col('p_x_fe', 'p_x_fe', un%pressure, 'shear stress sigma_x_fe/b', &
-                              Q_SX_FE, 1.0_dp/m%structure%b), &
+                              Q_SX_FE, un%pressure_factor/m%structure%b), &
                     col('p_z_fe', 'p_z_fe', un%pressure, 'contact pressure sigma_z_fe/b', &
-                        Q_SZ_FE, 1.0_dp/m%structure%b)]
+                        Q_SZ_FE, un%pressure_factor/m%structure%b)]
         end if
         cols(n_before + 1:)%in_report = .false.
         if (m%structure%kind == MODEL_BEAM) then
