@@ -493,7 +493,7 @@ contains
     !> gp_dir: the folder of the running script (gnuplot sets ARG0 to its path), '' for the
     !! current one; data and figure are named relative to it.
     subroutine write_script_folder(u)
-        integer, intent(in) :: u
+        integer, intent(in) :: u   !! the open .gp file
         write (u, '(a)') "gp_dir = ''"
         write (u, '(a)') "do for [i_ = strlen(ARG0):1:-1] { if (gp_dir eq '' && ARG0[i_:i_] "// &
             "eq '/') { gp_dir = ARG0[1:i_] } }"
