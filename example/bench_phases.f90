@@ -534,7 +534,7 @@ contains
             end select
         end do
         call put(u, '')
-        call put(u, '| issue 7 target |'//join_ne(r%ne, ' |'))
+        call put(u, '| target |'//join_ne(r%ne, ' |'))
         call put(u, '|---|'//repeat('---:|', size(r%ne)))
         call put(u, share_row)
         call put(u, ratio_row)

@@ -30,7 +30,7 @@ contains
 
     subroutine collect_design_values(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
-        tests = [new_unittest('beam_shear_issue_statics', test_beam_issue_statics), &
+        tests = [new_unittest('beam_shear_by_statics', test_beam_shear_statics), &
                  new_unittest('beam_resultants_by_independent_statics', test_beam_statics), &
                  new_unittest('beam_central_load_symmetry', test_beam_symmetry), &
                  new_unittest('beam_moment_slope_is_shear', test_moment_slope), &
@@ -91,7 +91,7 @@ contains
     !! the node next to the column (x = -0.64 m); a shear force not from statics prints 346 and
     !! 366 kN there (doc/OUTPUT.md, How the station values are evaluated). Both stations are
     !! nodes of the deck's EDGES mesh.
-    subroutine test_beam_issue_statics(err)
+    subroutine test_beam_shear_statics(err)
         type(error_t), allocatable, intent(out) :: err
         type(case_t) :: c
         integer :: i
@@ -104,7 +104,7 @@ contains
         i = minloc(abs(c%stations%val(Q_X, :) + 0.64069_dp), dim=1)
         call check_close(err, c%stations%val(Q_Q, i), 1190.0_dp, 5.0e-3_dp, 0.0_dp, &
                          'Q next to the column')
-    end subroutine test_beam_issue_statics
+    end subroutine test_beam_shear_statics
 
     !> Every station of a beam with a POINT load (with H) and a PATCH: Q = int sigma_z - loads
     !! left of x, N = int sigma_x - H left of x, by an independent integration of the
