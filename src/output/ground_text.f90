@@ -8,6 +8,7 @@ module ground_text
                      layer_profile, ground_depth, base_name
     implicit none
     private
+    public :: gp_number
     public :: layered, ground_model_words, write_layer_table, ground_csv_line, ground_json, &
               write_ground_figure_settings
 
@@ -161,9 +162,9 @@ contains
         write (u, '(a)') gp_number(x(size(x)))//']'
     end subroutine put_array
 
-    !> A number for a gnuplot script (full precision).
+    !> A number for a gnuplot script (full precision; the figure settings of every case).
     pure function gp_number(x) result(text)
-        real(dp), intent(in) :: x
+        real(dp), intent(in) :: x   !! the number
         character(len=:), allocatable :: text
         character(len=32) :: buf
         write (buf, '(es22.14e3)') x

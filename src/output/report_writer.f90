@@ -28,7 +28,7 @@ module report_writer
     use adaptive_solve, only: adaptation_t
     use method_notes, only: simplification_text, error_method_text, adaptation_lines
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
-                           ground_json, write_ground_figure_settings
+                           ground_json, write_ground_figure_settings, gp_number
     use run_identity, only: program_name, program_version, run_time, run_stamp
     implicit none
     private
@@ -473,7 +473,7 @@ contains
             write (u, '(a)') "files = files.' '.gp_dir.'"//trim(names(i))// &
                 trim(merge('.dat', '.csv', m%nondim))//"'"
             write (u, '(a)') 'labels = labels." '//trim(labels(i))//'"'
-            write (u, '(a)') "p_means = p_means.' "//num(means(i)*pressure_scale(m, cols))//"'"
+            write (u, '(a)') "p_means = p_means.' "//gp_number(means(i)*pressure_scale(m, cols))//"'"
         end do
         write (u, '(a)') "sweep_png = gp_dir.'"//stem//"_sweep.png'"
         write (u, '(a)') "title = 'fricon: "//trim(shell_safe(m%title))//" (sweep)'"
@@ -481,14 +481,6 @@ contains
         call commit_file(path, u, err)
     end subroutine write_sweep_script
 
-    !> A number for a gnuplot script (full precision).
-    pure function num(x) result(text)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: text
-        character(len=32) :: buf
-        write (buf, '(es22.14e3)') x
-        text = trim(adjustl(buf))
-    end function num
 
     !> gp_dir: the folder of the running script (gnuplot sets ARG0 to its path), '' for the
     !! current one; data and figure are named relative to it.
@@ -719,7 +711,7 @@ contains
         integer, intent(in) :: u                   !! the open .gp file
         character(len=*), intent(in) :: name       !! variable
         real(dp), intent(in) :: x                  !! its value
-        write (u, '(a)') name//' = '//num(x)
+        write (u, '(a)') name//' = '//gp_number(x)
     end subroutine put_num
 
     !> The loads of the figure settings as gnuplot arrays: kind letter (P point, M moment,
@@ -753,12 +745,12 @@ contains
         write (u, '(a)') ''
         write (u, '(a)', advance='no') 'array load_x1['//int_text(n)//'] = ['
         do k = 1, n
-            write (u, '(a)', advance='no') num(loads(k)%x1*xs)//after(k)
+            write (u, '(a)', advance='no') gp_number(loads(k)%x1*xs)//after(k)
         end do
         write (u, '(a)') ''
         write (u, '(a)', advance='no') 'array load_x2['//int_text(n)//'] = ['
         do k = 1, n
-            write (u, '(a)', advance='no') num(merge(loads(k)%x2, loads(k)%x1, &
+            write (u, '(a)', advance='no') gp_number(merge(loads(k)%x2, loads(k)%x1, &
                 loads(k)%kind == LOAD_PATCH)*xs)//after(k)
         end do
         write (u, '(a)') ''
