@@ -49,7 +49,8 @@ contains
                  new_unittest('sweep_with_unwritten_case_has_no_summary', test_unwritten_case), &
                  new_unittest('moments_about_mid_plane_and_base', test_moment_conventions), &
                  new_unittest('epoch_to_iso_time', test_epoch_time), &
-                 new_unittest('version_and_run_time_in_every_file', test_traceability)]
+                 new_unittest('version_and_run_time_in_every_file', test_traceability), &
+                 new_unittest('springs_file_only_where_meaningful', test_springs_file)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -685,6 +686,54 @@ contains
                    file_has_line(dir//'/tr.json', '  "run_time": "'//trim(run_time)//'",'), &
                    'JSON: program, version or run_time missing')
     end subroutine test_traceability
+
+    !> CASE_springs.csv is one of a deck's outputs (writes_file: the overwrite and
+    !! stale-output checks know it); a solved physical deck writes it; the same case run
+    !! again as a NONDIM deck, or failing (H = 600 kN above f V = 500 kN: no equilibrium),
+    !! writes none and leaves no springs file of the earlier run.
+    subroutine test_springs_file(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: status
+        character(len=80), allocatable :: lines(:)
+        call check(err, writes_file('s', 1, 's_springs.csv') .and. writes_file('s', 1, &
+                   's_springs.csv.tmp') .and. writes_file('s', 12, 's_003_springs.csv') .and. &
+                   .not. writes_file('s', 12, 's_springs.csv') .and. .not. writes_file('s', 1, &
+                   's_001_springs.csv'), 'writes_file: the springs file''s names')
+        if (allocated(err)) return
+        call clean_dir()
+        call run_springs_deck(beam_deck([character(len=4) ::]), status)
+        call check(err, status == EXIT_OK .and. exists(dir//'/sp_springs.csv'), &
+                   'a solved physical deck wrote no springs file')
+        if (allocated(err)) return
+        call run_springs_deck([character(len=80) :: card('MODEL', ['BEAM']), card('NONDIM', &
+            ['0.01 ', '0.1  ', '0.3  ', '0.1  ', '0.05 ']), card('FRICTION', ['0.5']), &
+            card('LOAD', ['POINT', '1.0  ', '     ', '0.0  ']), card('END', [' '])], status)
+        call check(err, status == EXIT_OK .and. .not. exists(dir//'/sp_springs.csv') .and. &
+                   .not. exists(dir//'/sp.csv'), 'NONDIM deck: a springs file or CSV left')
+        if (allocated(err)) return
+        call run_springs_deck(beam_deck([character(len=4) ::]), status)
+        call check(err, status == EXIT_OK .and. exists(dir//'/sp_springs.csv'), &
+                   'the physical deck run again wrote no springs file')
+        if (allocated(err)) return
+        lines = beam_deck([character(len=4) ::])
+        lines(7) = card('LOAD', ['POINT ', '1000.0', '600.0 ', '0.0   '])
+        call run_springs_deck(lines, status)
+        call check(err, status == EXIT_ANALYSIS .and. exists(dir//'/sp.txt') .and. .not. &
+                   exists(dir//'/sp_springs.csv'), 'failed case: a springs file left')
+    contains
+        subroutine run_springs_deck(deck_lines, status)
+            character(len=*), intent(in) :: deck_lines(:)
+            integer, intent(out) :: status
+            type(error_t), allocatable :: perr
+            call parse_deck('sp.dat', deck_lines, deck, perr)
+            status = -1
+            if (allocated(perr)) return
+            deck%stem = 'sp'
+            call run_analysis(deck, dir, output_unit, error_unit, status, &
+                              run_options_t(figures=.false.))
+        end subroutine run_springs_deck
+    end subroutine test_springs_file
 
     !> 'YYYY-MM-DDTHH:MM:SS+HH:MM' (or -HH:MM): digits and separators where ISO 8601 has them.
     pure logical function iso_shape(text)

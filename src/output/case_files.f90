@@ -11,6 +11,7 @@ module case_files
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
                              write_plot_script, write_report
     use output_paths, only: remove_output, canonical_path
+    use spring_file, only: has_springs, write_springs_csv
     use temporary_cleanup, only: register_temporary, release_temporary
     use file_system, only: move_file, delete_file
     use figure_renderer, only: renderer_t, draw_figure, stop_renderer, FIGURE_DRAWN, &
@@ -100,7 +101,8 @@ contains
         end associate
     end subroutine write_failed_case
 
-    !> A solved case's data file, CSV (physical decks), JSON summary and figure script;
+    !> A solved case's data file, CSV and springs CSV (physical decks; the springs with P1
+    !! displacements: spring_file), JSON summary and figure script;
     !! `written` is false when one of them could not be written (then none is left).
     subroutine write_case_data(deck, c, base, figures, result, written)
         type(deck_t), intent(in) :: deck             !! the deck (its path in the JSON)
@@ -121,6 +123,10 @@ contains
         ! no figure or CSV of an earlier run beside results that have none
         if (.not. allocated(err) .and. .not. figures) call remove_output(base//'.png')
         if (.not. allocated(err) .and. m%nondim) call remove_output(base//'.csv')
+        if (.not. allocated(err) .and. has_springs(m, c%d)) call write_springs_csv( &
+            base//'_springs.csv', m, c%d, sol, c%design, err)
+        if (.not. allocated(err) .and. .not. has_springs(m, c%d)) &
+            call remove_output(base//'_springs.csv')
         if (.not. allocated(err)) call write_plot_script(base//'.gp', result%name, m, &
                                                          result%label, s, err)
         written = .not. allocated(err)
@@ -170,7 +176,8 @@ contains
     !! ANALYSIS FAILED report.
     subroutine remove_stale(base)
         character(len=*), intent(in) :: base
-        character(len=*), parameter :: ext(5) = ['.dat', '.csv', '.gp ', '.png', '.txt']
+        character(len=*), parameter :: ext(6) = ['.dat        ', '.csv        ', &
+            '.gp         ', '.png        ', '.txt        ', '_springs.csv']
         call remove_files(base, ext)
     end subroutine remove_stale
 
@@ -195,8 +202,9 @@ contains
     !! (NAME.ext.tmp): removed before the case writes, so none is ever taken for a result.
     subroutine remove_temporaries(base)
         character(len=*), intent(in) :: base
-        character(len=*), parameter :: ext(6) = ['.dat.tmp ', '.csv.tmp ', '.gp.tmp  ', &
-                                                 '.png.tmp ', '.txt.tmp ', '.json.tmp']
+        character(len=*), parameter :: ext(7) = ['.dat.tmp        ', '.csv.tmp        ', &
+            '.gp.tmp         ', '.png.tmp        ', '.txt.tmp        ', '.json.tmp       ', &
+            '_springs.csv.tmp']
         call remove_files(base, ext)
     end subroutine remove_temporaries
 

@@ -12,10 +12,10 @@ module output_paths
 
     integer, parameter :: path_max = 4096
 
-    !> The extensions fricon writes (a case: NAME.ext; a sweep also STEM_summary.csv,
-    !! STEM_sweep.gp, .png and STEM_response.gp, .png).
-    character(len=*), parameter :: output_extensions(6) = ['.txt ', '.dat ', '.csv ', &
-                                                           '.json', '.gp  ', '.png ']
+    !> The endings fricon writes (a case: NAME.ext and NAME_springs.csv; a sweep also
+    !! STEM_summary.csv, STEM_sweep.gp, .png and STEM_response.gp, .png).
+    character(len=*), parameter :: output_extensions(7) = ['.txt        ', '.dat        ', &
+        '.csv        ', '.json       ', '.gp         ', '.png        ', '_springs.csv']
 
     interface
         ! char *realpath(const char *path, char *resolved_path);
