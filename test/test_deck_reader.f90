@@ -15,7 +15,7 @@ module test_deck_reader
     use plausibility, only: input_warnings, settlement_warnings, warning_length
     implicit none
     private
-    public :: collect_deck_reader
+    public :: collect_deck_reader, card
 
     integer, parameter :: w = 200                          !! width of test lines
     character(len=*), parameter :: bad = 'test/bad.dat'    !! deck name of the error tests

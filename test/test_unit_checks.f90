@@ -9,11 +9,12 @@ module test_unit_checks
     use deck_reader, only: deck_t, parse_deck
     use plausibility, only: input_warnings, warning_length
     use case_scales, only: units_t, case_units
+    use test_deck_reader, only: card
     implicit none
     private
     public :: collect_unit_checks
 
-    integer, parameter :: w = 80   !! width of test lines
+    integer, parameter :: w = 200   !! width of test lines (as test_deck_reader%card)
 
 contains
 
@@ -28,21 +29,6 @@ contains
                  new_unittest('display_word_errors', test_display_errors)]
     end subroutine collect_unit_checks
 
-    !> A card with the name in columns 1-10 and the fields left-justified in f1..f7.
-    pure function card(name, f1, f2, f3, f4, f5) result(line)
-        character(len=*), intent(in) :: name
-        character(len=*), intent(in), optional :: f1, f2, f3, f4, f5
-        character(len=w) :: line
-        character(len=10) :: field(5)
-        field = ''
-        if (present(f1)) field(1) = f1
-        if (present(f2)) field(2) = f2
-        if (present(f3)) field(3) = f3
-        if (present(f4)) field(4) = f4
-        if (present(f5)) field(5) = f5
-        line = name
-        line(11:60) = field(1)//field(2)//field(3)//field(4)//field(5)
-    end function card
 
     !> A beam with the given UNITS card and numbers (l, h, b, E, E_f, F_z as text).
     pure function beam(units, geometry, e, e_f, f_z) result(lines)
