@@ -49,6 +49,10 @@ module deck_reader
                               pressure_words
     use shape_functions, only: interp_code
     use discretization, only: fewest_elements
+    use load_combinations, only: load_set_t, combination_count, combination_loads, &
+                                 combination_text
+    use deck_combinations, only: combination_cards_t, read_loadcase_card, read_combine_card, &
+                                 note_load_card, accept_load_card, finish_load_set
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
                            FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
                            RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_OPEN_UNIT, RULE_COUNT, &
@@ -59,6 +63,7 @@ module deck_reader
     private
 
     public :: read_deck, parse_deck, case_count, case_model, default_deck_lines
+    public :: combination_names
 
     !> One SWEEP card: the parameter and its values (value k sits in field k+1, v_k).
     type, public :: sweep_t
@@ -74,6 +79,7 @@ module deck_reader
         character(len=80), allocatable :: lines(:)   !! raw lines, for the input echo (index = line)
         type(model_t) :: base                        !! the problem, after complete_model
         type(sweep_t), allocatable :: sweeps(:)      !! SWEEP cards in deck order
+        type(load_set_t) :: load_set                 !! LOADCASE and COMBINE cards (or none)
         logical :: from_file = .false.               !! read from the file `path` (read_deck);
                                                      !! the built-in default is not
     end type deck_t
@@ -82,13 +88,16 @@ module deck_reader
     integer, parameter :: C_TITLE = 1, C_MODEL = 2, C_UNITS = 3, C_GEOMETRY = 4, &
                           C_STRUCTURE = 5, C_SOIL = 6, C_NONDIM = 7, C_FRICTION = 8, &
                           C_LOAD = 9, C_MESH = 10, C_SOLVER = 11, C_OUTPUT = 12, C_SWEEP = 13, &
-                          C_END = 14, C_ADAPT = 15, C_LAYER = 16, C_BASE = 17
-    integer, parameter :: n_cards = 17
+                          C_END = 14, C_ADAPT = 15, C_LAYER = 16, C_BASE = 17, &
+                          C_LOADCASE = 18, C_COMBINE = 19
+    integer, parameter :: n_cards = 19
     character(len=9), parameter :: card_names(n_cards) = [character(len=9) :: 'TITLE', &
         'MODEL', 'UNITS', 'GEOMETRY', 'STRUCTURE', 'SOIL', 'NONDIM', 'FRICTION', 'LOAD', &
-        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT', 'LAYER', 'BASE']
+        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT', 'LAYER', 'BASE', 'LOADCASE', &
+        'COMBINE']
     character(len=*), parameter :: card_list = 'TITLE, MODEL, UNITS, GEOMETRY, STRUCTURE, '// &
-        'SOIL, LAYER, BASE, NONDIM, FRICTION, LOAD, MESH, ADAPT, SOLVER, OUTPUT, SWEEP or END'
+        'SOIL, LAYER, BASE, NONDIM, FRICTION, LOADCASE, LOAD, COMBINE, MESH, ADAPT, SOLVER, '// &
+        'OUTPUT, SWEEP or END'
 
     ! Sweepable parameters: name, range rule, deck kind (0 any, 1 NONDIM, 2 physical), model
     ! (0 any, MODEL_BEAM, MODEL_PLATE).
@@ -158,6 +167,7 @@ module deck_reader
         integer, allocatable :: sweep_cards(:)   !! card index of each accepted sweep
         integer, allocatable :: layer_cards(:)   !! card index of each LAYER card
         real(dp) :: first_nu = -1.0_dp           !! NONDIM: the first LAYER's nu (-1 blank)
+        type(combination_cards_t) :: combos      !! LOADCASE and COMBINE cards
     end type state_t
 
 contains
@@ -265,6 +275,7 @@ contains
         call read_model_card(st)
         call check_card_set(st)
         call read_cards(st)
+        call finish_load_set(st%combos, st%m%nondim, st%diag)
         call check_ground_cards(st)
         call check_layer_sweeps(st)
         call check_adapt(st)
@@ -274,6 +285,7 @@ contains
         if (st%diag%n == 0) call complete_model(st%m)
         deck%base = st%m
         deck%sweeps = st%sweeps
+        deck%load_set = st%combos%set
         if (st%diag%n > 0) call new_error(err, EXIT_INPUT, &
             render_diagnostics(st%diag, name, '; execution not attempted'))
     end subroutine parse_deck
@@ -282,16 +294,30 @@ contains
     pure integer function case_count(deck)
         type(deck_t), intent(in) :: deck   !! a parsed deck
         integer :: s
-        case_count = 1
+        case_count = max(1, combination_count(deck%load_set))
         if (.not. allocated(deck%sweeps)) return
         do s = 1, size(deck%sweeps)
             case_count = case_count*size(deck%sweeps(s)%values)
         end do
     end function case_count
 
-    !> The i-th combination of the sweeps applied to the base problem (last SWEEP fastest),
-    !! completed and re-validated; label lists the swept values ('RHO=0.0025 F=0.6', '' if no
-    !! SWEEP). A swept value out of range is an input error naming the SWEEP line and field.
+    !> The names of the deck's combinations, in order (none without LOADCASE cards); case i
+    !! of the deck solves combination mod(i - 1, n) + 1 of sweep point (i - 1)/n + 1.
+    pure function combination_names(deck) result(names)
+        type(deck_t), intent(in) :: deck   !! a parsed deck
+        character(len=10), allocatable :: names(:)
+        integer :: k
+        allocate (names(combination_count(deck%load_set)))
+        do k = 1, size(names)
+            names(k) = deck%load_set%combinations(k)%name
+        end do
+    end function combination_names
+
+    !> The i-th combination of the sweeps applied to the base problem (last SWEEP fastest,
+    !! the load combinations faster still), completed and re-validated; label lists the swept
+    !! values and the load combination ('RHO=0.0025 F=0.6', 'E_F=2.0E4 ULS = 1.35 G + 1.5 Q',
+    !! '' if neither). A swept value out of range is an input error naming the SWEEP line and
+    !! field.
     subroutine case_model(deck, i, m, label, err)
         type(deck_t), intent(in) :: deck                       !! a parsed deck
         integer, intent(in) :: i                               !! case number 1..case_count
@@ -300,7 +326,7 @@ contains
         type(error_t), allocatable, intent(out) :: err         !! allocated on failure
         type(diagnostics_t) :: diag
         integer, allocatable :: pick(:)
-        integer :: s
+        integer :: s, n_comb
 
         label = ''
         m = deck%base
@@ -309,7 +335,8 @@ contains
                            ' outside 1..'//int_text(case_count(deck)))
             return
         end if
-        pick = case_indices(deck, i)
+        n_comb = max(1, combination_count(deck%load_set))
+        pick = case_indices(deck, (i - 1)/n_comb + 1)
         do s = 1, size(pick)
             associate (sw => deck%sweeps(s))
                 if (trim(sw%name) /= 'DEPTH') call apply_sweep(m, sw%name, sw%values(pick(s)))
@@ -324,6 +351,13 @@ contains
             call apply_sweep(m, 'DEPTH', deck%sweeps(s)%values(pick(s)))
             call check_layer_depth(deck, m, deck%sweeps(s), pick(s), diag)
         end do
+        if (combination_count(deck%load_set) > 0) then
+            ! the factored loads on the structure of this sweep point (its self-weight)
+            m%loads = combination_loads(deck%load_set, deck%base%loads, m%structure, &
+                                        mod(i - 1, n_comb) + 1)
+            if (len(label) > 0) label = label//' '
+            label = label//combination_text(deck%load_set, mod(i - 1, n_comb) + 1)
+        end if
         call complete_model(m)
         call check_element_count(deck, m, pick, diag)
         call check_beam_width(deck, m, pick, diag)
@@ -584,10 +618,11 @@ contains
                 field_hint, echo_text(card))
             if (st%unreadable_line(id) == 0) st%unreadable_line(id) = i
         else if (st%first_line(id) > 0 .and. id /= C_LOAD .and. id /= C_SWEEP .and. &
-                 id /= C_LAYER) then
+                 id /= C_LAYER .and. id /= C_LOADCASE .and. id /= C_COMBINE) then
             call add_diagnostic(st%diag, i, 1, len_trim(name), 'duplicate '// &
                 trim(card_names(id))//' card (first given at line '// &
-                int_text(st%first_line(id))//'); only LOAD, SWEEP and LAYER may repeat', &
+                int_text(st%first_line(id))//'); only LOADCASE, LOAD, COMBINE, SWEEP and '// &
+                'LAYER may repeat', &
                 echo_text(card))
         else
             call append_card(st, card_t(id=id, line=i, text=card))
@@ -775,6 +810,12 @@ contains
                 call check_unused(st, st%cards(k), 1)
             case (C_SWEEP)
                 call read_sweep(st, k)
+            case (C_LOADCASE)
+                call read_loadcase_card(st%combos, st%cards(k)%line, st%cards(k)%text, st%diag)
+            case (C_COMBINE)
+                call read_combine_card(st%combos, st%cards(k)%line, st%cards(k)%text, &
+                                       st%cards(max(k - 1, 1))%id == C_COMBINE .and. k > 1, &
+                                       st%diag)
             case (C_END)
                 call check_unused(st, st%cards(k), 0)
             end select
@@ -1166,6 +1207,8 @@ contains
         character(len=field_width) :: word
         type(load_t) :: ld
         integer :: s, n_before
+        call note_load_card(st%combos, .not. missing(st, C_LOADCASE), st%cards(k)%line, &
+                            st%cards(k)%text, st%diag)
         n_before = st%diag%n
         associate (cd => st%cards(k))
             ld%line = cd%line
@@ -1181,6 +1224,7 @@ contains
         end if
         st%m%loads = [st%m%loads, ld]
         st%load_cards = [st%load_cards, k]
+        call accept_load_card(st%combos)
     end subroutine read_load
 
     !> The numbers of a LOAD card; which are required depends on the kind.

@@ -5,13 +5,15 @@ module analysis_driver
     use kinds, only: dp
     use errors, only: error_t, add_context, EXIT_OK, EXIT_INPUT
     use model, only: model_t, relative_stiffness, METHOD_TWOLOOP
-    use deck_reader, only: deck_t, case_count, case_model
+    use deck_reader, only: deck_t, case_count, case_model, combination_names
     use plausibility, only: warning_length, input_warnings
     use solved_case, only: case_t
     use case_quality, only: solve_to_quality
     use case_files, only: case_result_t, write_case_files
     use figure_renderer, only: renderer_t, stop_renderer
     use sweep_files, only: write_sweep_outputs
+    use design_envelope, only: design_values
+    use combination_runs, only: write_run_envelope
     use console, only: report_case, report_progress, seconds
     use output_paths, only: prepare_output_dir, check_deck_not_overwritten, case_name, &
                             case_number, remove_stale_outputs
@@ -63,8 +65,10 @@ contains
         type(flexibility_cache_t) :: cache
         type(renderer_t), allocatable :: renderers(:)   !! one gnuplot per thread
         integer :: i, n, done, threads, blas_before, big_case_unit, thread
+        character(len=10), allocatable :: tags(:)
 
         n = case_count(deck)
+        tags = combination_names(deck)
         allocate (results(n))
         call case_models(deck, err_unit, cases, labels, status)
         if (status /= EXIT_OK) then
@@ -76,7 +80,7 @@ contains
         if (opt%full_model) cases(:)%solver%simplify = .false.
         call prepare_output_dir(out_dir, err)
         if (.not. allocated(err)) call check_deck_not_overwritten(deck%path, out_dir, deck%stem, &
-                                                                  n, err)
+                                                                  n, err, tags)
         if (allocated(err)) then
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = err%code
@@ -116,7 +120,8 @@ contains
             if (.not. selected(i)) cycle cases_loop
             thread = 1
             !$ thread = omp_get_thread_num() + 1
-            call run_case(deck, cases(i), trim(labels(i)), out_dir, case_name(deck%stem, i, n), &
+            call run_case(deck, cases(i), trim(labels(i)), out_dir, &
+                            case_name(deck%stem, i, n, tags), &
                             opt%figures, opt%estimates, big_case_unit, results(i), cache, &
                             renderers(thread))
             !$omp critical (fricon_progress)
@@ -140,9 +145,11 @@ contains
             write (err_unit, '(a)') 'ERROR: '//err%message
             status = max(status, err%code)
         end if
+        if (size(tags) > 0) call write_run_envelope(deck, out_dir, results, opt%shard_count, &
+                                                    log_unit, err_unit, status)
         ! what an earlier run of this deck wrote and this one did not (a longer sweep, a sweep
         ! where there is now one case, or one case where there is now a sweep)
-        if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, n, deck%path)
+        if (deck%from_file) call remove_stale_outputs(out_dir, deck%stem, n, deck%path, tags)
     end subroutine run_analysis
 
     !> The model and the label of every case of the deck; every input error of every case is
@@ -256,6 +263,7 @@ contains
             allocate (result%entries(0))
         else
             result%entries = c%entries
+            result%values = design_values(c)
             result%mean_pressure = c%summary%mean_pressure
         end if
         call write_case_files(deck, c, out_dir//'/'//name, figures, result, renderer)

@@ -68,17 +68,19 @@ contains
     !> Refuse (exit status 1) when an output of the deck would be the deck itself: the deck
     !! lies in the output folder and is named like one of the files its n cases write
     !! (writes_file).
-    subroutine check_deck_not_overwritten(deck_path, dir, stem, n, err)
+    subroutine check_deck_not_overwritten(deck_path, dir, stem, n, err, tags)
         !> the deck's path; the output folder; the deck's file stem
         character(len=*), intent(in) :: deck_path, dir, stem
         integer, intent(in) :: n                 !! cases of the deck
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        !> the deck's load combinations (writes_file)
+        character(len=*), intent(in), optional :: tags(:)
         character(len=:), allocatable :: deck_real, dir_real
         deck_real = canonical_path(deck_path)
         dir_real = canonical_path(dir)
         if (len(deck_real) == 0 .or. len(dir_real) == 0) return
         if (deck_real(1:len(deck_real) - len(base_name(deck_real))) /= dir_real//'/') return
-        if (.not. writes_file(stem, n, base_name(deck_real))) return
+        if (.not. writes_file(stem, n, base_name(deck_real), tags)) return
         call new_error(err, EXIT_INPUT, 'the deck '//deck_path//' lies in the output folder '// &
             dir//' and would be overwritten by one of its own outputs: give another folder '// &
             '(-o DIR) or rename the deck (decks are not overwritten)')
@@ -133,30 +135,31 @@ contains
     !! case STEM.* or STEM_NNN.* (NNN: 3 to 9 digits, not all zero) whose JSON summary records
     !! this deck's canonical path (`"deck_file"`: nothing another deck wrote is touched,
     !! whatever folder it was run from), and a sweep's STEM_summary*.csv and STEM_sweep.* when
-    !! such a case of a sweep was removed and this run is no sweep. Only files that look like
+    !! such a case of a sweep was removed and this run is no sweep. So are the files of any
+    !! other STEM_NAME.json recording this deck that this run does not write (a load
+    !! combination's, STEM_envelope.*: tags are this run's load combinations, writes_file). Only files that look like
     !! fricon's outputs are deleted (remove_output): never a deck. The cases are found in one
     !! listing of the folder (its STEM_*.json), so the cost does not grow with what else the
     !! folder holds.
-    subroutine remove_stale_outputs(dir, stem, n, deck_path)
+    subroutine remove_stale_outputs(dir, stem, n, deck_path, tags)
         !> the output folder; the deck's file stem; the deck's path
         character(len=*), intent(in) :: dir, stem, deck_path
         integer, intent(in) :: n   !! cases this run writes (0: none)
+        !> the deck's load combinations (writes_file)
+        character(len=*), intent(in), optional :: tags(:)
         character(len=:), allocatable :: deck_real, group, summaries(:)
         logical :: swept, listed
         integer :: k
         deck_real = canonical_path(deck_path)
         if (len(deck_real) == 0) return          ! no deck file: nothing can be proven its own
-        if (n /= 1) call remove_group(dir//'/'//stem, deck_real)
+        if (n /= 1 .or. tagged(tags)) call remove_group(dir//'/'//stem, deck_real)
         call folder_entries(dir, stem//'_', '.json', summaries, listed)
         if (.not. listed) return                 ! no folder, or one that cannot be listed
         swept = .false.
         cases: do k = 1, size(summaries)
             group = trim(summaries(k))
             group = group(1:len(group) - len('.json'))
-            if (.not. numbered_case(stem, group)) cycle cases
-            if (n > 1) then
-                if (writes_file(stem, n, group//'.txt')) cycle cases   ! this run's own case
-            end if
+            if (writes_file(stem, n, group//'.txt', tags)) cycle cases   ! this run's own case
             if (.not. names_deck(dir//'/'//group//'.json', deck_real)) cycle cases
             call remove_group(dir//'/'//group, deck_real)
             swept = .true.
@@ -165,18 +168,6 @@ contains
         call remove_sweep_outputs(dir, stem, '')
         call remove_shard_summaries(dir, stem, 0)
     end subroutine remove_stale_outputs
-
-    !> group is STEM_NNN, NNN 3 to 9 digits and not all zero (a case of a sweep: case_name).
-    pure logical function numbered_case(stem, group)
-        character(len=*), intent(in) :: stem, group
-        integer :: width
-        numbered_case = .false.
-        width = len(group) - len(stem) - 1
-        if (width < 3 .or. width > 9) return
-        if (group(1:len(stem) + 1) /= stem//'_') return
-        if (verify(group(len(stem) + 2:), '0123456789') /= 0) return
-        numbered_case = verify(group(len(stem) + 2:), '0') /= 0
-    end function numbered_case
 
     !> The shards' summaries STEM_summary.shard-I-of-N.csv (--shard I/N: 1 <= I <= N, N from
     !! 2 to 64) of every N but keep_n (0: all), an earlier split into another number of
@@ -387,10 +378,13 @@ contains
     !! number, case_number) and STEM_summary.csv, STEM_sweep.gp, STEM_sweep.png,
     !! STEM_response.gp, STEM_response.png; ext one of
     !! output_extensions, or that with .tmp (written first, then renamed).
-    pure logical function writes_file(stem, n, file)
+    pure logical function writes_file(stem, n, file, tags)
         !> the deck's file stem; a file name without its folder
         character(len=*), intent(in) :: stem, file
         integer, intent(in) :: n   !! the deck's cases
+        !> the deck's load combinations: the cases are named by them (case_name), and
+        !! STEM_envelope.txt, .json and .csv are written too
+        character(len=*), intent(in), optional :: tags(:)
         character(len=:), allocatable :: name, digits
         integer :: k, i, ios, n_ext
         writes_file = .false.
@@ -406,6 +400,10 @@ contains
             if (len(name) > len(stem) + 19) writes_file = writes_file .or. &
                 (name(1:len(stem) + 15) == stem//'_summary.shard-' .and. ends_with(name, '.csv'))
             if (writes_file) return
+        end if
+        if (tagged(tags)) then
+            writes_file = tagged_output(stem, n, name, tags)
+            return
         end if
         do k = 1, size(output_extensions)
             n_ext = len_trim(output_extensions(k))
@@ -445,14 +443,51 @@ contains
                                               stem//'_response.gp', stem//'_response.png']
     end function output_files
 
-    !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits).
-    pure function case_name(stem, i, n) result(name)
+    !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits); with load
+    !! combinations (tags, the fastest-varying index of the cases) STEM_TAG, or STEM_NNN_TAG
+    !! with NNN the sweep point.
+    pure function case_name(stem, i, n, tags) result(name)
         character(len=*), intent(in) :: stem   !! the deck's file stem
         integer, intent(in) :: i, n            !! case number; cases of the sweep
+        !> the names of the deck's load combinations (none: no LOADCASE cards)
+        character(len=*), intent(in), optional :: tags(:)
         character(len=:), allocatable :: name
+        integer :: n_tags, points
         name = stem
-        if (n > 1) name = stem//'_'//case_number(i, n)
+        if (tagged(tags)) then
+            n_tags = size(tags)
+            points = max(1, n/n_tags)
+            if (points > 1) name = stem//'_'//case_number((i - 1)/n_tags + 1, points)
+            name = name//'_'//trim(tags(mod(i - 1, n_tags) + 1))
+        else if (n > 1) then
+            name = stem//'_'//case_number(i, n)
+        end if
     end function case_name
+
+    !> Load combinations given (tags present and not empty).
+    pure logical function tagged(tags)
+        character(len=*), intent(in), optional :: tags(:)   !! combination names
+        tagged = .false.
+        if (present(tags)) tagged = size(tags) > 0
+    end function tagged
+
+    !> name (no folder, no .tmp) is a file of a deck with load combinations: a case's
+    !! (case_name with an output extension) or STEM_envelope.txt, .json or .csv.
+    pure logical function tagged_output(stem, n, name, tags)
+        character(len=*), intent(in) :: stem, name
+        integer, intent(in) :: n
+        character(len=*), intent(in) :: tags(:)
+        integer :: i, k
+        tagged_output = name == stem//'_envelope.txt' .or. name == stem//'_envelope.json' .or. &
+                        name == stem//'_envelope.csv'
+        if (tagged_output) return
+        do i = 1, n
+            do k = 1, size(output_extensions)
+                tagged_output = name == case_name(stem, i, n, tags)//trim(output_extensions(k))
+                if (tagged_output) return
+            end do
+        end do
+    end function tagged_output
 
     !> i with leading zeros, as wide as n and at least three digits (001, 0042 of 1000).
     pure function case_number(i, n) result(text)

@@ -35,7 +35,7 @@ module report_writer
 
     public :: write_script_folder
     public :: write_data_file, write_physical_csv, write_summary_json, write_plot_script, &
-              write_sweep_script, write_report, shell_safe, json_string
+              write_sweep_script, write_report, shell_safe, json_string, json_number
 
     character(len=*), parameter :: state_word(0:2) = ['lift-off', 'stick   ', 'slip    ']
 
@@ -402,8 +402,8 @@ contains
 
     !> A JSON number (null when not defined or not finite).
     pure function json_number(x, defined) result(text)
-        real(dp), intent(in) :: x
-        logical, intent(in) :: defined
+        real(dp), intent(in) :: x          !! the value
+        logical, intent(in) :: defined     !! false: null
         character(len=:), allocatable :: text
         character(len=32) :: buf
         if (.not. defined .or. .not. (abs(x) <= huge(x))) then
