@@ -41,7 +41,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 94
+    integer, parameter :: n_decks = 101
 
 contains
 
@@ -61,6 +61,7 @@ contains
                  new_unittest('missing_data', test_missing), &
                  new_unittest('out_of_range', test_ranges), &
                  new_unittest('loads', test_loads), &
+                 new_unittest('load_combinations', test_combinations), &
                  new_unittest('sweeps', test_sweeps), &
                  new_unittest('layered_ground', test_ground), &
                  new_unittest('lone_cr_in_card', test_lone_cr), &
@@ -362,6 +363,28 @@ contains
         ! control characters are errors; the CR is column 14 of line 9.
         call add('lone_cr', 'cr_inside_card.dat', ':9:14:', &
                  'control character (code 13) in column 14')
+        ! LOADCASE and COMBINE cards: lines 10 on are the cards after FRICTION (line 9)
+        ! COMBINE f4 (41-50) names X; only G is opened
+        call add('combinations', 'combine_unknown_case.dat', ':12:41-50:', &
+                 'COMBINE names the unknown load case ''X''')
+        ! the LOAD of line 10 comes before the LOADCASE of line 11 (card name, 1-10)
+        call add('combinations', 'load_outside_case.dat', ':10:1-10:', &
+                 'LOAD outside any load case')
+        ! the second LOADCASE G (line 12), its name in f1
+        call add('combinations', 'loadcase_duplicate.dat', ':12:11-20:', &
+                 'duplicate load case name ''G'' (first given at line 10)')
+        ! f5 (51-60) of the COMBINE card of line 14 reads 1.5x
+        call add('combinations', 'combine_factor_not_number.dat', ':14:51-60:', &
+                 'COMBINE factor f5 of load case Q must be a number, got ''1.5x''')
+        ! LOADCASE Q of line 12 is followed by COMBINE, not LOAD
+        call add('combinations', 'loadcase_empty.dat', ':12:1-10:', &
+                 'load case ''Q'' is empty')
+        ! COMBINE of line 11 in a deck with no LOADCASE
+        call add('combinations', 'combine_without_loadcase.dat', ':11:1-10:', &
+                 'COMBINE without LOADCASE cards')
+        ! the COMBINE name in f1 of line 12
+        call add('combinations', 'combine_reserved_name.dat', ':12:11-20:', &
+                 'cannot be SUMMARY')
     contains
         subroutine add(group, file, where, what)
             character(len=*), intent(in) :: group, file, where, what
@@ -655,6 +678,11 @@ contains
         type(error_t), allocatable, intent(out) :: err
         call check_group('loads', err)
     end subroutine test_loads
+
+    subroutine test_combinations(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check_group('combinations', err)
+    end subroutine test_combinations
 
     subroutine test_sweeps(err)
         type(error_t), allocatable, intent(out) :: err

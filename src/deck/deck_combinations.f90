@@ -47,6 +47,7 @@ module deck_combinations
         character(len=80), allocatable :: case_echoes(:)         !! each LOADCASE card
         character(len=80), allocatable :: combination_echoes(:)  !! each first COMBINE card
         type(case_reference_t), allocatable :: references(:)
+        logical :: pair_error = .false.                !! a COMBINE pair could not be read
         integer :: combine_line = 0                    !! first COMBINE card's line
         character(len=:), allocatable :: combine_echo  !! and its text
     end type combination_cards_t
@@ -156,6 +157,7 @@ contains
         call read_word_field(field_text(text, j), word, s_name)
         call read_real_field(field_text(text, j + 1), ref%value, s_factor)
         if (s_name == FIELD_BLANK .and. s_factor == FIELD_BLANK) return
+        cc%pair_error = cc%pair_error .or. s_name /= FIELD_OK .or. s_factor /= FIELD_OK
         if (s_name /= FIELD_OK) then
             call error_at(diag, line, text, j, 'COMBINE load case name f'//int_text(j)// &
                 ' must be one word (the factor in f'//int_text(j + 1)//' needs its case), got '''// &
@@ -165,8 +167,8 @@ contains
         if (s_factor /= FIELD_OK) then
             call error_at(diag, line, text, j + 1, 'COMBINE factor f'//int_text(j + 1)// &
                 ' of load case '//trim(word)//' must be a number, got '''// &
-                trim(adjustl(field_text(text, j + 1)))//''''//merge(' (blank)', &
-                '        ', s_factor == FIELD_BLANK))
+                trim(adjustl(field_text(text, j + 1)))//''''//trim(merge(' (blank)', &
+                '        ', s_factor == FIELD_BLANK)))
             return
         end if
         ref%combination = k
@@ -293,13 +295,15 @@ contains
         type(diagnostics_t), intent(inout) :: diag
         integer :: c, k
         do k = 1, size(cc%set%combinations)
-            if (all(len_trim(cc%set%combinations(k)%factor_texts) == 0) .and. &
-                .not. any(cc%references%combination == k)) call add_diagnostic(diag, &
+            if (.not. any(cc%references%combination == k) .and. .not. cc%pair_error) &
+                call add_diagnostic(diag, &
                 cc%set%combinations(k)%line, field_first_column(2), field_first_column(3) + &
                 field_width - 1, 'combination '''//trim(cc%set%combinations(k)%name)// &
                 ''' names no load case: give pairs of a case name and its factor in f2 '// &
                 'and f3, f4 and f5, f6 and f7', trim(cc%combination_echoes(k)))
         end do
+        ! (a pair that could not be read has its error: the case it names is not reported)
+        if (cc%pair_error) return
         do c = 1, size(used)
             if (.not. used(c)) call add_diagnostic(diag, cc%set%cases(c)%line, &
                 field_first_column(1), field_first_column(1) + field_width - 1, 'load case '''// &
