@@ -250,13 +250,14 @@ contains
                 '   -> '//results(k)%name//'.txt'
         end do
         write (u, '(/,a)') ' 2. ENVELOPE (largest and smallest value of each design value '// &
-            'over the cases, and the case that gives it; signed values: a sagging moment is'
-        write (u, '(a)') '    negative, so its governing value is the min)'
+            'over the cases, and the case'
+        write (u, '(a)') '    that gives it; values are signed: a sagging moment is '// &
+            'negative, so its governing value is the min)'
         name = 'design value'
         unit = 'unit'
         case_max = '  case'
         write (u, '(3x,a34,a10,a14,a14,a14,2x,a)') name, unit, '           max', case_max, &
-            '           min', '  case'
+            '           min', 'case'
         do r = 1, size(env%rows)
             associate (row => env%rows(r))
                 name = row%name
