@@ -43,6 +43,11 @@ contains
         allocate (x(size(results)))
         n_groups = 1
         do i = 1, size(results)
+            ! (load combinations at each sweep point: several cases share the swept values,
+            ! and a curve through them would average the combinations; no figure)
+            if (i > 1) then
+                if (same_sweep_point(results(i - 1)%label, results(i)%label)) return
+            end if
             call swept_values(results(i)%label, names, texts, values)
             x(i) = values(1)
             if (size(names) > 1 .and. n_groups == i - 1 .and. texts(1) == first_texts(1)) &
@@ -164,6 +169,19 @@ contains
             write (u, '(a,i0,a)') 'group_title[', g, "] = '"//trim(shell_safe(title))//"'"
         end do
     end subroutine write_groups
+
+    !> Two case labels with the same swept values ('E_F=15.0E3 SLS = ...' and 'E_F=15.0E3
+    !! ULS = ...': two load combinations at one sweep point).
+    pure logical function same_sweep_point(a, b)
+        character(len=*), intent(in) :: a, b   !! case labels
+        character(len=16), allocatable :: names_a(:), texts_a(:), names_b(:), texts_b(:)
+        real(dp), allocatable :: values(:)
+        call swept_values(a, names_a, texts_a, values)
+        call swept_values(b, names_b, texts_b, values)
+        same_sweep_point = size(texts_a) == size(texts_b)
+        if (same_sweep_point) same_sweep_point = all(texts_a == texts_b) .and. &
+                                                 all(names_a == names_b)
+    end function same_sweep_point
 
     !> The swept parameters of a case from its label ('case 002 of 006: RHO=0.01 F=0.5',
     !! deck_reader::case_model: NAME=value pairs, one blank apart, each value a deck field):
