@@ -7,7 +7,9 @@ module test_load_combinations
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_OK
     use model, only: model_t, LOAD_PATCH, LOAD_MOMENT
-    use deck_reader, only: deck_t, parse_deck, case_count, case_model, combination_names
+    use deck_reader, only: deck_t, parse_deck, read_deck, case_count, case_model, &
+                           combination_names
+    use output_paths, only: case_name, writes_file, check_decks_apart
     use analysis_driver, only: run_analysis, run_options_t
     use solved_case, only: case_t, solve_case
     use case_quality, only: solve_to_quality
@@ -36,7 +38,10 @@ contains
                  new_unittest('self_weight_by_statics', test_self_weight), &
                  new_unittest('sweep_with_combinations', test_sweep), &
                  new_unittest('cases_alone_without_combine', test_cases_alone), &
-                 new_unittest('plate_combinations', test_plate)]
+                 new_unittest('plate_combinations', test_plate), &
+                 new_unittest('file_names_and_collisions', test_file_names), &
+                 new_unittest('stale_combination_files_removed', test_stale), &
+                 new_unittest('no_envelope_when_a_case_fails', test_failed_case)]
     end subroutine collect_load_combinations
 
     ! ------------------------------------------------------------------------------------
@@ -366,6 +371,111 @@ contains
         call check_close(err, c%sol%reaction(1), 1.5_dp*8000.0_dp + 1.2_dp*25.0_dp*0.6_dp*pi* &
                          36.0_dp, 1.0e-8_dp, 0.0_dp, 'plate total vertical reaction')
     end subroutine test_plate
+
+    !> The names of a deck's files with combinations SLS, ULS, W, FAV (by hand from README
+    !! "LOADCASE and COMBINE": STEM_NAME, STEM_NNN_NAME at sweep point NNN, combinations
+    !! fastest), and decks of one call whose files would collide.
+    subroutine test_file_names(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=10), parameter :: tags(4) = [character(len=10) :: 'SLS', 'ULS', 'W', &
+                                                   'FAV']
+        character(len=10) :: table(4, 2)
+        type(error_t), allocatable :: collision
+        call check(err, case_name('s', 2, 4, tags) == 's_ULS', 'case 2 of 4: '// &
+                   case_name('s', 2, 4, tags))
+        if (allocated(err)) return
+        ! case 5 of 8: sweep point (5 - 1)/4 + 1 = 2, combination mod(5 - 1, 4) + 1 = 1
+        call check(err, case_name('s', 5, 8, tags) == 's_002_SLS', 'case 5 of 8: '// &
+                   case_name('s', 5, 8, tags))
+        if (allocated(err)) return
+        call check(err, writes_file('s', 4, 's_FAV.json', tags) .and. &
+                   writes_file('s', 4, 's_envelope.csv', tags) .and. &
+                   writes_file('s', 4, 's_summary.csv', tags) .and. &
+                   .not. writes_file('s', 4, 's_001.json', tags) .and. &
+                   .not. writes_file('s', 4, 's.txt', tags), 'the files of s with combinations')
+        if (allocated(err)) return
+        ! deck x with combination ULS writes x_ULS.txt, which deck x_ULS writes too
+        table = ''
+        table(:, 1) = tags
+        call check_decks_apart([character(len=12) :: 'a/x.dat', 'b/x_ULS.dat'], &
+                               [character(len=4) :: 'out', 'out'], [character(len=8) :: 'x', &
+                               'x_ULS'], [4, 1], collision, table, [4, 0])
+        call check(err, allocated(collision), 'x (combination ULS) and x_ULS both write '// &
+                   'x_ULS.txt')
+    end subroutine test_file_names
+
+    !> A deck run from its file, then run again with a combination renamed, then without
+    !! load cases: each run leaves its own files and none of the earlier run's.
+    subroutine test_stale(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = out_dir//'/stale'
+        character(len=w), allocatable :: lines(:)
+        integer :: status
+        lines = combination_deck()
+        call run_file(dir, lines, status, err)
+        if (allocated(err)) return
+        call check(err, exists(dir//'/d_FAV.txt') .and. exists(dir//'/d_envelope.csv'), &
+                   'first run: d_FAV and the envelope')
+        if (allocated(err)) return
+        lines(size(lines) - 1) = card('COMBINE', 'PERM', 'G', '1.0', 'W', '1.5')
+        call run_file(dir, lines, status, err)
+        if (allocated(err)) return
+        call check(err, exists(dir//'/d_PERM.json') .and. .not. exists(dir//'/d_FAV.json') &
+                   .and. .not. exists(dir//'/d_FAV.csv'), 'FAV renamed PERM: no d_FAV left')
+        if (allocated(err)) return
+        call run_file(dir, hand_deck(1), status, err)
+        if (allocated(err)) return
+        call check(err, exists(dir//'/d.txt') .and. .not. exists(dir//'/d_SLS.txt') .and. &
+                   .not. exists(dir//'/d_envelope.csv') .and. &
+                   .not. exists(dir//'/d_envelope.json') .and. &
+                   .not. exists(dir//'/d_summary.csv'), 'no load cases: one case, no '// &
+                   'combination or envelope files left')
+    end subroutine test_stale
+
+    !> A combination that cannot solve (-1.0 G: the net vertical load is upward, the soil
+    !! takes no tension): its case fails (status 2), the others solve, no envelope is left.
+    subroutine test_failed_case(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = out_dir//'/failed'
+        character(len=w), allocatable :: lines(:)
+        integer :: status
+        lines = combination_deck()
+        call run_file(dir, lines, status, err)
+        if (allocated(err)) return
+        lines(size(lines) - 1) = card('COMBINE', 'UP', 'G', '-1.0', 'W', '1.0')
+        call run_file(dir, lines, status, err)
+        if (allocated(err)) return
+        call check(err, status == 2, 'a failed combination: exit status 2')
+        if (allocated(err)) return
+        call check(err, exists(dir//'/d_SLS.csv') .and. exists(dir//'/d_UP.txt') .and. &
+                   .not. exists(dir//'/d_envelope.csv') .and. &
+                   .not. exists(dir//'/d_envelope.txt'), 'the cases, no envelope')
+    end subroutine test_failed_case
+
+    !> Write the deck DIR_deck/d.dat and run it from the file into dir (read_deck: its
+    !! outputs record it; outside dir, where a single case's d.dat would be its own output).
+    subroutine run_file(dir, lines, status, err)
+        character(len=*), intent(in) :: dir
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(out) :: status
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        integer :: u, k
+        call execute_command_line('mkdir -p '//dir//'_deck')
+        open (newunit=u, file=dir//'_deck/d.dat', status='replace', action='write')
+        do k = 1, size(lines)
+            write (u, '(a)') trim(lines(k))
+        end do
+        close (u)
+        call read_deck(dir//'_deck/d.dat', deck, err)
+        if (allocated(err)) return
+        call run_quietly(deck, dir, status)
+    end subroutine run_file
+
+    logical function exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=exists)
+    end function exists
 
     !> run_analysis without figures or estimates, its console lines to a scratch file.
     subroutine run_quietly(deck, dir, status)

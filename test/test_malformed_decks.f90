@@ -41,7 +41,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 101
+    integer, parameter :: n_decks = 102
 
 contains
 
@@ -385,6 +385,9 @@ contains
         ! the COMBINE name in f1 of line 12
         call add('combinations', 'combine_reserved_name.dat', ':12:11-20:', &
                  'cannot be SUMMARY')
+        ! NONDIM base deck: LOADCASE inserted at line 7, before its LOAD
+        call add('combinations', 'loadcase_nondim.dat', ':7:1-10:', &
+                 'load cases need a physical deck')
     contains
         subroutine add(group, file, where, what)
             character(len=*), intent(in) :: group, file, where, what

@@ -4,7 +4,8 @@
 module deck_runs
     use iso_fortran_env, only: error_unit, output_unit
     use errors, only: error_t, EXIT_OK, EXIT_INPUT
-    use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines, case_count
+    use deck_reader, only: deck_t, read_deck, parse_deck, default_deck_lines, case_count, &
+                           combination_names
     use analysis_driver, only: run_analysis, run_options_t
     use output_paths, only: check_decks_apart, remove_stale_outputs
     implicit none
@@ -49,9 +50,12 @@ contains
         character(len=*), intent(in) :: out_dir           !! -o DIR, or ''
         type(error_t), allocatable, intent(out) :: err    !! two decks' outputs collide
         character(len=1024) :: dirs(size(decks)), stems(size(decks))
-        integer :: counts(size(decks)), k
+        integer :: counts(size(decks)), tag_counts(size(decks)), k
+        character(len=10), allocatable :: tags(:, :), names(:)
         type(deck_t) :: deck
         if (size(decks) < 2) return
+        allocate (tags(0, size(decks)))
+        tag_counts = 0
         do k = 1, size(decks)
             dirs(k) = output_directory(trim(decks(k)), out_dir)
             counts(k) = 0
@@ -63,9 +67,23 @@ contains
             end if
             counts(k) = case_count(deck)
             stems(k) = deck%stem
+            names = combination_names(deck)
+            tag_counts(k) = size(names)
+            if (size(names) > size(tags, 1)) tags = widened(tags, size(names))
+            tags(1:size(names), k) = names
         end do
-        call check_decks_apart(decks, dirs, stems, counts, err)
+        call check_decks_apart(decks, dirs, stems, counts, err, tags, tag_counts)
     end subroutine check_distinct_outputs
+
+    !> The table of combination names with n rows (the new rows blank).
+    pure function widened(tags, n) result(wider)
+        character(len=10), intent(in) :: tags(:, :)
+        integer, intent(in) :: n
+        character(len=10), allocatable :: wider(:, :)
+        allocate (wider(n, size(tags, 2)))
+        wider = ''
+        wider(1:size(tags, 1), :) = tags
+    end function widened
 
     !> The built-in default raft (input/default.dat's text), into output/ or -o DIR.
     subroutine run_default(out_dir, options, status)

@@ -90,16 +90,20 @@ contains
     !! another writes (two decks named alike, or a sweep's STEM_001 beside a deck of that
     !! name) or would overwrite another deck of the run. Deck k has the path paths(k), writes
     !! into dirs(k), has the file stem stems(k) and counts(k) cases (0: unreadable, writes
-    !! nothing).
-    subroutine check_decks_apart(paths, dirs, stems, counts, err)
+    !! nothing), and the load combinations tags(1:tag_counts(k), k) (none when absent).
+    subroutine check_decks_apart(paths, dirs, stems, counts, err, tags, tag_counts)
         !> per deck: its path, output folder, file stem
         character(len=*), intent(in) :: paths(:), dirs(:), stems(:)
         integer, intent(in) :: counts(:)                 !! per deck: its cases (0: unreadable)
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
-        character(len=:), allocatable :: files(:), deck_real, dir_real
+        !> (combination, deck): the names of each deck's load combinations
+        character(len=*), intent(in), optional :: tags(:, :)
+        integer, intent(in), optional :: tag_counts(:)   !! per deck: its combinations
+        character(len=:), allocatable :: files(:), deck_real, dir_real, tags_i(:)
         integer :: i, j, k
         do i = 1, size(paths)
             if (counts(i) < 1) cycle
+            tags_i = tags_of(i, tags, tag_counts)
             dir_real = canonical_path(trim(dirs(i)))
             do j = 1, size(paths)
                 if (j == i) cycle
@@ -107,7 +111,7 @@ contains
                 deck_real = canonical_path(trim(paths(j)))
                 if (len(deck_real) > 0 .and. len(dir_real) > 0) then
                     if (deck_real == dir_real//'/'//base_name(deck_real) .and. &
-                        writes_file(trim(stems(i)), counts(i), base_name(deck_real))) then
+                        writes_file(trim(stems(i)), counts(i), base_name(deck_real), tags_i)) then
                         call new_error(err, EXIT_INPUT, 'the deck '//trim(paths(j))// &
                             ' would be overwritten by an output of '//trim(paths(i))// &
                             ': run them with different -o folders, or rename one '// &
@@ -118,9 +122,9 @@ contains
                 ! the same file written by both
                 if (j < i .or. counts(j) < 1) cycle
                 if (.not. same_folder(trim(dirs(i)), trim(dirs(j)))) cycle
-                files = output_files(trim(stems(j)), counts(j))
+                files = output_files(trim(stems(j)), counts(j), tags_of(j, tags, tag_counts))
                 do k = 1, size(files)
-                    if (.not. writes_file(trim(stems(i)), counts(i), trim(files(k)))) cycle
+                    if (.not. writes_file(trim(stems(i)), counts(i), trim(files(k)), tags_i)) cycle
                     call new_error(err, EXIT_INPUT, 'the decks '//trim(paths(i))//' and '// &
                         trim(paths(j))//' would both write '//trim(dirs(i))//'/'// &
                         trim(files(k))//': run them with different -o folders')
@@ -129,6 +133,20 @@ contains
             end do
         end do
     end subroutine check_decks_apart
+
+    !> Deck k's load combinations, tags(1:tag_counts(k), k) (none without tags).
+    pure function tags_of(k, tags, tag_counts) result(t)
+        integer, intent(in) :: k
+        character(len=*), intent(in), optional :: tags(:, :)
+        integer, intent(in), optional :: tag_counts(:)
+        character(len=:), allocatable :: t(:)
+        if (present(tags) .and. present(tag_counts)) then
+            allocate (character(len=len(tags)) :: t(tag_counts(k)))
+            t = tags(1:tag_counts(k), k)
+        else
+            allocate (character(len=1) :: t(0))
+        end if
+    end function tags_of
 
     !> Remove what an earlier run of the same deck left in dir that this run does not write
     !! (n cases; n = 0 for a deck with input errors, which writes nothing): the files of a
@@ -424,23 +442,33 @@ contains
     end function writes_file
 
     !> The names of every file the n cases of a deck of file stem `stem` write (writes_file).
-    pure function output_files(stem, n) result(files)
+    pure function output_files(stem, n, tags) result(files)
         character(len=*), intent(in) :: stem   !! the deck's file stem
         integer, intent(in) :: n               !! the deck's cases
+        !> the deck's load combinations (case_name; and the envelope's files)
+        character(len=*), intent(in), optional :: tags(:)
         character(len=:), allocatable :: files(:)
-        integer :: i, k, width
+        integer :: i, k, width, n_envelope
         width = len(stem) + 1 + len(case_number(n, n)) + maxval(len_trim(output_extensions))
         width = max(width, len(stem) + len('_response.png'))
-        allocate (character(len=width) :: files(size(output_extensions)*n + merge(5, 0, n > 1)))
+        n_envelope = 0
+        if (tagged(tags)) then
+            width = width + 1 + len(tags)
+            n_envelope = 3
+        end if
+        allocate (character(len=width) :: files(size(output_extensions)*n + merge(5, 0, n > 1) &
+                                                + n_envelope))
         do i = 1, n
             do k = 1, size(output_extensions)
-                files(size(output_extensions)*(i - 1) + k) = case_name(stem, i, n)// &
+                files(size(output_extensions)*(i - 1) + k) = case_name(stem, i, n, tags)// &
                                                                trim(output_extensions(k))
             end do
         end do
-        if (n > 1) files(size(files) - 4:) = [character(len=width) :: stem//'_summary.csv', &
-                                              stem//'_sweep.gp', stem//'_sweep.png', &
-                                              stem//'_response.gp', stem//'_response.png']
+        if (n > 1) files(size(output_extensions)*n + 1:size(output_extensions)*n + 5) = &
+            [character(len=width) :: stem//'_summary.csv', stem//'_sweep.gp', &
+             stem//'_sweep.png', stem//'_response.gp', stem//'_response.png']
+        if (n_envelope > 0) files(size(files) - 2:) = [character(len=width) :: &
+            stem//'_envelope.txt', stem//'_envelope.json', stem//'_envelope.csv']
     end function output_files
 
     !> STEM, or STEM_NNN for case i of a sweep of n (at least three digits); with load
