@@ -35,6 +35,7 @@ contains
         integer, allocatable :: keys(:)
         character(len=400), allocatable :: template(:)
         integer :: u, i, n_groups, solved
+        logical :: combined
         written = .false.
         solved = findloc(results%status, EXIT_OK, dim=1)
         if (solved == 0) return
@@ -42,16 +43,14 @@ contains
         if (size(names) == 0) return
         allocate (x(size(results)))
         n_groups = 1
+        ! load combinations (the fastest index) at each sweep point: a curve per combination
+        combined = .false.
+        if (size(results) > 1) combined = same_sweep_point(results(1)%label, results(2)%label)
         do i = 1, size(results)
-            ! (load combinations at each sweep point: several cases share the swept values,
-            ! and a curve through them would average the combinations; no figure)
-            if (i > 1) then
-                if (same_sweep_point(results(i - 1)%label, results(i)%label)) return
-            end if
             call swept_values(results(i)%label, names, texts, values)
             x(i) = values(1)
-            if (size(names) > 1 .and. n_groups == i - 1 .and. texts(1) == first_texts(1)) &
-                n_groups = i
+            if ((size(names) > 1 .or. combined) .and. n_groups == i - 1 .and. &
+                texts(1) == first_texts(1)) n_groups = i
         end do
         keys = plotted_keys(results, x)
         if (size(keys) == 0) return
@@ -149,7 +148,8 @@ contains
         end do
     end subroutine write_keys
 
-    !> The curves: the swept values after the first of each of the first n_groups cases.
+    !> The curves: the swept values after the first of each of the first n_groups cases,
+    !! and its load combination's name.
     subroutine write_groups(u, first)
         integer, intent(in) :: u                   !! the open script
         type(case_result_t), intent(in) :: first(:) !! the cases 1..n_groups
@@ -166,9 +166,33 @@ contains
                 if (j > 2) title = title//' '
                 title = title//trim(names(j))//'='//trim(texts(j))
             end do
+            if (len(title) > 0 .and. len(combination_word(first(g)%label)) > 0) &
+                title = title//' '
+            title = title//combination_word(first(g)%label)
             write (u, '(a,i0,a)') 'group_title[', g, "] = '"//trim(shell_safe(title))//"'"
         end do
     end subroutine write_groups
+
+    !> The load combination's name in a case label ('ULS' of 'case 2 of 8: E_F=1.5E4 ULS =
+    !! 1.35 G + 1.5 Q'): the first word after the colon that is no NAME=value pair; '' if none.
+    pure function combination_word(label) result(word)
+        character(len=*), intent(in) :: label   !! the case label
+        character(len=:), allocatable :: word
+        character(len=:), allocatable :: rest
+        integer :: blank
+        word = ''
+        if (index(label, ':') == 0) return
+        rest = trim(adjustl(label(index(label, ':') + 1:)))
+        do while (len(rest) > 0)
+            blank = index(rest, ' ')
+            if (blank == 0) blank = len(rest) + 1
+            if (index(rest(1:blank - 1), '=') == 0) then
+                word = rest(1:blank - 1)
+                return
+            end if
+            rest = trim(adjustl(rest(min(blank, len(rest) + 1):)))
+        end do
+    end function combination_word
 
     !> Two case labels with the same swept values ('E_F=15.0E3 SLS = ...' and 'E_F=15.0E3
     !! ULS = ...': two load combinations at one sweep point).
