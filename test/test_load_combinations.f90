@@ -293,6 +293,17 @@ contains
         if (allocated(err)) return
         call check_close(err, c%sol%reaction(1), 1.35_dp*(2000.0_dp + 25.0_dp*0.8_dp*1.2_dp* &
                          10.0_dp), 1.0e-8_dp, 0.0_dp, 'total vertical reaction')
+        if (allocated(err)) return
+        ! the footing's weight alone, 25 x 0.8 x 1.2 x 10 = 240 kN: a deck without LOAD cards
+        call parse_deck('weight_only.dat', [character(len=w) :: beam_head(), &
+            card('LOADCASE', 'G', '25.0'), card('END')], deck, err)
+        if (allocated(err)) return
+        call case_model(deck, 1, m, label, err)
+        if (allocated(err)) return
+        call solve_case(m, c, err)
+        if (allocated(err)) return
+        call check_close(err, c%sol%reaction(1), 240.0_dp, 1.0e-8_dp, 0.0_dp, &
+                         'reaction to the weight alone')
     end subroutine test_self_weight
 
     !> SWEEP E_F 15E3 60E3 with two combinations: four cases STEM_001_LOW ... STEM_002_HIGH;
@@ -327,7 +338,29 @@ contains
         if (allocated(err)) return
         call check(err, trim(cell(2)) == '001_HIGH' .and. trim(cell(4)) == '002_LOW', &
                    'governing cases '//trim(cell(2))//', '//trim(cell(4)))
+        if (allocated(err)) return
+        ! the response figure: one curve per combination (README, doc/OUTPUT.md)
+        call check(err, has_line(out_dir//'/swept_response.gp', "group_title[1] = 'LOW'") &
+                   .and. has_line(out_dir//'/swept_response.gp', "group_title[2] = 'HIGH'") &
+                   .and. has_line(out_dir//'/swept_response.gp', 'n_groups = 2'), &
+                   'response curves LOW and HIGH')
     end subroutine test_sweep
+
+    !> The text file has the line.
+    logical function has_line(path, text)
+        character(len=*), intent(in) :: path, text
+        character(len=400) :: line
+        integer :: u, ios
+        has_line = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            has_line = has_line .or. trim(line) == text
+        end do
+        close (u)
+    end function has_line
 
     !> LOADCASE cards without COMBINE: each case solved alone (factor 1), named by the case.
     subroutine test_cases_alone(err)

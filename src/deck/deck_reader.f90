@@ -751,7 +751,9 @@ contains
         end if
         if (missing(st, C_FRICTION)) call deck_error(st, 'missing FRICTION card '// &
             '(FRICTION f eps_bar; f = 0 for a frictionless interface)')
-        if (missing(st, C_LOAD)) call deck_error(st, 'missing LOAD card (at least '// &
+        ! (a deck of load cases may hold the self-weight only: an empty case is its error)
+        if (missing(st, C_LOAD) .and. missing(st, C_LOADCASE)) call deck_error(st, &
+            'missing LOAD card (at least '// &
             'one load is required)')
         if (st%unreadable_line(C_END) > 0) then
             continue     ! an END whose name line could not be read has its own error
@@ -1463,7 +1465,7 @@ contains
     subroutine check_case_total(st)
         type(state_t), intent(inout) :: st
         integer :: s, total
-        total = 1
+        total = max(1, combination_count(st%combos%set))    ! every combination at each point
         do s = 1, size(st%sweeps)
             total = total*size(st%sweeps(s)%values)
             if (total > max_cases) then
