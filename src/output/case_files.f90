@@ -6,6 +6,7 @@ module case_files
     use deck_reader, only: deck_t
     use solved_case, only: case_t
     use summary_table, only: entry_t
+    use design_checks, only: design_check_t
     use adaptive_solve, only: adaptation_t
     use plausibility, only: warning_length
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
@@ -31,6 +32,7 @@ module case_files
         integer :: n_inner = 0                     !! inner iterations (or Newton steps)
         integer :: elements = 0                    !! N_e of the mesh solved (refined, adapted)
         type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
+        type(design_check_t), allocatable :: checks(:)  !! the CHECK cards' design checks
         type(adaptation_t) :: adaptation           !! what ADAPT did (adapted false without it)
         character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
     end type case_result_t

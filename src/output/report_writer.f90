@@ -30,6 +30,9 @@ module report_writer
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
                            ground_json, write_ground_figure_settings, gp_number
     use run_identity, only: program_name, program_version, run_time, run_stamp
+    use json_text, only: json_string, json_number
+    use design_checks, only: evaluate_design_checks
+    use check_report, only: write_check_table, write_check_json
     implicit none
     private
 
@@ -222,6 +225,7 @@ contains
             '(Sigma_z^h; CSV sigma_z_fe)",'
         call write_json_errors(u, e, adapted)
         if (adapted) call write_json_adaptation(u, adaptation)
+        call write_check_json(u, evaluate_design_checks(m, s))
         call write_json_checks(u, sol, tab, s)
         write (u, '(a)') '}'
         call commit_file(path, u, err)
@@ -362,57 +366,6 @@ contains
         write (u, '(a,i0)') '    "overlap_flags": ', s%n_overlap_flags
         write (u, '(a)') '  }'
     end subroutine write_json_checks
-
-    !> A JSON string literal (quotes, backslashes and control characters escaped).
-    pure function json_string(text) result(js)
-        character(len=*), intent(in) :: text   !! any text
-        character(len=:), allocatable :: js
-        integer :: i, k, n
-        ! sized first and filled in place: appending character by character reallocated the
-        ! string at every character (5 % of a 1000-case sweep)
-        n = len(text) + 2 + count_escapes(text)
-        allocate (character(len=n) :: js)
-        js(1:1) = '"'
-        k = 1
-        do i = 1, len(text)
-            select case (text(i:i))
-            case ('"', '\')
-                js(k + 1:k + 2) = '\'//text(i:i)
-                k = k + 2
-            case (achar(0):achar(31))
-                js(k + 1:k + 1) = ' '
-                k = k + 1
-            case default
-                js(k + 1:k + 1) = text(i:i)
-                k = k + 1
-            end select
-        end do
-        js(k + 1:k + 1) = '"'
-    end function json_string
-
-    !> Characters of text that json_string escapes with a backslash.
-    pure integer function count_escapes(text) result(n)
-        character(len=*), intent(in) :: text
-        integer :: i
-        n = 0
-        do i = 1, len(text)
-            if (text(i:i) == '"' .or. text(i:i) == '\') n = n + 1
-        end do
-    end function count_escapes
-
-    !> A JSON number (null when not defined or not finite).
-    pure function json_number(x, defined) result(text)
-        real(dp), intent(in) :: x
-        logical, intent(in) :: defined
-        character(len=:), allocatable :: text
-        character(len=32) :: buf
-        if (.not. defined .or. .not. (abs(x) <= huge(x))) then
-            text = 'null'
-            return
-        end if
-        write (buf, '(es23.15e3)') x
-        text = trim(adjustl(buf))
-    end function json_number
 
     !> output/CASE.gp: the figure of one case, self-contained: the settings of the case
     !! (write_figure_settings) and the panel template (embedded in the program). The data file
@@ -822,6 +775,7 @@ contains
             call write_station_notes(u, m, tab)
             call write_summary(u, m, e, s, size(adapt_text) > 0)
             call write_checks(u, m, sol, tab, s)
+            call write_check_table(u, evaluate_design_checks(m, s))
         end if
         if (any(len_trim(notes) > 0)) write (u, '(a)') ''
         do i = 1, size(notes)
