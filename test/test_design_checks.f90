@@ -20,6 +20,7 @@ module test_design_checks
     use analysis_driver, only: run_analysis
     use test_deck_reader, only: card
     use test_design_values, only: json_value
+    use plausibility, only: input_warnings, warning_length
     implicit none
     private
     public :: collect_design_checks
@@ -37,7 +38,8 @@ contains
                  new_unittest('loaded_points', test_loaded_points), &
                  new_unittest('relative_rotation_columns', test_relative_rotation), &
                  new_unittest('contact_ratio_liftoff', test_contact_ratio), &
-                 new_unittest('failed_check_is_a_result', test_failed_check)]
+                 new_unittest('failed_check_is_a_result', test_failed_check), &
+                 new_unittest('limits_in_wrong_units_warned', test_limit_warnings)]
     end subroutine collect_design_checks
 
     !> A beam l = 10 m, h, b = 2 m, E = 30 GPa, on E_f = 40 MPa, nu_f 0.3, f = 0.5, with the
@@ -351,4 +353,36 @@ contains
         call check(err, json_value(dir//'/test_design_checks_deck.json', '"status":') == &
                    0.0_dp, 'JSON status 0')
     end subroutine test_failed_check
+
+    !> Limits that are legal but likely slips of units are warned (limit_warnings): on a 10 m
+    !! beam a settlement limit of 25 (meant as mm, read as 25 m: above l/10 = 1 m), a relative
+    !! rotation of 500 (meant as 1/500: above 0.1 rad) and FS_min 0.8 (below 1); the same
+    !! limits written as meant (25.0E-3, 2.0E-3, 1.5) give no warning.
+    subroutine test_limit_warnings(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        character(len=warning_length), allocatable :: warn(:)
+        character(len=*), parameter :: kinds(3) = [character(len=8) :: 'SETTLE', 'ROTATION', &
+                                                    'SLIDING']
+        character(len=*), parameter :: slips(3) = [character(len=10) :: '25.0', '500.0', '0.8']
+        character(len=*), parameter :: meant(3) = [character(len=10) :: '25.0E-3', '2.0E-3', &
+                                                    '1.5']
+        integer :: k
+        call parse_deck('w.dat', beam_deck('0.5', [card('LOAD', 'POINT', '1000.0')], &
+            [(card('CHECK', trim(kinds(k)), slips(k)), k=1, 3)]), deck, err)
+        if (allocated(err)) return
+        warn = input_warnings(deck%base)
+        call check(err, size(warn) == 3, 'three warnings about the limits')
+        if (allocated(err)) return
+        do k = 1, 3
+            call check(err, index(warn(k), 'CHECK '//trim(kinds(k))) == 1, &
+                       'warning '//trim(warn(k))//' should name CHECK '//trim(kinds(k)))
+            if (allocated(err)) return
+        end do
+        call parse_deck('w.dat', beam_deck('0.5', [card('LOAD', 'POINT', '1000.0')], &
+            [(card('CHECK', trim(kinds(k)), meant(k)), k=1, 3)]), deck, err)
+        if (allocated(err)) return
+        warn = input_warnings(deck%base)
+        call check(err, size(warn) == 0, 'no warning for limits as meant')
+    end subroutine test_limit_warnings
 end module test_design_checks

@@ -69,28 +69,23 @@ contains
             if (has_check(lim, CHECK_BEARING)) then
                 call effective_pressure(m, q_eff, eff_ok)
                 checks = [checks, &
-                    upper_check('BEARING_MEAN', 'mean contact pressure V / contact area', &
+                    new_check('BEARING_MEAN', 'mean contact pressure V / contact area', &
                         k%u_pressure, s%mean_pressure*k%pressure, lim%limit(1, CHECK_BEARING)* &
-                        k%pressure, s%contact_area > 0.0_dp), &
-                    upper_check('BEARING_EDGE', 'pressure at d from an edge (the larger)', &
+                        k%pressure, s%contact_area > 0.0_dp, .false.), &
+                    new_check('BEARING_EDGE', 'pressure at d from an edge (the larger)', &
                         k%u_pressure, edge_value(s)*k%pressure, lim%limit(2, CHECK_BEARING)* &
-                        k%pressure, any(s%edge_point_in_contact)), &
-                    upper_check('BEARING_EFFECTIVE', 'effective-area pressure V / A''', &
+                        k%pressure, any(s%edge_point_in_contact), .false.), &
+                    new_check('BEARING_EFFECTIVE', 'effective-area pressure V / A''', &
                         k%u_pressure, q_eff*k%pressure, lim%limit(3, CHECK_BEARING)*k%pressure, &
-                        eff_ok)]
+                        eff_ok, .false.)]
             end if
             checks = [checks, movement_checks(lim, s, k)]
             if (has_check(lim, CHECK_SLIDING)) checks = [checks, sliding_check(m, &
                 lim%limit(1, CHECK_SLIDING))]
-            if (has_check(lim, CHECK_CONTACT)) checks = [checks, lower_check('CONTACT_RATIO', &
+            if (has_check(lim, CHECK_CONTACT)) checks = [checks, new_check('CONTACT_RATIO', &
                 'contact area / base area', '', s%contact_area/base_area(m%structure), &
-                lim%limit(1, CHECK_CONTACT), .true.)]
+                lim%limit(1, CHECK_CONTACT), .true., .true.)]
         end associate
-        ! a least value of 0 (no contact, no friction) cannot pass
-        where (checks%minimum .and. checks%defined .and. checks%value <= 0.0_dp)
-            checks%utilisation = huge(1.0_dp)
-            checks%pass = .false.
-        end where
     end function evaluate_design_checks
 
     !> Settlement, differential settlement, relative rotation and tilt.
@@ -100,18 +95,19 @@ contains
         type(scales_t), intent(in) :: k
         type(design_check_t), allocatable :: checks(:)
         allocate (checks(0))
-        if (has_check(lim, CHECK_SETTLE)) checks = [checks, upper_check('SETTLEMENT', &
+        if (has_check(lim, CHECK_SETTLE)) checks = [checks, new_check('SETTLEMENT', &
             'max settlement', k%u_disp, s%w_max%value*k%disp, lim%limit(1, CHECK_SETTLE)* &
-            k%disp, .true.)]
-        if (has_check(lim, CHECK_DIFFSETTLE)) checks = [checks, upper_check('DIFF_SETTLEMENT', &
+            k%disp, .true., .false.)]
+        if (has_check(lim, CHECK_DIFFSETTLE)) checks = [checks, new_check('DIFF_SETTLEMENT', &
             'differential settlement (max - min)', k%u_disp, s%w_differential*k%disp, &
-            lim%limit(1, CHECK_DIFFSETTLE)*k%disp, .true.)]
-        if (has_check(lim, CHECK_ROTATION)) checks = [checks, upper_check('RELATIVE_ROTATION', &
+            lim%limit(1, CHECK_DIFFSETTLE)*k%disp, .true., .false.)]
+        if (has_check(lim, CHECK_ROTATION)) checks = [checks, new_check('RELATIVE_ROTATION', &
             'angular distortion between loaded points', k%u_rotation, &
             s%angular_distortion%value*k%rotation, lim%limit(1, CHECK_ROTATION)*k%rotation, &
-            s%angular_distortion%defined)]
-        if (has_check(lim, CHECK_TILT)) checks = [checks, upper_check('TILT', '|tilt|', &
-            k%u_rotation, abs(s%tilt)*k%rotation, lim%limit(1, CHECK_TILT)*k%rotation, .true.)]
+            s%angular_distortion%defined, .false.)]
+        if (has_check(lim, CHECK_TILT)) checks = [checks, new_check('TILT', '|tilt|', &
+            k%u_rotation, abs(s%tilt)*k%rotation, lim%limit(1, CHECK_TILT)*k%rotation, &
+            .true., .false.)]
     end function movement_checks
 
     !> f V / H against FS_min (n/a without horizontal load: no sliding to guard against).
@@ -119,12 +115,12 @@ contains
         type(model_t), intent(in) :: m
         real(dp), intent(in) :: fs_min
         type(design_check_t) :: c
-        real(dp) :: h
+        real(dp) :: h, fs
         h = abs(sum(m%loads%fx))
-        c = lower_check('SLIDING_FS', 'sliding factor of safety f V / H', '', 0.0_dp, fs_min, &
-                        .false.)
-        if (h > 0.0_dp) c = lower_check('SLIDING_FS', 'sliding factor of safety f V / H', '', &
-            m%interface%f*total_vertical_load(m%loads)/h, fs_min, .true.)
+        fs = 0.0_dp
+        if (h > 0.0_dp) fs = m%interface%f*total_vertical_load(m%loads)/h
+        c = new_check('SLIDING_FS', 'sliding factor of safety f V / H', '', fs, fs_min, &
+                      h > 0.0_dp, .true.)
     end function sliding_check
 
     !> The larger of the summary's pressures at d from an edge that are defined (0: none).
@@ -166,28 +162,21 @@ contains
         if (ea < r) area = 2.0_dp*(r**2*acos(ea/r) - ea*sqrt(r**2 - ea**2))
     end function circle_effective_area
 
-    !> A check whose limit is a largest value: utilisation value / limit.
-    pure function upper_check(name, label, unit, value, limit, defined) result(c)
+    !> One check: utilisation value / limit, or limit / value when the limit is a least
+    !! value (`minimum`; a least value of 0, no contact or no friction, cannot pass); an
+    !! undefined value passes with utilisation 0.
+    pure function new_check(name, label, unit, value, limit, defined, minimum) result(c)
         character(len=*), intent(in) :: name, label, unit
         real(dp), intent(in) :: value, limit
-        logical, intent(in) :: defined
+        logical, intent(in) :: defined, minimum
         type(design_check_t) :: c
-        c = design_check_t(name, label, unit, value, limit, 0.0_dp, defined, .false., .true.)
-        if (.not. defined) c%value = 0.0_dp
-        if (defined) c%utilisation = value/limit
+        c = design_check_t(name, label, unit, 0.0_dp, limit, 0.0_dp, defined, minimum, .true.)
+        if (defined) c%value = value
+        if (defined .and. .not. minimum) c%utilisation = value/limit
+        if (defined .and. minimum .and. value > 0.0_dp) c%utilisation = limit/value
+        if (defined .and. minimum .and. value <= 0.0_dp) c%utilisation = huge(1.0_dp)
         c%pass = c%utilisation <= 1.0_dp
-    end function upper_check
-
-    !> A check whose limit is a least value: utilisation limit / value.
-    pure function lower_check(name, label, unit, value, limit, defined) result(c)
-        character(len=*), intent(in) :: name, label, unit
-        real(dp), intent(in) :: value, limit
-        logical, intent(in) :: defined
-        type(design_check_t) :: c
-        c = design_check_t(name, label, unit, value, limit, 0.0_dp, defined, .true., .true.)
-        if (defined .and. value > 0.0_dp) c%utilisation = limit/value
-        c%pass = c%utilisation <= 1.0_dp
-    end function lower_check
+    end function new_check
 
     !> The defined check of largest utilisation (0: none defined).
     pure integer function governing_check(checks) result(i)
