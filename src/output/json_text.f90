@@ -1,5 +1,4 @@
-!> JSON literals: strings (escaped) and numbers (null when not defined or not finite), for
-!! every JSON file fricon writes.
+!> JSON text of fricon's summaries: string literals and numbers.
 module json_text
     use kinds, only: dp
     implicit none
@@ -48,8 +47,8 @@ contains
 
     !> A JSON number (null when not defined or not finite).
     pure function json_number(x, defined) result(text)
-        real(dp), intent(in) :: x           !! the number
-        logical, intent(in) :: defined      !! false: null
+        real(dp), intent(in) :: x          !! the number
+        logical, intent(in) :: defined     !! false: null
         character(len=:), allocatable :: text
         character(len=32) :: buf
         if (.not. defined .or. .not. (abs(x) <= huge(x))) then
