@@ -1,0 +1,309 @@
+!> The records of a run an engineer files: the SHA-256 of the deck against FIPS 180's test
+!! vectors, every traceability field of the JSON summary (deck, deck_identity, deck_sha256,
+!! deck_text, inputs), no machine path in any output, the merge of a sweep's shards and the
+!! width of the reports.
+module test_records
+    use iso_fortran_env, only: output_unit, error_unit
+    use kinds, only: dp
+    use harness, only: unittest_t, new_unittest, error_t, check, check_close
+    use errors, only: EXIT_OK
+    use sha256, only: sha256_hex
+    use deck_reader, only: deck_t, read_deck
+    use output_paths, only: canonical_path
+    use analysis_driver, only: run_analysis, run_options_t
+    implicit none
+    private
+
+    public :: collect_records
+
+    character(len=*), parameter :: dir = 'build/test_records'
+
+contains
+
+    subroutine collect_records(tests)
+        type(unittest_t), allocatable, intent(out) :: tests(:)
+        tests = [new_unittest('sha256_fips_vectors', test_sha256), &
+                 new_unittest('json_deck_name_only', test_deck_name), &
+                 new_unittest('json_deck_sha256', test_deck_sha256), &
+                 new_unittest('json_deck_text', test_deck_text), &
+                 new_unittest('json_deck_identity', test_deck_identity), &
+                 new_unittest('json_inputs', test_inputs), &
+                 new_unittest('no_machine_path_in_outputs', test_no_machine_path)]
+    end subroutine collect_records
+
+    !> FIPS 180-2 appendix B (and the NIST example values): SHA-256 of "abc" (B.1), of the
+    !! 448-bit message "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq" (B.2, two
+    !! blocks after padding), of one million 'a' (B.3), and of the empty message.
+    subroutine test_sha256(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check(err, sha256_hex('abc') == &
+                   'ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad', &
+                   'SHA-256("abc"): '//sha256_hex('abc'))
+        if (allocated(err)) return
+        call check(err, sha256_hex('abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq') &
+                   == '248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1', &
+                   'SHA-256 of the 448-bit message')
+        if (allocated(err)) return
+        call check(err, sha256_hex(repeat('a', 1000000)) == &
+                   'cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0', &
+                   'SHA-256 of one million a')
+        if (allocated(err)) return
+        call check(err, sha256_hex('') == &
+                   'e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855', &
+                   'SHA-256 of the empty message')
+    end subroutine test_sha256
+
+    !> A beam deck in kN and m (two SWEEP values of F when sweep is true).
+    function beam_lines(sweep) result(lines)
+        logical, intent(in) :: sweep
+        character(len=80), allocatable :: lines(:)
+        lines = [character(len=80) :: '* a beam "quoted" \ backslash', &
+                 'TITLE     records test', &
+                 'MODEL     BEAM', 'UNITS     kN        m', &
+                 'GEOMETRY  10.0      0.8       1.2', 'STRUCTURE 3.0E7     0.2', &
+                 'SOIL      3.0E4     0.3', 'FRICTION  0.5', &
+                 'LOAD      POINT     1000.0    50.0      1.5', &
+                 'LOAD      PATCH     600.0               -4.0      -2.0', 'MESH      16']
+        if (sweep) lines = [character(len=80) :: lines, 'SWEEP     F         0.2       0.6']
+        lines = [character(len=80) :: lines, 'END']
+    end function beam_lines
+
+    !> Write lines to path (made with its folder).
+    subroutine write_deck(path, lines)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: lines(:)
+        integer :: u, k
+        call execute_command_line('mkdir -p "$(dirname '//path//')"')
+        open (newunit=u, file=path, status='replace', action='write')
+        do k = 1, size(lines)
+            write (u, '(a)') trim(lines(k))
+        end do
+        close (u)
+    end subroutine write_deck
+
+    !> Read the deck file at path and run it into out (no figures: faster).
+    subroutine run_deck_file(path, out, status, err, figures)
+        character(len=*), intent(in) :: path, out
+        integer, intent(out) :: status
+        type(error_t), allocatable, intent(out) :: err
+        logical, intent(in), optional :: figures
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        opt%figures = .false.
+        if (present(figures)) opt%figures = figures
+        opt%estimates = .false.
+        status = -1
+        call read_deck(path, deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, out, output_unit, error_unit, status, opt)
+    end subroutine run_deck_file
+
+    !> The value of a JSON line '  "key": value,' of the file (its first such line).
+    function json_value(path, key) result(text)
+        character(len=*), intent(in) :: path, key
+        character(len=:), allocatable :: text
+        character(len=20000) :: line
+        integer :: u, ios, k
+        text = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            k = index(line, '  "'//key//'": ')
+            if (k /= 1) cycle
+            text = trim(line(len(key) + 7:))
+            if (text(len(text):) == ',') text = text(1:len(text) - 1)
+            exit
+        end do
+        close (u)
+    end function json_value
+
+    !> The first line of a file ('' if none).
+    function first_line(path) result(text)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: text
+        character(len=2000) :: line
+        integer :: u, ios
+        text = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        read (u, '(a)', iostat=ios) line
+        if (ios == 0) text = trim(line)
+        close (u)
+    end function first_line
+
+    !> The JSON's "deck" is the deck's file name, whatever path the deck was given by (an
+    !! absolute one here), and the report names it so too.
+    subroutine test_deck_name(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status
+        character(len=:), allocatable :: deck_abs
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/decks/nm.dat', beam_lines(.false.))
+        deck_abs = canonical_path(dir//'/decks/nm.dat')
+        call run_deck_file(deck_abs, dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. deck_abs(1:1) == '/', 'the deck did not run')
+        if (allocated(err)) return
+        call check(err, json_value(dir//'/out/nm.json', 'deck') == '"nm.dat"', &
+                   '"deck" is '//json_value(dir//'/out/nm.json', 'deck'))
+        if (allocated(err)) return
+        call check(err, report_names(dir//'/out/nm.txt', ' deck: nm.dat    case:'), &
+                   'the report does not name the deck by its file name')
+    end subroutine test_deck_name
+
+    logical function report_names(path, start)
+        character(len=*), intent(in) :: path, start
+        character(len=2000) :: line
+        integer :: u, ios
+        report_names = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, start) == 1) report_names = .true.
+        end do
+        close (u)
+    end function report_names
+
+    !> "deck_sha256" is the SHA-256 of the deck file's bytes as `sha256sum` computes it (an
+    !! independent program; the deck has no trailing blanks).
+    subroutine test_deck_sha256(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status
+        character(len=:), allocatable :: expected
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/h.dat', beam_lines(.false.))
+        call execute_command_line('sha256sum '//dir//'/h.dat | cut -c1-64 > '//dir//'/h.sum')
+        expected = first_line(dir//'/h.sum')
+        call run_deck_file(dir//'/h.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. len(expected) == 64, 'no run or no sha256sum')
+        if (allocated(err)) return
+        call check(err, json_value(dir//'/out/h.json', 'deck_sha256') == '"'//expected//'"', &
+                   'deck_sha256 '//json_value(dir//'/out/h.json', 'deck_sha256')// &
+                   ', sha256sum '//expected)
+    end subroutine test_deck_sha256
+
+    !> "deck_text" is the deck file's text: Python's json module (an independent parser)
+    !! reads the JSON and writes the string out; it equals the file byte for byte (quotes
+    !! and a backslash in the deck's comment line escaped and restored).
+    subroutine test_deck_text(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status, code
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/t.dat', beam_lines(.false.))
+        call run_deck_file(dir//'/t.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK, 'the deck did not run')
+        if (allocated(err)) return
+        call execute_command_line('python3 -c "import json,sys; sys.stdout.write(json.load('// &
+            'open(''' //dir//'/out/t.json''))[''deck_text''])" > '//dir//'/t.text && cmp -s '// &
+            dir//'/t.text '//dir//'/t.dat', exitstat=code)
+        call check(err, code == 0, 'deck_text is not the deck file''s text')
+    end subroutine test_deck_text
+
+    !> "deck_identity" is 'sha256:' and the SHA-256 of the deck's canonical path (realpath
+    !! and sha256sum compute it here), and it keeps decks apart: a sweep of d1/s.dat (s_001,
+    !! s_002) and then a one-case d2/s.dat in the same output folder leave s_001.* and
+    !! s_002.* (d1's, not d2's to remove), while d1/s.dat run again as one case removes them.
+    subroutine test_deck_identity(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status
+        character(len=:), allocatable :: expected
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/d1/s.dat', beam_lines(.true.))
+        call write_deck(dir//'/d2/s.dat', beam_lines(.false.))
+        call execute_command_line('printf %s "$(realpath '//dir//'/d1/s.dat)" | sha256sum | '// &
+                                  'cut -c1-64 > '//dir//'/id.sum')
+        expected = first_line(dir//'/id.sum')
+        call run_deck_file(dir//'/d1/s.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. json_value(dir//'/out/s_001.json', &
+                   'deck_identity') == '"sha256:'//expected//'"', 'deck_identity '// &
+                   json_value(dir//'/out/s_001.json', 'deck_identity')//', expected sha256:'// &
+                   expected)
+        if (allocated(err)) return
+        call run_deck_file(dir//'/d2/s.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. exists(dir//'/out/s.json') .and. &
+                   exists(dir//'/out/s_001.json') .and. exists(dir//'/out/s_002.txt') .and. &
+                   exists(dir//'/out/s_summary.csv'), 'another deck of the same name removed '// &
+                   'the sweep''s files')
+        if (allocated(err)) return
+        call write_deck(dir//'/d1/s.dat', beam_lines(.false.))
+        call run_deck_file(dir//'/d1/s.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. .not. exists(dir//'/out/s_001.json') .and. &
+                   .not. exists(dir//'/out/s_002.txt') .and. .not. &
+                   exists(dir//'/out/s_summary.csv'), 'the deck''s own stale sweep was left')
+    end subroutine test_deck_identity
+
+    logical function exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=exists)
+    end function exists
+
+    !> "inputs": every value of the case's model after defaults, with units, read by Python's
+    !! json module. Expected values from the deck (beam_lines) and README's defaults: k = 5/6,
+    !! eps_bar 1E-6, N_e 16, P1 everywhere, NEWTON; case 2 of the sweep has f = 0.6; the
+    !! PATCH's x2 = -2 m, the POINT's none (null); E in kN/m^2, loads in kN and m.
+    subroutine test_inputs(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status, code
+        real(dp) :: v(9)
+        character(len=200) :: words
+        integer :: u, ios
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/i.dat', beam_lines(.true.))
+        call run_deck_file(dir//'/i.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK, 'the deck did not run')
+        if (allocated(err)) return
+        call execute_command_line('python3 -c "import json; i = json.load(open('''//dir// &
+            '/out/i_002.json''))[''inputs'']; s = i[''structure'']; l = i[''loads'']; '// &
+            'print(s[''length_or_radius''], s[''modulus''], s[''shear_factor''], '// &
+            'i[''ground''][''modulus''], i[''interface''][''friction''], '// &
+            'i[''interface''][''eps_bar''], l[0][''f_x''], l[1][''x2''], '// &
+            'i[''mesh''][''elements'']); print(s[''units''][''modulus''], '// &
+            'l[0][''units''][''f_z''], l[0][''x2''], i[''mesh''][''interpolation''][''w''], '// &
+            'i[''solver''][''method''], i[''units''][''settlement_shown_in''])" > '// &
+            dir//'/inputs.txt', exitstat=code)
+        call check(err, code == 0, 'python could not read the inputs')
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/inputs.txt', status='old', action='read')
+        read (u, *, iostat=ios) v
+        if (ios == 0) read (u, '(a)', iostat=ios) words
+        close (u)
+        call check(err, ios == 0, 'the inputs could not be read back')
+        if (allocated(err)) return
+        call check(err, all(abs(v - [10.0_dp, 3.0e7_dp, 5.0_dp/6.0_dp, 3.0e4_dp, 0.6_dp, &
+                   1.0e-6_dp, 50.0_dp, -2.0_dp, 16.0_dp]) <= 1.0e-12_dp*abs(v)), &
+                   'input values differ from the deck''s')
+        if (allocated(err)) return
+        call check(err, trim(words) == 'kN/m^2 kN None P1 NEWTON mm', 'units and words: '// &
+                   trim(words))
+    end subroutine test_inputs
+
+    !> No output file holds a machine path: a deck given by its absolute path, with its
+    !! figure, writes no byte of the working folder's canonical path (the report, CSV, JSON,
+    !! .gp script, .dat header and PNG all searched).
+    subroutine test_no_machine_path(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status, code
+        character(len=:), allocatable :: here
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/p.dat', beam_lines(.true.))
+        here = canonical_path('.')
+        call run_deck_file(canonical_path(dir//'/p.dat'), canonical_path(dir)//'/out', status, &
+                           err, figures=.true.)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. exists(dir//'/out/p_001.gp') .and. &
+                   exists(dir//'/out/p_summary.csv'), 'the deck did not run')
+        if (allocated(err)) return
+        call execute_command_line('! grep -rlF "'//here//'" '//dir//'/out', exitstat=code)
+        call check(err, code == 0, 'an output holds the path '//here)
+    end subroutine test_no_machine_path
+end module test_records
