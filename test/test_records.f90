@@ -249,7 +249,7 @@ contains
     !> "inputs": every value of the case's model after defaults, with units, read by Python's
     !! json module. Expected values from the deck (beam_lines) and README's defaults: k = 5/6,
     !! eps_bar 1E-6, N_e 16, P1 everywhere, NEWTON; case 2 of the sweep has f = 0.6; the
-    !! PATCH's x2 = -2 m, the POINT's none (null); E in kN/m^2, loads in kN and m.
+    !! PATCH's x2 = -2 m, the POINT's none (null); E in kPa, loads in kN and m.
     subroutine test_inputs(err)
         type(error_t), allocatable, intent(out) :: err
         integer :: status, code
@@ -283,7 +283,7 @@ contains
                    1.0e-6_dp, 50.0_dp, -2.0_dp, 16.0_dp]) <= 1.0e-12_dp*abs(v)), &
                    'input values differ from the deck''s')
         if (allocated(err)) return
-        call check(err, trim(words) == 'kN/m^2 kN None P1 NEWTON mm', 'units and words: '// &
+        call check(err, trim(words) == 'kPa kN None P1 NEWTON mm', 'units and words: '// &
                    trim(words))
     end subroutine test_inputs
 

@@ -13,7 +13,7 @@ module input_record
     use json_text, only: json_string, json_number
     use deck_fields, only: int_text
     use shape_functions, only: interp_name
-    use case_scales, only: units_t, case_units
+    use case_scales, only: units_t, case_units, pressure_unit
     use model, only: model_t, MODEL_BEAM, GROUND_LAYERED, GROUND_BASE_HALFSPACE, &
                      LOAD_PATCH, LOAD_MOMENT, METHOD_NEWTON, &
                      base_name
@@ -110,7 +110,7 @@ contains
             num(s%e)//', "poisson": '//num(s%nu)//', "shear_factor": '//num(s%k_shear)//','
         write (u, '(a)') '      "units": {"length_or_radius": '//json_string(l)// &
             ', "thickness": '//json_string(l)//', "width": '//json_string(l)// &
-            ', "modulus": '//json_string(f//'/'//l//'^2')//'}},'
+            ', "modulus": '//json_string(trim(pressure_unit(f, l)))//'}},'
         end associate
     end subroutine write_structure
 
@@ -122,7 +122,7 @@ contains
         integer :: k
         l = trim(m%units%length)
         associate (g => m%ground)
-        modulus_unit = trim(m%units%force)//'/'//l//'^2'
+        modulus_unit = trim(pressure_unit(m%units%force, l))
         layer_unit = modulus_unit
         if (g%relative_moduli) layer_unit = 'E_f'
         write (u, '(a)') '    "ground": {"kind": '//json_string(trim(merge('layered    ', &
