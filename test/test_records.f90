@@ -11,6 +11,7 @@ module test_records
     use deck_reader, only: deck_t, read_deck
     use output_paths, only: canonical_path
     use analysis_driver, only: run_analysis, run_options_t
+    use shard_merge, only: merge_shards, run_merge
     implicit none
     private
 
@@ -28,7 +29,9 @@ contains
                  new_unittest('json_deck_text', test_deck_text), &
                  new_unittest('json_deck_identity', test_deck_identity), &
                  new_unittest('json_inputs', test_inputs), &
-                 new_unittest('no_machine_path_in_outputs', test_no_machine_path)]
+                 new_unittest('no_machine_path_in_outputs', test_no_machine_path), &
+                 new_unittest('merge_equals_serial', test_merge_serial), &
+                 new_unittest('merge_refusals', test_merge_refusals)]
     end subroutine collect_records
 
     !> FIPS 180-2 appendix B (and the NIST example values): SHA-256 of "abc" (B.1), of the
@@ -81,16 +84,21 @@ contains
         close (u)
     end subroutine write_deck
 
-    !> Read the deck file at path and run it into out (no figures: faster).
-    subroutine run_deck_file(path, out, status, err, figures)
+    !> Read the deck file at path and run it into out (no figures: faster; shard I of N).
+    subroutine run_deck_file(path, out, status, err, figures, shard)
         character(len=*), intent(in) :: path, out
         integer, intent(out) :: status
         type(error_t), allocatable, intent(out) :: err
         logical, intent(in), optional :: figures
+        integer, intent(in), optional :: shard(2)
         type(deck_t) :: deck
         type(run_options_t) :: opt
         opt%figures = .false.
         if (present(figures)) opt%figures = figures
+        if (present(shard)) then
+            opt%shard_index = shard(1)
+            opt%shard_count = shard(2)
+        end if
         opt%estimates = .false.
         status = -1
         call read_deck(path, deck, err)
@@ -306,4 +314,118 @@ contains
         call execute_command_line('! grep -rlF "'//here//'" '//dir//'/out', exitstat=code)
         call check(err, code == 0, 'an output holds the path '//here)
     end subroutine test_no_machine_path
+    !> A three-case sweep (f = 0.2, 0.4, 0.6) run in two shards (cases 1 and 3, case 2)
+    !! and merged gives the serial run's summary CSV and response script byte for byte (one
+    !! process: one run time), the figure drawn from them; the merge reads the shards in any
+    !! order.
+    subroutine test_merge_serial(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status, code
+        character(len=:), allocatable :: merged
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/sw.dat', three_cases())
+        call run_deck_file(dir//'/sw.dat', dir//'/serial', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK .and. exists(dir//'/serial/sw_response.gp'), &
+                   'the serial sweep did not run')
+        if (allocated(err)) return
+        call run_shards(dir//'/sw.dat', dir//'/shards', err)
+        if (allocated(err)) return
+        call check(err, .not. exists(dir//'/shards/sw_summary.csv'), 'a shard wrote the summary')
+        if (allocated(err)) return
+        call merge_shards([character(len=80) :: dir//'/shards/sw_summary.shard-2-of-2.csv', &
+                           dir//'/shards/sw_summary.shard-1-of-2.csv'], '', .true., merged, err)
+        if (allocated(err)) return
+        call execute_command_line('cmp -s '//dir//'/serial/sw_summary.csv '//merged// &
+            ' && cmp -s '//dir//'/serial/sw_response.gp '//dir//'/shards/sw_response.gp', &
+            exitstat=code)
+        call check(err, code == 0 .and. merged == dir//'/shards/sw_summary.csv', &
+                   'the merged summary or response script differs from the serial run''s')
+        if (allocated(err)) return
+        call check(err, exists(dir//'/shards/sw_response.png') .or. .not. has_gnuplot(), &
+                   'no response figure after the merge')
+    end subroutine test_merge_serial
+
+    logical function has_gnuplot()
+        integer :: code
+        call execute_command_line('command -v gnuplot > /dev/null', exitstat=code)
+        has_gnuplot = code == 0
+    end function has_gnuplot
+
+    function three_cases() result(lines)
+        character(len=80), allocatable :: lines(:)
+        lines = beam_lines(.false.)
+        lines(size(lines)) = 'SWEEP     F         0.2       0.4       0.6'
+        lines = [character(len=80) :: lines, 'END']
+    end function three_cases
+
+    !> The two shards of the deck at path into out.
+    subroutine run_shards(path, out, err)
+        character(len=*), intent(in) :: path, out
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status, i
+        do i = 1, 2
+            call run_deck_file(path, out, status, err, shard=[i, 2])
+            if (allocated(err)) return
+            call check(err, status == EXIT_OK .and. exists(out//'/sw_summary.shard-'// &
+                       achar(48 + i)//'-of-2.csv'), 'shard did not run')
+            if (allocated(err)) return
+        end do
+    end subroutine run_shards
+
+    !> Bad shards are refused with a message naming the fault, exit status 1, and nothing
+    !! written (no summary, no response script or figure): shard 2 of 2 missing; a shard 2
+    !! of another deck (f = 0.2, 0.5, 0.6: another deck_sha256); overlapping shards (a file
+    !! named shard 2 holding shard 1's cases); a shard given twice; a file that is no shard.
+    subroutine test_merge_refusals(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: sh = dir//'/a/sw_summary.shard-'
+        character(len=80), allocatable :: other(:)
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call write_deck(dir//'/sw.dat', three_cases())
+        call run_shards(dir//'/sw.dat', dir//'/a', err)
+        if (allocated(err)) return
+        other = three_cases()
+        other(size(other) - 1) = 'SWEEP     F         0.2       0.5       0.6'
+        call write_deck(dir//'/o/sw.dat', other)
+        call run_shards(dir//'/o/sw.dat', dir//'/b', err)
+        if (allocated(err)) return
+        call expect_refusal([character(len=80) :: sh//'1-of-2.csv'], 'missing', err)
+        if (allocated(err)) return
+        call expect_refusal([character(len=80) :: sh//'1-of-2.csv', &
+                            dir//'/b/sw_summary.shard-2-of-2.csv'], 'different decks', err)
+        if (allocated(err)) return
+        call execute_command_line('mkdir -p '//dir//'/c && cp '//dir//'/a/sw_* '//dir// &
+            '/c/ && cp '//dir//'/c/sw_summary.shard-1-of-2.csv '//dir// &
+            '/c/sw_summary.shard-2-of-2.csv')
+        call expect_refusal([character(len=80) :: dir//'/c/sw_summary.shard-1-of-2.csv', &
+                            dir//'/c/sw_summary.shard-2-of-2.csv'], 'overlapping', err)
+        if (allocated(err)) return
+        call expect_refusal([character(len=80) :: sh//'1-of-2.csv', sh//'1-of-2.csv'], &
+                            'given twice', err)
+        if (allocated(err)) return
+        call expect_refusal([character(len=80) :: dir//'/sw.dat'], 'not a shard summary', err)
+    end subroutine test_merge_refusals
+
+    !> The merge of shards is refused with a message holding `words` and status 1, and no
+    !! merged file is left in their folder.
+    subroutine expect_refusal(shards, words, err)
+        character(len=*), intent(in) :: shards(:), words
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        character(len=:), allocatable :: merged, folder
+        integer :: status
+        folder = shards(1)(1:index(shards(1), '/', back=.true.) - 1)
+        call merge_shards(shards, '', .true., merged, refusal)
+        call check(err, allocated(refusal), 'refused nothing ('//words//')')
+        if (allocated(err)) return
+        call check(err, index(refusal%message, words) > 0, 'the refusal does not say '// &
+                   words//': '//refusal%message)
+        if (allocated(err)) return
+        call run_merge(shards, '', .false., .true., status)
+        call check(err, status == 1 .and. .not. exists(folder//'/sw_summary.csv') .and. &
+                   .not. exists(folder//'/sw_response.gp') .and. .not. &
+                   exists(folder//'/sw_response.png'), 'exit status not 1, or a file written ('// &
+                   words//')')
+    end subroutine expect_refusal
 end module test_records

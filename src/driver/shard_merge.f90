@@ -26,10 +26,16 @@ module shard_merge
 
     character(len=*), parameter :: marker = '_summary.shard-'
 
-    !> One shard summary as read.
+    !> One line of text.
+    type :: text_t
+        character(len=:), allocatable :: text
+    end type text_t
+
+    !> One shard summary as read (rows one by one: gfortran 12 mishandles arrays of
+    !! deferred length inside an array of derived type).
     type :: shard_t
         character(len=:), allocatable :: path, folder, stamp, header
-        character(len=:), allocatable :: rows(:)
+        type(text_t), allocatable :: rows(:)
         integer :: index = 0, count = 0
     end type shard_t
 
@@ -172,6 +178,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         character(len=:), allocatable :: lines(:)
         logical :: ok
+        integer :: r
         shard%path = path
         shard%folder = path(1:max(index(path, '/', back=.true.) - 1, 0))
         if (len(shard%folder) == 0) shard%folder = '.'
@@ -193,7 +200,10 @@ contains
         end if
         shard%stamp = trim(lines(1))
         shard%header = trim(lines(2))
-        shard%rows = lines(3:)
+        allocate (shard%rows(size(lines) - 2))
+        do r = 1, size(shard%rows)
+            shard%rows(r)%text = trim(lines(r + 2))
+        end do
     end subroutine read_shard
 
     !> Every row of every shard in case order, after checking that the shards agree on the
@@ -206,15 +216,26 @@ contains
         integer, allocatable :: owner(:)
         integer :: k, r, i, n, total, width
         total = -1
-        width = maxval([(len(shards(k)%rows), k=1, size(shards))])
+        width = 1
+        do k = 1, size(shards)
+            do r = 1, size(shards(k)%rows)
+                width = max(width, len(shards(k)%rows(r)%text))
+            end do
+        end do
         do k = 1, size(shards)
             if (shards(k)%header /= shards(1)%header) then
                 call new_error(err, EXIT_INPUT, shards(k)%path//' has other columns than '// &
                                shards(1)%path//': a shard of another deck')
                 return
             end if
+            if (program_of(shards(k)%stamp) /= program_of(shards(1)%stamp)) then
+                call new_error(err, EXIT_INPUT, shards(k)%path//' and '//shards(1)%path// &
+                    ' were written by different versions: '//program_of(shards(k)%stamp)// &
+                    ', '//program_of(shards(1)%stamp))
+                return
+            end if
             do r = 1, size(shards(k)%rows)
-                call case_of_row(shards(k)%rows(r), i, n)
+                call case_of_row(shards(k)%rows(r)%text, i, n)
                 if (total < 0 .and. n > 0) then
                     total = n
                     allocate (owner(total))
@@ -238,7 +259,7 @@ contains
                     return
                 end if
                 owner(i) = k
-                rows(i) = shards(k)%rows(r)
+                rows(i) = shards(k)%rows(r)%text
             end do
         end do
         if (total < 1) then
@@ -248,6 +269,14 @@ contains
                 ' of '//int_text(total)//' is in no shard (a shard cut short?)')
         end if
     end subroutine ordered_rows
+
+    !> 'fricon 0.2.0' of a stamp line '# fricon 0.2.0, run 2026-...'.
+    pure function program_of(stamp) result(text)
+        character(len=*), intent(in) :: stamp
+        character(len=:), allocatable :: text
+        text = stamp(3:)
+        if (index(text, ', run ') > 0) text = text(1:index(text, ', run ') - 1)
+    end function program_of
 
     !> i and n of a row's label '"case i of n: ..."' (0 when it has none).
     pure subroutine case_of_row(row, i, n)
@@ -279,7 +308,7 @@ contains
         first_hash = ''
         do k = 1, size(shards)
             do r = 1, size(shards(k)%rows)
-                call case_of_row(shards(k)%rows(r), i, n)
+                call case_of_row(shards(k)%rows(r)%text, i, n)
                 json = shards(k)%folder//'/'//rows(i)(1:index(rows(i), ',') - 1)//'.json'
                 call json_field(json, 'deck_sha256', hash)
                 if (len(hash) == 0) then

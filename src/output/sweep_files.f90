@@ -19,7 +19,7 @@ module sweep_files
 contains
 
     !> A sweep's summary CSV and overlay figure; a shard writes STEM_summary.shard-I-of-N.csv
-    !! with its own rows (scripts/merge_shards.sh joins the shards into STEM_summary.csv).
+    !! with its own rows (fricon --merge joins the shards into STEM_summary.csv).
     subroutine write_sweep_outputs(out_dir, stem, cases, results, selected, figures, &
                                    shard_index, shard_count, err)
         character(len=*), intent(in) :: out_dir        !! output folder
