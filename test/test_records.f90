@@ -12,6 +12,8 @@ module test_records
     use output_paths, only: canonical_path
     use analysis_driver, only: run_analysis, run_options_t
     use shard_merge, only: merge_shards, run_merge
+    use report_folding, only: fold_table, report_width
+    use text_files, only: read_lines
     implicit none
     private
 
@@ -31,7 +33,9 @@ contains
                  new_unittest('json_inputs', test_inputs), &
                  new_unittest('no_machine_path_in_outputs', test_no_machine_path), &
                  new_unittest('merge_equals_serial', test_merge_serial), &
-                 new_unittest('merge_refusals', test_merge_refusals)]
+                 new_unittest('merge_refusals', test_merge_refusals), &
+                 new_unittest('fold_table_groups', test_fold_table), &
+                 new_unittest('reports_of_input_decks_fit_132', test_report_width)]
     end subroutine collect_records
 
     !> FIPS 180-2 appendix B (and the NIST example values): SHA-256 of "abc" (B.1), of the
@@ -428,4 +432,87 @@ contains
                    exists(folder//'/sw_response.png'), 'exit status not 1, or a file written ('// &
                    words//')')
     end subroutine expect_refusal
+    !> A table of 18 columns of 13 characters (234 wide: the x column and 17 more), one
+    !! header line and two rows, the second flagged ' !T': folded into two groups (9 and 8
+    !! columns after x: 13 + 9 x 13 + 3 = 133 does not fit, 13 + 8 x 13 + 3 fits, balanced
+    !! over ceil(17/8) = 3 groups of 6, 6 and 5), each line at most 132 wide, every cell
+    !! once, the x cell in every group, the flag once, at the end of the first group's
+    !! second row.
+    subroutine test_fold_table(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=18*13 + 3) :: lines(3)
+        character(len=:), allocatable :: folded(:)
+        character(len=13) :: cell
+        integer :: r, c, found
+        do r = 1, 3
+            lines(r) = ''
+            do c = 1, 18
+                write (cell, '(a9,i1,a1,i2.2)') 'r', r, 'c', c
+                lines(r)(13*(c - 1) + 1:13*c) = cell
+            end do
+        end do
+        lines(3) = trim(lines(3))//' !T'
+        folded = fold_table(lines, 1, 13, 13, 18)
+        ! 3 groups of 3 lines, and a blank and a "continued" line before groups 2 and 3
+        call check(err, size(folded) == 3*3 + 2*2 .and. all(len_trim(folded) <= report_width), &
+                   'folded table: not 3 groups of lines within 132 columns')
+        if (allocated(err)) return
+        do r = 1, 3
+            do c = 1, 18
+                write (cell, '(a9,i1,a1,i2.2)') 'r', r, 'c', c
+                found = count(index(folded, trim(adjustl(cell))) > 0)
+                call check(err, found == merge(3, 1, c == 1), 'cell '//trim(adjustl(cell))// &
+                           ' not where expected')
+                if (allocated(err)) return
+            end do
+        end do
+        call check(err, count(index(folded, ' !T') > 0) == 1 .and. &
+                   index(folded(3), ' !T') == len_trim(folded(3)) - 2, 'the flag is not once, '// &
+                   'at the end of the first group''s flagged row')
+    end subroutine test_fold_table
+
+    !> No line of the report of any deck in input/ (its folders too) is wider than 132
+    !! columns. Each deck runs the first and the last value of its first SWEEP and the first
+    !! of the others (the report's layout depends on the model, not on the swept values;
+    !! input/ holds failing cases too), without figures and estimates (they add no report
+    !! lines wider than the solved case's).
+    subroutine test_report_width(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: decks(:), reports(:), lines(:)
+        type(deck_t) :: deck
+        type(run_options_t) :: opt
+        integer :: k, s, status, widest
+        logical :: ok
+        real(dp), allocatable :: v(:)
+        opt%figures = .false.
+        opt%estimates = .false.
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && find input -name '// &
+                                  '"*.dat" | sort > '//dir//'/decks.txt')
+        call read_lines(dir//'/decks.txt', decks, ok)
+        call check(err, ok .and. size(decks) >= 20, 'the decks of input/ not found')
+        if (allocated(err)) return
+        do k = 1, size(decks)
+            call read_deck(trim(decks(k)), deck, err)
+            if (allocated(err)) return
+            if (allocated(deck%sweeps)) then
+                do s = 1, size(deck%sweeps)
+                    v = deck%sweeps(s)%values
+                    if (s == 1 .and. size(v) > 2) deck%sweeps(s)%values = [v(1), v(size(v))]
+                    if (s > 1) deck%sweeps(s)%values = [v(1)]
+                end do
+            end if
+            call run_analysis(deck, dir//'/out', output_unit, error_unit, status, opt)
+        end do
+        call execute_command_line('ls '//dir//'/out/*.txt > '//dir//'/reports.txt')
+        call read_lines(dir//'/reports.txt', reports, ok)
+        call check(err, ok .and. size(reports) >= size(decks), 'fewer reports than decks')
+        if (allocated(err)) return
+        do k = 1, size(reports)
+            call read_lines(trim(reports(k)), lines, ok)
+            widest = maxval(len_trim(lines))
+            call check(err, ok .and. widest <= report_width, trim(reports(k))//': a line of '// &
+                       'more than 132 columns')
+            if (allocated(err)) return
+        end do
+    end subroutine test_report_width
 end module test_records

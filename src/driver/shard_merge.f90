@@ -19,6 +19,7 @@ module shard_merge
     use response_figure, only: write_response_script
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: base_name, prepare_output_dir, remove_output
+    use text_files, only: read_lines, text_lines
     implicit none
     private
 
@@ -373,31 +374,6 @@ contains
         plain = plain(1:k)
     end function unescaped
 
-    !> The lines of a text whose lines each end in a line feed.
-    pure subroutine text_lines(text, lines)
-        character(len=*), intent(in) :: text
-        character(len=:), allocatable, intent(out) :: lines(:)
-        integer :: k, start, n, width
-        n = 0
-        width = 1
-        start = 1
-        do k = 1, len(text)
-            if (text(k:k) /= achar(10)) cycle
-            n = n + 1
-            width = max(width, k - start)
-            start = k + 1
-        end do
-        allocate (character(len=width) :: lines(n))
-        n = 0
-        start = 1
-        do k = 1, len(text)
-            if (text(k:k) /= achar(10)) cycle
-            n = n + 1
-            lines(n) = text(start:k - 1)
-            start = k + 1
-        end do
-    end subroutine text_lines
-
     !> The cases as the response figure needs them (name, label, status, key results) from
     !! the merged rows, with the key results' labels and units of the deck: the summary's
     !! key columns must be the deck's.
@@ -515,27 +491,4 @@ contains
             call remove_output(base//'.png')
         end if
     end subroutine write_response
-
-    !> Every line of a text file, as long as the longest (ok false if it cannot be read).
-    subroutine read_lines(path, lines, ok)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable, intent(out) :: lines(:)
-        logical, intent(out) :: ok
-        character(len=:), allocatable :: text
-        integer :: u, ios, size_bytes
-        ok = .false.
-        open (newunit=u, file=path, status='old', action='read', access='stream', &
-              form='unformatted', iostat=ios)
-        if (ios /= 0) return
-        inquire (unit=u, size=size_bytes)
-        allocate (character(len=max(size_bytes, 0)) :: text)
-        if (size_bytes > 0) read (u, iostat=ios) text
-        close (u)
-        if (ios /= 0) return
-        if (len(text) > 0) then
-            if (text(len(text):) /= achar(10)) text = text//achar(10)
-        end if
-        call text_lines(text, lines)
-        ok = .true.
-    end subroutine read_lines
 end module shard_merge

@@ -32,6 +32,7 @@ module report_writer
                            ground_json, write_ground_figure_settings, gp_number
     use run_identity, only: program_name, program_version, run_time, run_stamp
     use json_text, only: json_string, json_number
+    use report_folding, only: fold_table, fold_report_lines
     implicit none
     private
 
@@ -780,6 +781,7 @@ contains
             if (len_trim(notes(i)) > 0) write (u, '(a)') ' '//trim(notes(i))
         end do
         call commit_file(path, u, err)
+        if (.not. allocated(err)) call fold_report_lines(path, err)
     end subroutine write_report
 
     subroutine write_echo(u, lines)
@@ -957,45 +959,50 @@ contains
     end subroutine write_log
 
     !> A station table from a list of columns; flagged rows end with ` !T` (tension beyond
-    !! O(eta)) or ` !O` (lifted off with a negative pointwise gap).
+    !! O(eta)) or ` !O` (lifted off with a negative pointwise gap); folded into column
+    !! groups when wider than the report (report_folding).
     subroutine write_table(u, heading, cols, tab, nondim)
         integer, intent(in) :: u
         character(len=*), intent(in) :: heading
         type(column_t), intent(in) :: cols(:)
         type(station_table_t), intent(in) :: tab
         logical, intent(in) :: nondim
-        integer :: i, c
+        integer :: i, c, n_header
         real(dp) :: extent
+        character(len=13) :: cell
+        character(len=13*size(cols) + 6), allocatable :: lines(:)
         extent = maxval(abs(tab%val(cols(1)%quantity, :)*cols(1)%scale), mask=tab%n > 0)
         write (u, '(/,a)') heading
+        n_header = merge(1, 2, nondim)
+        allocate (lines(n_header + tab%n))
+        lines = ''
         do c = 1, size(cols)
             if (.not. cols(c)%in_report) cycle
-            write (u, '(a13)', advance='no') trim(cols(c)%symbol)
+            write (cell, '(a13)') trim(cols(c)%symbol)
+            lines(1)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
+            write (cell, '(a13)') '['//trim(cols(c)%unit)//']'
+            if (.not. nondim) lines(2)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
         end do
-        write (u, '(a)') ''
-        if (.not. nondim) then
-            do c = 1, size(cols)
-                if (.not. cols(c)%in_report) cycle
-                write (u, '(a13)', advance='no') '['//trim(cols(c)%unit)//']'
-            end do
-            write (u, '(a)') ''
-        end if
         rows: do i = 1, tab%n
             do c = 1, size(cols)
                 if (.not. cols(c)%in_report) cycle
                 if (cols(c)%integer_valued) then
-                    write (u, '(a13)', advance='no') trim(state_word(nint(tab%val(Q_STATE, i))))
+                    write (cell, '(a13)') trim(state_word(nint(tab%val(Q_STATE, i))))
                 else if (c == 1) then
-                    write (u, position_format(extent, 13), advance='no') &
+                    write (cell, position_format(extent, 13)) &
                         tab%val(cols(c)%quantity, i)*cols(c)%scale
                 else
-                    write (u, '(es13.4)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
+                    write (cell, '(es13.4)') tab%val(cols(c)%quantity, i)*cols(c)%scale
                 end if
+                lines(n_header + i)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
             end do
-            if (iand(tab%flag(i), FLAG_TENSION) /= 0) write (u, '(a)', advance='no') ' !T'
-            if (iand(tab%flag(i), FLAG_OVERLAP) /= 0) write (u, '(a)', advance='no') ' !O'
-            write (u, '(a)') ''
+            if (iand(tab%flag(i), FLAG_TENSION) /= 0) lines(n_header + i) = &
+                trim(lines(n_header + i))//' !T'
+            if (iand(tab%flag(i), FLAG_OVERLAP) /= 0) lines(n_header + i) = &
+                trim(lines(n_header + i))//' !O'
         end do rows
+        lines = fold_table(lines, n_header, 13, 13, count(cols%in_report))
+        write (u, '(a)') (trim(lines(i)), i=1, size(lines))
     end subroutine write_table
 
     subroutine write_station_notes(u, m, tab)
