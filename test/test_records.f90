@@ -31,6 +31,7 @@ contains
                  new_unittest('json_deck_text', test_deck_text), &
                  new_unittest('json_deck_identity', test_deck_identity), &
                  new_unittest('json_inputs', test_inputs), &
+                 new_unittest('json_inputs_layered', test_inputs_layered), &
                  new_unittest('no_machine_path_in_outputs', test_no_machine_path), &
                  new_unittest('merge_equals_serial', test_merge_serial), &
                  new_unittest('merge_refusals', test_merge_refusals), &
@@ -298,6 +299,38 @@ contains
         call check(err, trim(words) == 'kPa kN None P1 NEWTON mm', 'units and words: '// &
                    trim(words))
     end subroutine test_inputs
+
+    !> "inputs" of a layered ground, input/strip_crust.dat: its LAYER cards (1.5 m of 40 MPa,
+    !! nu 0.3, over 6 m of 5 MPa, nu 0.4, each E constant: bottom = top) on a ROUGH base
+    !! (no base modulus: null), moduli in kPa (kN and m).
+    subroutine test_inputs_layered(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status, code, u, ios
+        real(dp) :: v(8)
+        character(len=200) :: words
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call run_deck_file('input/strip_crust.dat', dir//'/out', status, err)
+        if (allocated(err)) return
+        call check(err, status == EXIT_OK, 'strip_crust did not run')
+        if (allocated(err)) return
+        call execute_command_line('python3 -c "import json; g = json.load(open('''//dir// &
+            '/out/strip_crust.json''))[''inputs''][''ground'']; l = g[''layers'']; '// &
+            'print(*[x[k] for x in l for k in (''thickness'', ''modulus_top'', '// &
+            '''modulus_bottom'', ''poisson'')]); print(g[''kind''], g[''base''], '// &
+            'g[''base_modulus''], g[''units''][''modulus''], len(l))" > '//dir//'/g.txt', &
+            exitstat=code)
+        call check(err, code == 0, 'python could not read the ground')
+        if (allocated(err)) return
+        open (newunit=u, file=dir//'/g.txt', status='old', action='read')
+        read (u, *, iostat=ios) v
+        if (ios == 0) read (u, '(a)', iostat=ios) words
+        close (u)
+        call check(err, ios == 0, 'the ground could not be read back')
+        if (allocated(err)) return
+        call check(err, all(abs(v - [1.5_dp, 40.0e3_dp, 40.0e3_dp, 0.3_dp, 6.0_dp, 5.0e3_dp, &
+                   5.0e3_dp, 0.4_dp]) <= 1.0e-12_dp*abs(v)) .and. trim(words) == &
+                   'layered ROUGH None kPa 2', 'layers differ from the deck''s: '//trim(words))
+    end subroutine test_inputs_layered
 
     !> No output file holds a machine path: a deck given by its absolute path, with its
     !! figure, writes no byte of the working folder's canonical path (the report, CSV, JSON,

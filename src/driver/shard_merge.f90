@@ -15,8 +15,8 @@ module shard_merge
     use model, only: model_t
     use summary_table, only: entry_t, summary_entries
     use design_summary, only: summary_t
-    use case_files, only: case_result_t, render_png
-    use response_figure, only: write_response_script
+    use case_files, only: case_result_t
+    use sweep_files, only: write_response_plot
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: base_name, prepare_output_dir, remove_output
     use text_files, only: read_lines, text_lines
@@ -92,7 +92,7 @@ contains
         merged = folder//'/'//stem//'_summary.csv'
         call write_merged(merged, shards(1), rows, err)
         if (allocated(err)) return
-        call write_response(folder//'/'//stem//'_response', stem, m, results, figures, err)
+        call write_response_plot(folder, stem, m, results, figures, err)
         if (allocated(err)) call remove_output(merged)
     end subroutine merge_shards
 
@@ -471,24 +471,4 @@ contains
         end do
         call commit_file(path, u, err)
     end subroutine write_merged
-
-    !> STEM_response.gp and .png from the merged summary (no earlier one left when this
-    !! merge draws none).
-    subroutine write_response(base, stem, m, results, figures, err)
-        character(len=*), intent(in) :: base, stem
-        type(model_t), intent(in) :: m
-        type(case_result_t), intent(in) :: results(:)
-        logical, intent(in) :: figures
-        type(error_t), allocatable, intent(out) :: err
-        character(len=:), allocatable :: note
-        logical :: written
-        call write_response_script(base//'.gp', stem, m, results, written, err)
-        if (allocated(err)) return
-        if (.not. written) call remove_output(base//'.gp')
-        if (written .and. figures) then
-            call render_png(base, note)
-        else
-            call remove_output(base//'.png')
-        end if
-    end subroutine write_response
 end module shard_merge

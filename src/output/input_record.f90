@@ -16,7 +16,7 @@ module input_record
     use case_scales, only: units_t, case_units, pressure_unit
     use model, only: model_t, MODEL_BEAM, GROUND_LAYERED, GROUND_BASE_HALFSPACE, &
                      LOAD_PATCH, LOAD_MOMENT, METHOD_NEWTON, &
-                     base_name
+                     base_name, layer_profile
     implicit none
     private
 
@@ -114,37 +114,35 @@ contains
         end associate
     end subroutine write_structure
 
-    !> "ground": SOIL, or the LAYER cards and the BASE card.
+    !> "ground": SOIL, or the layers (layer_profile: in the deck's units, E at the bottom
+    !! equal to E at the top for a constant layer, layer 1 from E_f and nu_f) and the BASE.
     subroutine write_ground(u, m)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
-        character(len=:), allocatable :: modulus_unit, layer_unit, l
+        character(len=:), allocatable :: modulus_unit
+        real(dp), allocatable :: thickness(:), e_top(:), e_bottom(:), poisson(:)
+        real(dp) :: e_base
         integer :: k
-        l = trim(m%units%length)
+        modulus_unit = trim(pressure_unit(m%units%force, m%units%length))
         associate (g => m%ground)
-        modulus_unit = trim(pressure_unit(m%units%force, l))
-        layer_unit = modulus_unit
-        if (g%relative_moduli) layer_unit = 'E_f'
         write (u, '(a)') '    "ground": {"kind": '//json_string(trim(merge('layered    ', &
             'homogeneous', g%kind == GROUND_LAYERED)))//', "modulus": '//num(g%e_f)// &
             ', "poisson": '//num(g%nu_f)//','
         if (g%kind == GROUND_LAYERED) then
+            call layer_profile(g, thickness, e_top, e_bottom, poisson, e_base)
             write (u, '(a)', advance='no') '      "layers": ['
-            do k = 1, size(g%thickness)
-                write (u, '(a)', advance='no') separator(k)// &
-                    '{"thickness": '//num(g%thickness(k))//', "modulus_top": '// &
-                    num(g%e_top(k))//', "modulus_bottom": '//num(g%e_bottom(k))// &
-                    ', "poisson": '//num(g%poisson(k))//'}'
+            do k = 1, size(thickness)
+                write (u, '(a)', advance='no') separator(k)//'{"thickness": '// &
+                    num(thickness(k))//', "modulus_top": '//num(e_top(k))// &
+                    ', "modulus_bottom": '//num(e_bottom(k))//', "poisson": '// &
+                    num(poisson(k))//'}'
             end do
             write (u, '(a)') '],'
             write (u, '(a)') '      "base": '//json_string(base_name(g))//', "base_modulus": '// &
-                json_number(g%e_base, g%base == GROUND_BASE_HALFSPACE)//', "base_poisson": '// &
+                json_number(e_base, g%base == GROUND_BASE_HALFSPACE)//', "base_poisson": '// &
                 json_number(g%nu_base, g%base == GROUND_BASE_HALFSPACE)//','
-        end if
-        if (g%kind == GROUND_LAYERED) then
             write (u, '(a)') '      "units": {"modulus": '//json_string(modulus_unit)// &
-                ', "thickness": '//json_string(l)//', "layer_moduli": '// &
-                json_string(layer_unit)//'}},'
+                ', "thickness": '//json_string(trim(m%units%length))//'}},'
         else
             write (u, '(a)') '      "units": {"modulus": '//json_string(modulus_unit)//'}},'
         end if

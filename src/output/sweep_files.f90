@@ -14,7 +14,7 @@ module sweep_files
     implicit none
     private
 
-    public :: write_sweep_outputs
+    public :: write_sweep_outputs, write_response_plot
 
 contains
 
@@ -101,11 +101,11 @@ contains
     !> output/STEM_response.gp and .png (response_figure); an earlier run's are removed
     !! when this run has none (no solved case, or no figures for the PNG).
     subroutine write_response_plot(out_dir, stem, m, results, figures, err)
-        character(len=*), intent(in) :: out_dir, stem
-        type(model_t), intent(in) :: m
-        type(case_result_t), intent(in) :: results(:)
-        logical, intent(in) :: figures
-        type(error_t), allocatable, intent(out) :: err
+        character(len=*), intent(in) :: out_dir, stem   !! output folder; the deck's file stem
+        type(model_t), intent(in) :: m                  !! a case's model (title, units)
+        type(case_result_t), intent(in) :: results(:)   !! every case of the sweep
+        logical, intent(in) :: figures                  !! render the PNG
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         character(len=:), allocatable :: base, note
         logical :: written
         base = out_dir//'/'//stem//'_response'
