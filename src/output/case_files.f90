@@ -119,7 +119,8 @@ contains
         if (.not. allocated(err)) call write_summary_json(base//'.json', result%name, deck%path, &
                                                           m, EXIT_OK, '', result%entries, s, &
                                                           sol, tab, err, result%adaptation, &
-                                                          result%warnings, deck_id_of(deck), deck%lines)
+                                                          result%warnings, deck_id_of(deck), &
+                                                          deck%lines)
         ! no figure or CSV of an earlier run beside results that have none
         if (.not. allocated(err) .and. .not. figures) call remove_output(base//'.png')
         if (.not. allocated(err) .and. m%nondim) call remove_output(base//'.csv')

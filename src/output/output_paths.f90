@@ -133,7 +133,8 @@ contains
     !! (n cases; n = 0 for a deck with input errors, which writes nothing): the files of a
     !! case STEM.* or STEM_NNN.* (NNN: 3 to 9 digits, not all zero) whose JSON summary records
     !! this deck's identity (`"deck_identity"`, deck_identity: nothing another deck wrote is
-    !! touched, whatever folder it was run from), and a sweep's STEM_summary*.csv and STEM_sweep.* when
+    !! touched, whatever folder it was run from), and a sweep's STEM_summary*.csv and
+    !! STEM_sweep.* when
     !! such a case of a sweep was removed and this run is no sweep. Only files that look like
     !! fricon's outputs are deleted (remove_output): never a deck. The cases are found in one
     !! listing of the folder (its STEM_*.json), so the cost does not grow with what else the
