@@ -9,6 +9,7 @@ program fricon
     use start_up, only: start_program
     use command_line, only: command_t, read_command_line, usage_lines, version
     use deck_runs, only: run_decks
+    use shard_merge, only: run_merge
     use output_paths, only: stderr_is_terminal
     use temporary_cleanup, only: install_cleanup
     implicit none
@@ -41,6 +42,10 @@ program fricon
     end if
     cmd%options%progress = cmd%progress_forced .or. (.not. cmd%quiet .and. stderr_is_terminal())
     call start_program()
+    if (cmd%merge) then
+        call run_merge(cmd%decks, trim(cmd%out_dir), cmd%options%figures, cmd%quiet, status)
+        call finish(status)
+    end if
     call run_decks(cmd%decks, trim(cmd%out_dir), cmd%options, status)
     call finish(status)
 

@@ -6,6 +6,7 @@
 # program, version and run time and the header) and writes output/STEM_summary.csv: the
 # first shard's two lines once, then the rows in case order (case names are
 # zero-padded, so their text order is their number order). Refuses a missing shard.
+# `fricon --merge SHARD...` does the same with more checks and draws the response figure.
 set -euo pipefail
 base=${1:?usage: merge_shards.sh OUTPUT/STEM}
 shopt -s nullglob

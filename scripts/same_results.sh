@@ -30,7 +30,7 @@
 # measured times, `fricon: 3 of 6 done (NAME), 0.4 s elapsed, about 0.8 s left`; their
 # "N s elapsed" and "about N s left" become "T s elapsed" and "about T s left". Found by
 # running every deck twice with the same build and diffing (the outputs' run time is fixed by
-# SOURCE_DATE_EPOCH, exported below; the absolute paths they hold, deck_file in the JSON and the output folder
+# SOURCE_DATE_EPOCH, exported below; the deck identity in the JSON and the output folder
 # on standard output, are the same in both runs by construction). The size announcement of a
 # large case ("about 12.0 s and 0.3 GB (rough estimates)") is a formula of the case's size,
 # not a measurement: it is compared.

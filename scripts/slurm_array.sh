@@ -2,9 +2,9 @@
 # README's Slurm job-array example run on a real single-node Slurm: starts munge (if it is not
 # running), slurmctld and slurmd on this machine with a throw-away configuration, submits the
 # sweep DECK as a job array of TASKS shards (fricon --shard I/TASKS in each task), waits,
-# merges the shards (scripts/merge_shards.sh), checks that every file is byte-identical to a
-# serial run of the same deck (the sweep overlay aside: shards draw none), draws the response
-# figure from the merged summary, and stops the daemons it started. Debian: run as root after
+# merges the shards (fricon --merge: the summary and the response figure), checks that every
+# file is byte-identical to a serial run of the same deck (the sweep overlay aside: shards
+# draw none), and stops the daemons it started. Debian: run as root after
 # `apt-get install slurm-wlm munge` (slurmctld, slurmd, the client commands and munged):
 #
 #   bash scripts/slurm_array.sh [DECK [TASKS]]      (default input/sweep.dat, 3 tasks)
@@ -123,7 +123,7 @@ EOF
 start=$(date +%s.%N)
 sbatch --wait --parsable "$work/job.sh" >"$work/job_id"
 end=$(date +%s.%N)
-bash scripts/merge_shards.sh "$work/results/$stem" >/dev/null
+"$bin" --quiet --merge "$work/results/${stem}"_summary.shard-*-of-"$tasks".csv
 "$bin" --quiet -o "$work/serial" "$deck" >/dev/null
 
 # --- every file of the serial run, byte for byte (shards draw no sweep overlay) -----------
@@ -135,42 +135,10 @@ for f in "$work/serial"/*; do
     compared=$((compared + 1))
 done
 
-# --- the response figure: key results of the merged summary, case by case ----------------
+# --- the merged summary and the response figure fricon --merge drew from it -----------------
 out=output/slurm
 mkdir -p "$out"
-cp "$work/results/${stem}_summary.csv" "$out/"
-# columns by their key (a header may carry a unit: 'settlement_max [mm]', the panel's title);
-# the swept values (after 'case i of n: ') label the cases
-keys='settlement_max differential_settlement pressure_max contact_extent_t'
-awk -F, -v keys="$keys" '
-    /^#/ { next }
-    !header { header = 1; n = split(keys, k, " ")
-              for (i = 1; i <= NF; i++) { split($i, w, " "); c[w[1]] = i; h[w[1]] = $i }
-              for (j = 1; j <= n; j++) print h[k[j]] >"/dev/stderr"
-              next }
-    { label = $2; gsub(/"/, "", label); sub(/^case [0-9]+ of [0-9]+: /, "", label)
-      printf "%d", ++row
-      for (j = 1; j <= n; j++) printf " %s", $c[k[j]]
-      printf " \"%s\"\n", label }' \
-    "$out/${stem}_summary.csv" >"$work/response.dat" 2>"$work/titles"
-mapfile -t titles <"$work/titles"
-gnuplot <<GP
-set terminal pngcairo size 1400,950 font 'Sans,11' noenhanced
-set output '$out/${stem}_response.png'
-set multiplot layout 2,2 title 'fricon: $(basename "$deck") on a single-node Slurm, $tasks array tasks merged (scripts/slurm_array.sh)' font 'Sans,13'
-set grid
-set key off
-set xtics rotate by 30 right font 'Sans,9'
-set offsets 0.3, 0.3, 0, 0
-set lmargin 14
-set bmargin 7
-array names[4] = ['${titles[0]}', '${titles[1]}', '${titles[2]}', '${titles[3]}']
-do for [k = 1:4] {
-    set title names[k]
-    plot '$work/response.dat' u 1:(column(k + 1)):xtic(6) w lp pt 7 ps 1.2 lw 2 lc rgb '#9400d3'
-}
-unset multiplot
-GP
+cp "$work/results/${stem}_summary.csv" "$work/results/${stem}_response.png" "$out/"
 {
     echo "# The Slurm job array on a real single-node Slurm"
     echo
@@ -181,7 +149,7 @@ GP
     echo "(its cases with their figures); the tasks ran from the first start to the last end in"
     echo "$(cat "$work"/task_*.start "$work"/task_*.end | sort -n | awk 'NR == 1 { a = $1 } { b = $1 } END { printf "%.2f", b - a }') s;"
     echo "\`sbatch --wait\` returned $(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }') s after submission (it polls the job's state)."
-    echo "Merged by scripts/merge_shards.sh; $compared files compared with a serial run of the deck:"
+    echo "Merged by \`fricon --merge\` (summary and response figure); $compared files compared with a serial run of the deck:"
     echo "all byte-identical (the serial run's overlay ${stem}_sweep.* aside: shards draw none)."
     echo
     echo "Files: [${stem}_summary.csv](${stem}_summary.csv) (merged), [${stem}_response.png](${stem}_response.png)."

@@ -27,6 +27,8 @@ program tester
     use test_layered_program, only: collect_layered_program
     use test_unit_checks, only: collect_unit_checks
     use test_load_combinations, only: collect_load_combinations
+    use test_design_checks, only: collect_design_checks
+    use test_records, only: collect_records
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -35,7 +37,7 @@ program tester
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
         'simplifications adaptive nested_spaces architecture layered_ground layered_program '// &
-        'foundation_springs unit_checks load_combinations '
+        'foundation_springs unit_checks design_checks records load_combinations '
 
     want_suite = ''
     want_test = ''
@@ -142,6 +144,14 @@ program tester
     if (wanted('load_combinations')) then
         call collect_load_combinations(tests)
         call run_suite('load_combinations', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('design_checks')) then
+        call collect_design_checks(tests)
+        call run_suite('design_checks', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('records')) then
+        call collect_records(tests)
+        call run_suite('records', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)

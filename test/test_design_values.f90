@@ -748,9 +748,10 @@ contains
         type(entry_t), allocatable :: e(:)
         real(dp) :: w0(3)
         integer :: k, i
-        character(len=24), parameter :: point_keys(7) = [character(len=24) :: &
+        character(len=24), parameter :: point_keys(8) = [character(len=24) :: &
             'settlement_max', 'differential_settlement', 'moment_sagging', &
-            'hoop_moment_sagging', 'shear_force_max', 'pressure_max', 'angular_distortion']
+            'hoop_moment_sagging', 'shear_force_max', 'pressure_max', 'angular_distortion', &
+            'slope_relative_max']
         do k = 1, 3
             call solve_deck('input/plate_nondim.dat', 10*2**k, c, err)
             if (allocated(err)) return

@@ -58,10 +58,10 @@ contains
     end function beam_head
 
     !> Three load cases (G with self-weight, Q, W: a horizontal force and a moment) and four
-    !! combinations, ULS2 on two cards.
+    !! combinations, ULS2 on two cards; a bearing check (allowable 400 kPa).
     pure function combination_deck() result(lines)
         character(len=w), allocatable :: lines(:)
-        lines = [character(len=w) :: beam_head(), &
+        lines = [character(len=w) :: beam_head(), card('CHECK', 'BEARING', '400.0'), &
                  card('LOADCASE', 'G', '25.0'), &
                  card('LOAD', 'PATCH', '1000.0', '', '-3.7', '-3.3'), &
                  card('LOAD', 'PATCH', '1000.0', '', '3.3', '3.7'), &
@@ -173,6 +173,13 @@ contains
                                     names, err)
             if (allocated(err)) return
         end do
+        ! the design checks join the envelope: the bearing check's utilisation is the mean
+        ! pressure V/(b l) (the base in full contact) over 400 kPa, V by statics: SLS 2000 +
+        ! 240 + 400 = 2640 kN, ULS1 1.35 x 2240 + 1.5 x 400 = 3624, ULS2 3024 + 1.05 x 400 =
+        ! 3444, FAV 2240 (W's vertical force is 0)
+        call check_envelope_row(out_dir//'/combos_envelope.csv', 'bearing_mean_utilisation', &
+                                [2640.0_dp, 3624.0_dp, 3444.0_dp, 2240.0_dp]/(1.2_dp*10.0_dp* &
+                                400.0_dp), names, err)
     end subroutine test_envelope
 
     !> Hand deck k solved alone: the values of keys.

@@ -41,7 +41,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 102
+    integer, parameter :: n_decks = 110
 
 contains
 
@@ -64,6 +64,7 @@ contains
                  new_unittest('load_combinations', test_combinations), &
                  new_unittest('sweeps', test_sweeps), &
                  new_unittest('layered_ground', test_ground), &
+                 new_unittest('check_cards', test_check_cards), &
                  new_unittest('lone_cr_in_card', test_lone_cr), &
                  new_unittest('too_many_lines', test_too_many_lines), &
                  new_unittest('directory', test_directory), &
@@ -357,6 +358,30 @@ contains
         ! line 13 SWEEP E_BASE over a ROUGH base: the name
         call add('ground', 'sweep_e_base_rigid.dat', ':13:11-20:', &
                  'SWEEP E_BASE needs BASE HALFSPACE')
+        ! --- CHECK cards (line 12, after MESH on line 11; NONDIM: line 9, after MESH on 8)
+        ! f1 (columns 11-20) 'BEARINGS'
+        call add('checks', 'check_unknown_kind.dat', ':12:11-20:', "CHECK kind must be "// &
+                 "BEARING, SETTLE, DIFFSETTLE, ROTATION, TILT, SLIDING or CONTACT, got 'BEARINGS'")
+        ! f2 (columns 21-30) blank: the limit is required
+        call add('checks', 'check_limit_missing.dat', ':12:21-30:', 'CHECK SETTLE w_max '// &
+                 '(largest settlement allowed) is required but the field is blank')
+        ! f3 (columns 31-40) '-10.0', the edge limit of BEARING
+        call add('checks', 'check_limit_negative.dat', ':12:31-40:', 'CHECK BEARING q_edge '// &
+                 '(allowable pressure at d from an edge) must be > 0, got -10.0')
+        ! f2 (columns 21-30) '0.0'
+        call add('checks', 'check_limit_zero.dat', ':12:21-30:', 'CHECK SLIDING FS_min '// &
+                 '(smallest factor of safety against sliding, f V / H) must be > 0, got 0.0')
+        ! f2 (columns 21-30) '1.5': a contact ratio is at most 1
+        call add('checks', 'check_contact_above_one.dat', ':12:21-30:', 'CHECK CONTACT '// &
+                 'ratio (smallest contact area / base area) must be in (0, 1], got 1.5')
+        ! line 13, the second CHECK SETTLE: its kind (f1, columns 11-20)
+        call add('checks', 'check_duplicate.dat', ':13:11-20:', 'duplicate CHECK SETTLE '// &
+                 '(first given at line 12): one CHECK card per kind')
+        ! f3 (columns 31-40) '2.0E-3': TILT has one limit
+        call add('checks', 'check_extra_field.dat', ':12:31-40:', "CHECK TILT has 2 "// &
+                 "field(s); columns 31-40 must be blank, found '2.0E-3'")
+        ! NONDIM deck, line 9 CHECK: the card name (columns 1-10)
+        call add('checks', 'check_nondim.dat', ':9:1-10:', 'CHECK needs a physical deck')
         ! --- known reader bug (reported, not fixed here): gfortran ends a record at a lone CR,
         ! so the reader splits line 9 'FRICTION  0.5<CR>      1.0E-6' into two lines and
         ! numbers every later line one too high. README: CR LF line ends are accepted, other
@@ -526,6 +551,11 @@ contains
         type(error_t), allocatable, intent(out) :: err
         call check_group('adapt', err)
     end subroutine test_adapt
+
+    subroutine test_check_cards(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check_group('checks', err)
+    end subroutine test_check_cards
 
     ! The three base decks the malformed files are made from (each file = one comment card,
     ! the ruler, and one of these with one fault put in).

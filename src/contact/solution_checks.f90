@@ -12,7 +12,7 @@ module solution_checks
     implicit none
     private
 
-    public :: check_load_admissible, final_checks
+    public :: check_load_admissible, final_checks, applied_moment
 
     !> What require_checks accepts: equilibrium (4.2a residual, reactions) to this fraction of
     !! the load, the interface law to this fraction of max |r| (reports print 6 digits).
@@ -57,7 +57,7 @@ contains
     !! (w = x, psi = 1): sum F_z x + M + h F_x (horizontal loads act on the top face and their
     !! reaction on the bottom face).
     pure real(dp) function applied_moment(m)
-        type(model_t), intent(in) :: m
+        type(model_t), intent(in) :: m   !! the model (its loads and thickness)
         integer :: i
         applied_moment = 0.0_dp
         do i = 1, size(m%loads)

@@ -21,6 +21,7 @@
 !!     ADAPT     1.0E-3    400
 !!     SOLVER    1.0E-8    1.0E-10   100       100       1.0E-9              NEWTON
 !!     OUTPUT
+!!     CHECK     BEARING   150.0
 !!     SWEEP     F         0.3       0.5       0.7
 !!     END
 !!
@@ -53,6 +54,7 @@ module deck_reader
                                  combination_text
     use deck_combinations, only: combination_cards_t, read_loadcase_card, read_combine_card, &
                                  note_load_card, accept_load_card, finish_load_set
+    use check_cards, only: read_check_card
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
                            FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
                            RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_OPEN_UNIT, RULE_COUNT, &
@@ -88,16 +90,16 @@ module deck_reader
     integer, parameter :: C_TITLE = 1, C_MODEL = 2, C_UNITS = 3, C_GEOMETRY = 4, &
                           C_STRUCTURE = 5, C_SOIL = 6, C_NONDIM = 7, C_FRICTION = 8, &
                           C_LOAD = 9, C_MESH = 10, C_SOLVER = 11, C_OUTPUT = 12, C_SWEEP = 13, &
-                          C_END = 14, C_ADAPT = 15, C_LAYER = 16, C_BASE = 17, &
-                          C_LOADCASE = 18, C_COMBINE = 19
-    integer, parameter :: n_cards = 19
+                          C_END = 14, C_ADAPT = 15, C_LAYER = 16, C_BASE = 17, C_CHECK = 18, &
+                          C_LOADCASE = 19, C_COMBINE = 20
+    integer, parameter :: n_cards = 20
     character(len=9), parameter :: card_names(n_cards) = [character(len=9) :: 'TITLE', &
         'MODEL', 'UNITS', 'GEOMETRY', 'STRUCTURE', 'SOIL', 'NONDIM', 'FRICTION', 'LOAD', &
-        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT', 'LAYER', 'BASE', 'LOADCASE', &
-        'COMBINE']
+        'MESH', 'SOLVER', 'OUTPUT', 'SWEEP', 'END', 'ADAPT', 'LAYER', 'BASE', 'CHECK', &
+        'LOADCASE', 'COMBINE']
     character(len=*), parameter :: card_list = 'TITLE, MODEL, UNITS, GEOMETRY, STRUCTURE, '// &
         'SOIL, LAYER, BASE, NONDIM, FRICTION, LOADCASE, LOAD, COMBINE, MESH, ADAPT, SOLVER, '// &
-        'OUTPUT, SWEEP or END'
+        'OUTPUT, CHECK, SWEEP or END'
 
     ! Sweepable parameters: name, range rule, deck kind (0 any, 1 NONDIM, 2 physical), model
     ! (0 any, MODEL_BEAM, MODEL_PLATE).
@@ -618,11 +620,12 @@ contains
                 field_hint, echo_text(card))
             if (st%unreadable_line(id) == 0) st%unreadable_line(id) = i
         else if (st%first_line(id) > 0 .and. id /= C_LOAD .and. id /= C_SWEEP .and. &
-                 id /= C_LAYER .and. id /= C_LOADCASE .and. id /= C_COMBINE) then
+                 id /= C_LAYER .and. id /= C_CHECK .and. id /= C_LOADCASE .and. &
+                 id /= C_COMBINE) then
             call add_diagnostic(st%diag, i, 1, len_trim(name), 'duplicate '// &
                 trim(card_names(id))//' card (first given at line '// &
-                int_text(st%first_line(id))//'); only LOADCASE, LOAD, COMBINE, SWEEP and '// &
-                'LAYER may repeat', &
+                int_text(st%first_line(id))//'); only LOADCASE, LOAD, COMBINE, SWEEP, LAYER '// &
+                'and CHECK may repeat', &
                 echo_text(card))
         else
             call append_card(st, card_t(id=id, line=i, text=card))
@@ -818,6 +821,9 @@ contains
                 call read_combine_card(st%combos, st%cards(k)%line, st%cards(k)%text, &
                                        st%cards(max(k - 1, 1))%id == C_COMBINE .and. k > 1, &
                                        st%diag)
+            case (C_CHECK)
+                call read_check_card(st%cards(k)%text, st%cards(k)%line, st%m%nondim, &
+                                     st%m%limits, st%diag)
             case (C_END)
                 call check_unused(st, st%cards(k), 0)
             end select

@@ -20,6 +20,7 @@ module plausibility
     use model, only: model_t, MODEL_BEAM, total_vertical_load, base_area, layer_count, &
                      GROUND_BASE_HALFSPACE
     use physical_units, only: force_in_newtons, length_in_metres
+    use limit_warnings, only: check_limit_warnings
     implicit none
     private
 
@@ -60,6 +61,7 @@ contains
             w = [character(len=warning_length) :: w, text]
         end if
         if (m%nondim .or. m%ground%e_f <= 0.0_dp) return
+        w = [character(len=warning_length) :: w, check_limit_warnings(m, warning_length)]
         ratio = m%structure%e/m%ground%e_f
         if (ratio < modulus_ratio_range(1) .or. ratio > modulus_ratio_range(2)) then
             write (text, '(a,es9.2,a)') 'E/E_f = ', ratio, ' (STRUCTURE E over SOIL E_f) is '// &

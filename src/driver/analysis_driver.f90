@@ -9,6 +9,7 @@ module analysis_driver
     use plausibility, only: warning_length, input_warnings
     use solved_case, only: case_t
     use case_quality, only: solve_to_quality
+    use design_checks, only: evaluate_design_checks
     use case_files, only: case_result_t, write_case_files
     use figure_renderer, only: renderer_t, stop_renderer
     use sweep_files, only: write_sweep_outputs
@@ -264,6 +265,7 @@ contains
         else
             result%entries = c%entries
             result%values = design_values(c)
+            result%checks = evaluate_design_checks(c%model, c%summary)
             result%mean_pressure = c%summary%mean_pressure
         end if
         call write_case_files(deck, c, out_dir//'/'//name, figures, result, renderer)

@@ -6,7 +6,7 @@ module combination_runs
     use deck_reader, only: deck_t
     use case_files, only: case_result_t
     use envelope_file, only: write_envelope_files, remove_envelope_files
-    use output_paths, only: canonical_path
+    use output_paths, only: canonical_path, deck_identity
     use deck_fields, only: int_text
     implicit none
     private
@@ -27,14 +27,14 @@ contains
         integer, intent(in) :: log_unit, err_unit       !! console: outcome; errors
         integer, intent(inout) :: status                !! the run's worst exit status
         type(error_t), allocatable :: err
-        character(len=:), allocatable :: deck_file
+        character(len=:), allocatable :: deck_id
         if (shard_count > 1) then
             call remove_envelope_files(out_dir, deck%stem)
             return
         end if
-        deck_file = ''
-        if (deck%from_file) deck_file = canonical_path(deck%path)
-        call write_envelope_files(out_dir, deck%stem, deck%base%title, deck%path, deck_file, &
+        deck_id = ''
+        if (deck%from_file) deck_id = deck_identity(canonical_path(deck%path))
+        call write_envelope_files(out_dir, deck%stem, deck%base%title, deck%path, deck_id, &
                                   results, err)
         if (allocated(err)) then
             if (all(results%status == EXIT_OK)) then

@@ -19,6 +19,8 @@ module command_line
         logical :: progress_forced = .false.          !! --progress: progress even if piped
         logical :: help = .false.                     !! -h: print usage_lines and stop
         logical :: show_version = .false.             !! -V: print the version and stop
+        logical :: merge = .false.                    !! --merge: the arguments are shard
+                                                      !! summaries to merge, not decks
     end type command_t
 
     public :: read_command_line, usage_lines
@@ -59,6 +61,8 @@ contains
                 cmd%options%estimates = .false.
             case ('--full-model')
                 cmd%options%full_model = .true.
+            case ('--merge')
+                cmd%merge = .true.
             case ('-q', '--quiet')
                 cmd%quiet = .true.
             case ('--progress')
@@ -142,6 +146,7 @@ contains
         character(len=120), allocatable :: lines(:)
         lines = [character(len=120) :: &
             'usage: fricon [options] [DECK...]', &
+            '       fricon --merge [-o DIR] [--no-figures] SHARD...', &
             '', &
             'Solves each card-image DECK: a beam or circular raft on an elastic half-space with', &
             'lift-off and friction. Without a DECK, solves the built-in default raft '// &
@@ -158,7 +163,10 @@ contains
             '                    decoupled in the factorisation): the full model', &
             '  -j, --jobs N      solve N cases of a sweep at once (default: all cores)', &
             '      --shard I/N   solve cases I, I+N, I+2N, ... of each sweep only (a job array:', &
-            '                    scripts/merge_shards.sh joins the shard summaries)', &
+            '                    fricon --merge joins the shard summaries)', &
+            '      --merge SHARD...  join the shard summaries STEM_summary.shard-I-of-N.csv of', &
+            '                    a sweep into STEM_summary.csv and its response figure (in -o DIR', &
+            '                    or the first shard''s folder); every shard, no case twice', &
             '  -q, --quiet       no progress on standard error', &
             '      --progress    progress even when standard error is not a terminal', &
             '  -h, --help        this text', &

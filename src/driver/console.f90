@@ -6,6 +6,7 @@ module console
     use errors, only: EXIT_OK
     use summary_table, only: entry_t, entry_index
     use case_files, only: case_result_t
+    use check_report, only: checks_line
     implicit none
     private
 
@@ -26,6 +27,9 @@ contains
         if (r%status == EXIT_OK) then
             write (log_unit, '(a)') who//': solved  '//console_summary(r%entries)// &
                 '  -> '//out_dir//'/'//r%name//'.txt'
+            if (allocated(r%checks)) then
+                if (size(r%checks) > 0) write (log_unit, '(a)') who//': '//checks_line(r%checks)
+            end if
         else
             write (err_unit, '(a)') 'ERROR: '//who//' ('//deck_path//'): '//r%message
         end if

@@ -18,6 +18,7 @@ module model
                              total_vertical_load, has_concentrated_load, load_positions
     use mesh_request, only: mesh_request_t, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     use solver_controls, only: solver_controls_t, METHOD_NEWTON, METHOD_TWOLOOP
+    use design_limits, only: design_limits_t
     implicit none
     private
 
@@ -32,6 +33,7 @@ module model
     public :: has_concentrated_load, load_positions
     public :: mesh_request_t, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     public :: solver_controls_t, METHOD_NEWTON, METHOD_TWOLOOP
+    public :: design_limits_t
 
     !> The deck's unit words (UNITS card): labels of the deck's units, which fricon never
     !! converts, and the display units of settlements and pressures (physical_units).
@@ -68,6 +70,7 @@ module model
         type(mesh_request_t) :: mesh
         type(solver_controls_t) :: solver
         type(output_options_t) :: output
+        type(design_limits_t) :: limits        !! the CHECK cards (design_limits)
     end type model_t
 
     public :: complete_model, friction_compliance, relative_stiffness

@@ -7,11 +7,12 @@ module case_files
     use solved_case, only: case_t
     use summary_table, only: entry_t
     use design_envelope, only: design_value_t
+    use design_checks, only: design_check_t
     use adaptive_solve, only: adaptation_t
     use plausibility, only: warning_length
     use report_writer, only: write_data_file, write_physical_csv, write_summary_json, &
                              write_plot_script, write_report
-    use output_paths, only: remove_output, canonical_path
+    use output_paths, only: remove_output, canonical_path, deck_identity
     use spring_file, only: has_springs, write_springs_csv
     use temporary_cleanup, only: register_temporary, release_temporary
     use file_system, only: move_file, delete_file
@@ -33,6 +34,7 @@ module case_files
         integer :: elements = 0                    !! N_e of the mesh solved (refined, adapted)
         type(entry_t), allocatable :: entries(:)   !! key results (summary_table); solved only
         type(design_value_t), allocatable :: values(:)  !! design values (design_envelope)
+        type(design_check_t), allocatable :: checks(:)  !! the CHECK cards' design checks
         type(adaptation_t) :: adaptation           !! what ADAPT did (adapted false without it)
         character(len=warning_length), allocatable :: warnings(:)  !! plausibility (deck, result)
     end type case_result_t
@@ -93,7 +95,7 @@ contains
                           report_notes(result%warnings, ''), err_report, result%adaptation)
         if (.not. allocated(err_report)) call write_summary_json(base//'.json', result%name, &
             deck%path, m, result%status, result%message, result%entries, s, sol, tab, &
-            err_report, result%adaptation, result%warnings, deck_file_of(deck))
+            err_report, result%adaptation, result%warnings, deck_id_of(deck), deck%lines)
         if (allocated(err_report)) then
             ! the failure's own report cannot be written: that is what the user must hear
             call remove_case_files(base)
@@ -121,7 +123,8 @@ contains
         if (.not. allocated(err)) call write_summary_json(base//'.json', result%name, deck%path, &
                                                           m, EXIT_OK, '', result%entries, s, &
                                                           sol, tab, err, result%adaptation, &
-                                                          result%warnings, deck_file_of(deck))
+                                                          result%warnings, deck_id_of(deck), &
+                                                          deck%lines)
         ! no figure or CSV of an earlier run beside results that have none
         if (.not. allocated(err) .and. .not. figures) call remove_output(base//'.png')
         if (.not. allocated(err) .and. m%nondim) call remove_output(base//'.csv')
@@ -183,14 +186,14 @@ contains
         call remove_files(base, ext)
     end subroutine remove_stale
 
-    !> The deck's canonical path for the JSON summaries ('' for the built-in default, which is
-    !! no file: outputs of a deck that happens to lie at input/default.dat are not its own).
-    function deck_file_of(deck) result(path)
+    !> The deck's identity for the JSON summaries ('' for the built-in default, which is no
+    !! file: outputs of a deck that happens to lie at input/default.dat are not its own).
+    function deck_id_of(deck) result(identity)
         type(deck_t), intent(in) :: deck
-        character(len=:), allocatable :: path
-        path = ''
-        if (deck%from_file) path = canonical_path(deck%path)
-    end function deck_file_of
+        character(len=:), allocatable :: identity
+        identity = ''
+        if (deck%from_file) identity = deck_identity(canonical_path(deck%path))
+    end function deck_id_of
 
     !> Every file of a case (a write that failed leaves none of the others).
     subroutine remove_case_files(base)

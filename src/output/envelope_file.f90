@@ -9,7 +9,7 @@ module envelope_file
     use case_files, only: case_result_t
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: remove_output
-    use report_writer, only: json_string, json_number
+    use json_text, only: json_string, json_number
     use run_identity, only: program_name, program_version, run_time, run_stamp
     use deck_fields, only: int_text
     implicit none
@@ -24,11 +24,11 @@ contains
     !> STEM_envelope.txt, .json and .csv of the run's cases (results, in case order; their
     !! names STEM_TAG, the governing case named by TAG). No file when a case failed (err
     !! says which) or when a file cannot be written.
-    subroutine write_envelope_files(out_dir, stem, title, deck_path, deck_file, results, err)
+    subroutine write_envelope_files(out_dir, stem, title, deck_path, deck_id, results, err)
         character(len=*), intent(in) :: out_dir, stem     !! output folder; the deck's stem
         character(len=*), intent(in) :: title             !! the deck's TITLE
         character(len=*), intent(in) :: deck_path         !! the deck as given
-        character(len=*), intent(in) :: deck_file         !! its canonical path ('' if none)
+        character(len=*), intent(in) :: deck_id           !! its identity ('' if no file)
         type(case_result_t), intent(in) :: results(:)     !! every case of the run
         type(error_t), allocatable, intent(out) :: err    !! a case failed, or a write
         type(envelope_t) :: env
@@ -42,7 +42,7 @@ contains
         tags = case_tags(stem, results)
         call write_envelope_csv(base//'.csv', env, tags, err)
         if (.not. allocated(err)) call write_envelope_json(base//'.json', stem, deck_path, &
-                                                           deck_file, title, results, env, &
+                                                           deck_id, title, results, env, &
                                                            tags, err)
         if (.not. allocated(err)) call write_envelope_report(base//'.txt', deck_path, title, &
                                                              results, env, tags, err)
@@ -170,9 +170,9 @@ contains
     end function governing
 
     !> STEM_envelope.json (doc/OUTPUT.md).
-    subroutine write_envelope_json(path, stem, deck_path, deck_file, title, results, env, &
+    subroutine write_envelope_json(path, stem, deck_path, deck_id, title, results, env, &
                                    tags, err)
-        character(len=*), intent(in) :: path, stem, deck_path, deck_file, title
+        character(len=*), intent(in) :: path, stem, deck_path, deck_id, title
         type(case_result_t), intent(in) :: results(:)
         type(envelope_t), intent(in) :: env
         character(len=*), intent(in) :: tags(:)
@@ -187,7 +187,7 @@ contains
         write (u, '(a)') '  "envelope_of": '//json_string(stem)//','
         write (u, '(a)') '  "deck": '//json_string(deck_path)//','
         ! (how a later run of the deck knows this file for its own: output_paths)
-        write (u, '(a)') '  "deck_file": '//json_string(deck_file)//','
+        write (u, '(a)') '  "deck_identity": '//json_string(deck_id)//','
         write (u, '(a)') '  "title": '//json_string(trim(title))//','
         write (u, '(a)') '  "cases": ['
         do k = 1, size(results)

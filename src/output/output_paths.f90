@@ -7,6 +7,7 @@ module output_paths
     use errors, only: error_t, new_error, EXIT_INPUT
     use deck_fields, only: int_text
     use file_system, only: make_folder, folder_entries
+    use sha256, only: sha256_hex
     implicit none
     private
 
@@ -36,7 +37,7 @@ module output_paths
     public :: prepare_output_dir, check_deck_not_overwritten, stderr_is_terminal
     public :: case_name, case_number, writes_file, output_files, base_name, check_decks_apart
     public :: remove_stale_outputs, remove_output, canonical_path, looks_like_output
-    public :: remove_shard_summaries, remove_sweep_outputs
+    public :: remove_shard_summaries, remove_sweep_outputs, deck_identity
 
 contains
 
@@ -151,11 +152,13 @@ contains
     !> Remove what an earlier run of the same deck left in dir that this run does not write
     !! (n cases; n = 0 for a deck with input errors, which writes nothing): the files of a
     !! case STEM.* or STEM_NNN.* (NNN: 3 to 9 digits, not all zero) whose JSON summary records
-    !! this deck's canonical path (`"deck_file"`: nothing another deck wrote is touched,
-    !! whatever folder it was run from), and a sweep's STEM_summary*.csv and STEM_sweep.* when
+    !! this deck's identity (`"deck_identity"`, deck_identity: nothing another deck wrote is
+    !! touched, whatever folder it was run from), and a sweep's STEM_summary*.csv and
+    !! STEM_sweep.* when
     !! such a case of a sweep was removed and this run is no sweep. So are the files of any
     !! other STEM_NAME.json recording this deck that this run does not write (a load
-    !! combination's, STEM_envelope.*: tags are this run's load combinations, writes_file). Only files that look like
+    !! combination's, STEM_envelope.*: tags are this run's load combinations, writes_file).
+    !! Only files that look like
     !! fricon's outputs are deleted (remove_output): never a deck. The cases are found in one
     !! listing of the folder (its STEM_*.json), so the cost does not grow with what else the
     !! folder holds.
@@ -305,8 +308,9 @@ contains
         if (ends_with) ends_with = text(len(text) - len(tail) + 1:) == tail
     end function ends_with
 
-    !> Whether the JSON summary at path was written for the deck: its "deck_file" holds the
-    !! deck's canonical path deck_real (JSON escapes of quotes and backslashes undone).
+    !> Whether the JSON summary at path was written for the deck of canonical path deck_real:
+    !! its "deck_identity" is deck_identity(deck_real), or (a summary of fricon 0.2.0 and
+    !! earlier) its "deck_file" is deck_real (JSON escapes of quotes and backslashes undone).
     logical function names_deck(path, deck_real)
         character(len=*), intent(in) :: path, deck_real
         character(len=8192) :: line
@@ -322,6 +326,11 @@ contains
         do
             read (u, '(a)', iostat=ios) line
             if (ios /= 0) exit
+            k = index(line, '"deck_identity": "')
+            if (k > 0) then
+                names_deck = line(k + 18:) == deck_identity(deck_real)//'",'
+                exit
+            end if
             k = index(line, '"deck_file": "')
             if (k == 0) cycle
             given = line(k + 14:)
@@ -331,6 +340,16 @@ contains
         end do
         close (u)
     end function names_deck
+
+    !> What a JSON summary records of the deck it was written for: 'sha256:' and the SHA-256
+    !! of the deck's canonical path (no machine path in the outputs, yet two decks of one
+    !! name in two folders are told apart); '' for no deck file.
+    pure function deck_identity(deck_real) result(identity)
+        character(len=*), intent(in) :: deck_real   !! the deck's canonical path, or ''
+        character(len=:), allocatable :: identity
+        identity = ''
+        if (len(deck_real) > 0) identity = 'sha256:'//sha256_hex(deck_real)
+    end function deck_identity
 
     !> A JSON string's text with \" and \\ (the escapes a path can need) undone.
     pure function json_unescaped(text) result(plain)
@@ -537,7 +556,7 @@ contains
     end function base_name
 
     !> The canonical absolute path of an existing file or folder; '' if it cannot be resolved
-    !! (what a JSON summary records as "deck_file").
+    !! (a JSON summary records its hash: deck_identity).
     function canonical_path(path) result(resolved)
         character(len=*), intent(in) :: path   !! a path
         character(len=:), allocatable :: resolved

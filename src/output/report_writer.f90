@@ -4,7 +4,8 @@ module report_writer
     use kinds, only: dp, pi
     use errors, only: error_t
     use atomic_files, only: open_temporary, commit_file
-    use output_paths, only: canonical_path
+    use output_paths, only: canonical_path, deck_identity, base_name
+    use input_record, only: write_input_record
     use model, only: load_t, model_t, MODEL_BEAM, LOAD_POINT, FIELD_U, FIELD_SZ, &
         flexural_rigidity, &
                      relative_stiffness, soil_shear_modulus, friction_compliance, &
@@ -30,6 +31,10 @@ module report_writer
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
                            ground_json, write_ground_figure_settings, gp_number
     use run_identity, only: program_name, program_version, run_time, run_stamp
+    use json_text, only: json_string, json_number
+    use design_checks, only: evaluate_design_checks
+    use check_report, only: write_check_table, write_check_json
+    use report_folding, only: fold_table, fold_report_lines
     implicit none
     private
 
@@ -134,7 +139,7 @@ contains
     !> output/CASE.json: status, units, the key results (summary_table), contact intervals
     !! and the checks. A failed case gets its status and message, and no results.
     subroutine write_summary_json(path, name, deck_path, m, status, message, e, s, sol, tab, err, &
-                                  adaptation, warnings, deck_file)
+                                  adaptation, warnings, deck_id, deck_lines)
         !> the file; case name; the deck's path; the failure ('' if none)
         character(len=*), intent(in) :: path, name, deck_path, message
         type(model_t), intent(in) :: m                           !! the model
@@ -146,9 +151,9 @@ contains
         type(error_t), allocatable, intent(out) :: err           !! allocated on failure
         type(adaptation_t), intent(in), optional :: adaptation   !! what ADAPT did
         character(len=*), intent(in), optional :: warnings(:)    !! as the report prints them
-        character(len=*), intent(in), optional :: deck_file      !! the deck's canonical path
-                                                                 !! ('' for no file; default:
-                                                                 !! deck_path's)
+        character(len=*), intent(in), optional :: deck_id        !! the deck's identity ('' for
+                                                                 !! no file; default: deck_path's)
+        character(len=*), intent(in), optional :: deck_lines(:)  !! the deck's text: "inputs" 
         type(units_t) :: un
         integer :: u, i
         logical :: adapted
@@ -162,14 +167,16 @@ contains
         write (u, '(a)') '  "version": '//json_string(program_version)//','
         write (u, '(a)') '  "run_time": '//json_string(trim(run_time))//','
         write (u, '(a)') '  "case": '//json_string(name)//','
-        write (u, '(a)') '  "deck": '//json_string(deck_path)//','
-        ! the deck's canonical path: how a later run of the same deck, from any folder, knows
-        ! these files for its own (output_paths::remove_stale_outputs)
-        if (present(deck_file)) then
-            write (u, '(a)') '  "deck_file": '//json_string(deck_file)//','
+        write (u, '(a)') '  "deck": '//json_string(base_name(deck_path))//','
+        ! how a later run of the same deck, from any folder, knows these files for its own
+        ! (output_paths::remove_stale_outputs)
+        if (present(deck_id)) then
+            write (u, '(a)') '  "deck_identity": '//json_string(deck_id)//','
         else
-            write (u, '(a)') '  "deck_file": '//json_string(canonical_path(deck_path))//','
+            write (u, '(a)') '  "deck_identity": '// &
+                json_string(deck_identity(canonical_path(deck_path)))//','
         end if
+        if (present(deck_lines)) call write_input_record(u, m, deck_lines)
         write (u, '(a)') '  "title": '//json_string(trim(m%title))//','
         write (u, '(a)') '  "model": '//json_string(trim(merge('BEAM ', 'PLATE', &
             m%structure%kind == MODEL_BEAM)))//','
@@ -222,6 +229,7 @@ contains
             '(Sigma_z^h; CSV sigma_z_fe)",'
         call write_json_errors(u, e, adapted)
         if (adapted) call write_json_adaptation(u, adaptation)
+        call write_check_json(u, evaluate_design_checks(m, s))
         call write_json_checks(u, sol, tab, s)
         write (u, '(a)') '}'
         call commit_file(path, u, err)
@@ -363,57 +371,6 @@ contains
         write (u, '(a)') '  }'
     end subroutine write_json_checks
 
-    !> A JSON string literal (quotes, backslashes and control characters escaped).
-    pure function json_string(text) result(js)
-        character(len=*), intent(in) :: text   !! any text
-        character(len=:), allocatable :: js
-        integer :: i, k, n
-        ! sized first and filled in place: appending character by character reallocated the
-        ! string at every character (5 % of a 1000-case sweep)
-        n = len(text) + 2 + count_escapes(text)
-        allocate (character(len=n) :: js)
-        js(1:1) = '"'
-        k = 1
-        do i = 1, len(text)
-            select case (text(i:i))
-            case ('"', '\')
-                js(k + 1:k + 2) = '\'//text(i:i)
-                k = k + 2
-            case (achar(0):achar(31))
-                js(k + 1:k + 1) = ' '
-                k = k + 1
-            case default
-                js(k + 1:k + 1) = text(i:i)
-                k = k + 1
-            end select
-        end do
-        js(k + 1:k + 1) = '"'
-    end function json_string
-
-    !> Characters of text that json_string escapes with a backslash.
-    pure integer function count_escapes(text) result(n)
-        character(len=*), intent(in) :: text
-        integer :: i
-        n = 0
-        do i = 1, len(text)
-            if (text(i:i) == '"' .or. text(i:i) == '\') n = n + 1
-        end do
-    end function count_escapes
-
-    !> A JSON number (null when not defined or not finite).
-    pure function json_number(x, defined) result(text)
-        real(dp), intent(in) :: x          !! the value
-        logical, intent(in) :: defined     !! false: null
-        character(len=:), allocatable :: text
-        character(len=32) :: buf
-        if (.not. defined .or. .not. (abs(x) <= huge(x))) then
-            text = 'null'
-            return
-        end if
-        write (buf, '(es23.15e3)') x
-        text = trim(adjustl(buf))
-    end function json_number
-
     !> output/CASE.gp: the figure of one case, self-contained: the settings of the case
     !! (write_figure_settings) and the panel template (embedded in the program). The data file
     !! (CASE.csv for physical decks, CASE.dat for NONDIM decks) and the PNG are named relative
@@ -480,7 +437,6 @@ contains
         call write_lines(u, sweep_template())
         call commit_file(path, u, err)
     end subroutine write_sweep_script
-
 
     !> gp_dir: the folder of the running script (gnuplot sets ARG0 to its path), '' for the
     !! current one; data and figure are named relative to it.
@@ -799,7 +755,7 @@ contains
         if (allocated(err)) return
         write (u, '(a)') repeat('=', 100)
         write (u, '(a)') ' fricon - beam / circular raft on an elastic half-space with lift-off and friction'
-        write (u, '(a)') ' deck: '//deck_path//'    case: '//label
+        write (u, '(a)') ' deck: '//base_name(deck_path)//'    case: '//label
         write (u, '(a)') ' title: '//trim(m%title)
         write (u, '(a)') ' '//run_stamp()
         write (u, '(a)') repeat('=', 100)
@@ -822,12 +778,14 @@ contains
             call write_station_notes(u, m, tab)
             call write_summary(u, m, e, s, size(adapt_text) > 0)
             call write_checks(u, m, sol, tab, s)
+            call write_check_table(u, evaluate_design_checks(m, s))
         end if
         if (any(len_trim(notes) > 0)) write (u, '(a)') ''
         do i = 1, size(notes)
             if (len_trim(notes(i)) > 0) write (u, '(a)') ' '//trim(notes(i))
         end do
         call commit_file(path, u, err)
+        if (.not. allocated(err)) call fold_report_lines(path, err)
     end subroutine write_report
 
     subroutine write_echo(u, lines)
@@ -1005,45 +963,50 @@ contains
     end subroutine write_log
 
     !> A station table from a list of columns; flagged rows end with ` !T` (tension beyond
-    !! O(eta)) or ` !O` (lifted off with a negative pointwise gap).
+    !! O(eta)) or ` !O` (lifted off with a negative pointwise gap); folded into column
+    !! groups when wider than the report (report_folding).
     subroutine write_table(u, heading, cols, tab, nondim)
         integer, intent(in) :: u
         character(len=*), intent(in) :: heading
         type(column_t), intent(in) :: cols(:)
         type(station_table_t), intent(in) :: tab
         logical, intent(in) :: nondim
-        integer :: i, c
+        integer :: i, c, n_header
         real(dp) :: extent
+        character(len=13) :: cell
+        character(len=13*size(cols) + 6), allocatable :: lines(:)
         extent = maxval(abs(tab%val(cols(1)%quantity, :)*cols(1)%scale), mask=tab%n > 0)
         write (u, '(/,a)') heading
+        n_header = merge(1, 2, nondim)
+        allocate (lines(n_header + tab%n))
+        lines = ''
         do c = 1, size(cols)
             if (.not. cols(c)%in_report) cycle
-            write (u, '(a13)', advance='no') trim(cols(c)%symbol)
+            write (cell, '(a13)') trim(cols(c)%symbol)
+            lines(1)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
+            write (cell, '(a13)') '['//trim(cols(c)%unit)//']'
+            if (.not. nondim) lines(2)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
         end do
-        write (u, '(a)') ''
-        if (.not. nondim) then
-            do c = 1, size(cols)
-                if (.not. cols(c)%in_report) cycle
-                write (u, '(a13)', advance='no') '['//trim(cols(c)%unit)//']'
-            end do
-            write (u, '(a)') ''
-        end if
         rows: do i = 1, tab%n
             do c = 1, size(cols)
                 if (.not. cols(c)%in_report) cycle
                 if (cols(c)%integer_valued) then
-                    write (u, '(a13)', advance='no') trim(state_word(nint(tab%val(Q_STATE, i))))
+                    write (cell, '(a13)') trim(state_word(nint(tab%val(Q_STATE, i))))
                 else if (c == 1) then
-                    write (u, position_format(extent, 13), advance='no') &
+                    write (cell, position_format(extent, 13)) &
                         tab%val(cols(c)%quantity, i)*cols(c)%scale
                 else
-                    write (u, '(es13.4)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
+                    write (cell, '(es13.4)') tab%val(cols(c)%quantity, i)*cols(c)%scale
                 end if
+                lines(n_header + i)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
             end do
-            if (iand(tab%flag(i), FLAG_TENSION) /= 0) write (u, '(a)', advance='no') ' !T'
-            if (iand(tab%flag(i), FLAG_OVERLAP) /= 0) write (u, '(a)', advance='no') ' !O'
-            write (u, '(a)') ''
+            if (iand(tab%flag(i), FLAG_TENSION) /= 0) lines(n_header + i) = &
+                trim(lines(n_header + i))//' !T'
+            if (iand(tab%flag(i), FLAG_OVERLAP) /= 0) lines(n_header + i) = &
+                trim(lines(n_header + i))//' !O'
         end do rows
+        lines = fold_table(lines, n_header, 13, 13, count(cols%in_report))
+        write (u, '(a)') (trim(lines(i)), i=1, size(lines))
     end subroutine write_table
 
     subroutine write_station_notes(u, m, tab)

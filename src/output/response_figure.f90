@@ -10,6 +10,8 @@ module response_figure
     use report_writer, only: write_script_folder, shell_safe
     use atomic_files, only: open_temporary, commit_file
     use figure_templates, only: response_template
+    use model, only: model_t
+    use case_scales, only: pressure_unit
     implicit none
     private
 
@@ -17,16 +19,16 @@ module response_figure
     !! and the key results (status, rho, outer_iterations, elements).
     integer, parameter, public :: columns_before_swept = 2, columns_before_keys = 4
 
-    public :: swept_values, write_response_script
+    public :: swept_values, write_response_script, parameter_unit
 
 contains
 
     !> output/STEM_response.gp for the summary STEM_summary.csv of the cases' results (all
     !! cases of the sweep, in case order); nothing when no case solved or no key result is
     !! defined in any.
-    subroutine write_response_script(path, stem, title, results, written, err)
+    subroutine write_response_script(path, stem, m, results, written, err)
         character(len=*), intent(in) :: path, stem     !! the script; the deck's file stem
-        character(len=*), intent(in) :: title          !! the deck's TITLE
+        type(model_t), intent(in) :: m                 !! a case's model (title, units)
         type(case_result_t), intent(in) :: results(:)  !! every case of the sweep
         logical, intent(out) :: written                !! a script was written
         type(error_t), allocatable, intent(out) :: err !! allocated on failure
@@ -61,9 +63,9 @@ contains
         call write_script_folder(u)
         write (u, '(a)') "summary = gp_dir.'"//stem//"_summary.csv'"
         write (u, '(a)') "response_png = gp_dir.'"//stem//"_response.png'"
-        write (u, '(a)') "title = 'fricon: "//trim(shell_safe(title))//" (response)'"
+        write (u, '(a)') "title = 'fricon: "//trim(shell_safe(m%title))//" (response)'"
         write (u, '(a,i0)') 'x_col = ', columns_before_swept + 1
-        write (u, '(a)') "x_label = '"//trim(names(1))//"'"
+        write (u, '(a)') "x_label = '"//trim(shell_safe(axis_label(names(1), m)))//"'"
         write (u, '(a,i0)') 'x_log = ', merge(1, 0, minval(x) > 0.0_dp .and. &
                                                    maxval(x) >= 20.0_dp*minval(x))
         call write_keys(u, results(solved), keys, columns_before_swept + size(names) + &
@@ -206,6 +208,33 @@ contains
         if (same_sweep_point) same_sweep_point = all(texts_a == texts_b) .and. &
                                                  all(names_a == names_b)
     end function same_sweep_point
+    !> 'NAME [unit]' of a swept parameter, or NAME for a pure number.
+    pure function axis_label(name, m) result(text)
+        character(len=*), intent(in) :: name   !! a SWEEP parameter name
+        type(model_t), intent(in) :: m         !! a case's model (its units)
+        character(len=:), allocatable :: text
+        text = trim(name)
+        if (len(parameter_unit(name, m)) > 0) text = text//' ['//parameter_unit(name, m)//']'
+    end function axis_label
+
+    !> The unit of a SWEEP parameter's values, the deck's: moduli (E, E_F, E1 to E3, E_BASE)
+    !! in F/L² by its SI name (kPa for kN and m), lengths (H, L, A, B, H1 to H3, DEPTH) in L
+    !! (NONDIM decks: l or a; their layer moduli are relative: none); '' for the
+    !! nondimensional groups, ratios and counts.
+    pure function parameter_unit(name, m) result(unit)
+        character(len=*), intent(in) :: name   !! a SWEEP parameter name
+        type(model_t), intent(in) :: m         !! a case's model (its units)
+        character(len=:), allocatable :: unit
+        select case (trim(name))
+        case ('E', 'E_F', 'E1', 'E2', 'E3', 'E_BASE')
+            unit = trim(pressure_unit(m%units%force, m%units%length))
+            if (m%nondim) unit = ''
+        case ('H', 'L', 'A', 'B', 'H1', 'H2', 'H3', 'DEPTH')
+            unit = trim(m%units%length)
+        case default
+            unit = ''
+        end select
+    end function parameter_unit
 
     !> The swept parameters of a case from its label ('case 002 of 006: RHO=0.01 F=0.5',
     !! deck_reader::case_model: NAME=value pairs, one blank apart, each value a deck field):

@@ -14,12 +14,12 @@ module sweep_files
     implicit none
     private
 
-    public :: write_sweep_outputs
+    public :: write_sweep_outputs, write_response_plot
 
 contains
 
     !> A sweep's summary CSV and overlay figure; a shard writes STEM_summary.shard-I-of-N.csv
-    !! with its own rows (scripts/merge_shards.sh joins the shards into STEM_summary.csv).
+    !! with its own rows (fricon --merge joins the shards into STEM_summary.csv).
     subroutine write_sweep_outputs(out_dir, stem, cases, results, selected, figures, &
                                    shard_index, shard_count, err)
         character(len=*), intent(in) :: out_dir        !! output folder
@@ -55,8 +55,8 @@ contains
             call write_summary_csv(out_dir//'/'//stem//'_summary.csv', cases(1), results, err)
             if (.not. allocated(err)) call write_sweep_plot(out_dir, stem, cases, results, &
                                                             figures, err)
-            if (.not. allocated(err)) call write_response_plot(out_dir, stem, cases(1)%title, &
-                                                               results, figures, err)
+            if (.not. allocated(err)) call write_response_plot(out_dir, stem, cases(1), results, &
+                                                               figures, err)
             if (allocated(err)) then
                 ! no summary or figure of an earlier run beside this run's cases
                 call remove_sweep_outputs(out_dir, stem, '')
@@ -100,15 +100,16 @@ contains
 
     !> output/STEM_response.gp and .png (response_figure); an earlier run's are removed
     !! when this run has none (no solved case, or no figures for the PNG).
-    subroutine write_response_plot(out_dir, stem, title, results, figures, err)
-        character(len=*), intent(in) :: out_dir, stem, title
-        type(case_result_t), intent(in) :: results(:)
-        logical, intent(in) :: figures
-        type(error_t), allocatable, intent(out) :: err
+    subroutine write_response_plot(out_dir, stem, m, results, figures, err)
+        character(len=*), intent(in) :: out_dir, stem   !! output folder; the deck's file stem
+        type(model_t), intent(in) :: m                  !! a case's model (title, units)
+        type(case_result_t), intent(in) :: results(:)   !! every case of the sweep
+        logical, intent(in) :: figures                  !! render the PNG
+        type(error_t), allocatable, intent(out) :: err  !! allocated on failure
         character(len=:), allocatable :: base, note
         logical :: written
         base = out_dir//'/'//stem//'_response'
-        call write_response_script(base//'.gp', stem, title, results, written, err)
+        call write_response_script(base//'.gp', stem, m, results, written, err)
         if (allocated(err)) return
         if (.not. written) call remove_output(base//'.gp')
         if (written .and. figures) then

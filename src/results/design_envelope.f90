@@ -9,6 +9,7 @@ module design_envelope
     use kinds, only: dp
     use solved_case, only: case_t
     use summary_table, only: entry_t
+    use design_checks, only: evaluate_design_checks, check_entries
     implicit none
     private
 
@@ -42,11 +43,14 @@ module design_envelope
 contains
 
     !> The design values of a solved case: its key results without the positions of
-    !! extremes (keys ending in _x), the solver's count and the edge distance (no responses).
+    !! extremes (keys ending in _x), the solver's count and the edge distance (no responses),
+    !! then the value and the utilisation of each design check of its CHECK cards
+    !! (design_checks::check_entries: `<check>_value`, `<check>_utilisation`).
     pure function design_values(c) result(v)
         type(case_t), intent(in) :: c   !! a solved case
         type(design_value_t), allocatable :: v(:)
-        v = values_of_entries(c%entries)
+        v = values_of_entries([c%entries, check_entries(evaluate_design_checks(c%model, &
+                                                                               c%summary))])
     end function design_values
 
     !> design_values' selection from a case's key results.

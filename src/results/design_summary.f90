@@ -25,6 +25,7 @@ module design_summary
     use interface_law, only: STATE_LIFTOFF, STATE_SLIP, admissible_excess
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M, Q_MT, Q_Q, Q_SLIP
     use station_results, only: station_table_t, FLAG_TENSION, FLAG_OVERLAP
+    use loaded_points, only: loaded_positions
     implicit none
     private
 
@@ -49,7 +50,12 @@ module design_summary
         real(dp) :: subgrade_modulus = 0.0_dp         !! (V / base area) / w_mean [F/L^3]
         real(dp) :: tilt = 0.0_dp                     !! beam (w(l/2) - w(-l/2))/l; plate 0 [rad]
         type(located_t) :: slope_max                  !! largest |dw/dx| between stations [rad]
-        type(located_t) :: angular_distortion         !! largest |dw/dx - tilt| [rad]
+        type(located_t) :: slope_relative_max         !! largest |dw/dx - tilt| between
+                                                      !! neighbouring stations [rad]
+        !> the codes' angular distortion: the largest |slope - tilt| of the line joining
+        !! adjacent loaded points (loaded_points), x midway between them; undefined with
+        !! fewer than two loaded points [rad]
+        type(located_t) :: angular_distortion
         type(interval_t), allocatable :: intervals(:) !! contact and lift-off, in order of x
         type(interval_t), allocatable :: slip_intervals(:) !! where the base slips (contact
                                                            !! true), in order of x
@@ -120,10 +126,34 @@ contains
             slope = (tab%val(Q_W, i + 1) - tab%val(Q_W, i))/(tab%val(Q_X, i + 1) - tab%val(Q_X, i))
             if (abs(slope) > abs(s%slope_max%value)) &
                 s%slope_max = located_t(slope, 0.5_dp*(tab%val(Q_X, i) + tab%val(Q_X, i + 1)))
-            if (abs(slope - s%tilt) > s%angular_distortion%value) s%angular_distortion = &
+            if (abs(slope - s%tilt) > s%slope_relative_max%value) s%slope_relative_max = &
                 located_t(abs(slope - s%tilt), 0.5_dp*(tab%val(Q_X, i) + tab%val(Q_X, i + 1)))
         end do pairs
+        s%angular_distortion = relative_rotation(loaded_positions(m%structure, m%loads), &
+                                                 tab, s%tilt)
     end subroutine settlement_values
+
+    !> The largest relative rotation |(w(x_k+1) - w(x_k))/(x_k+1 - x_k) - tilt| between
+    !! adjacent points x (Burland & Wroth's angular distortion; EN 1997-1 Annex H), the
+    !! settlements interpolated from the stations, placed midway between the two points;
+    !! undefined with fewer than two points.
+    pure function relative_rotation(x, tab, tilt) result(beta)
+        real(dp), intent(in) :: x(:)                !! the points, ascending [L]
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: tilt                !! the foundation's tilt [rad]
+        type(located_t) :: beta
+        real(dp) :: w(size(x)), rotation
+        integer :: k
+        beta = located_t(0.0_dp, 0.0_dp, size(x) >= 2)
+        do k = 1, size(x)
+            w(k) = interpolate(tab, tab%val(Q_W, :), x(k))
+        end do
+        do k = 1, size(x) - 1
+            rotation = abs((w(k + 1) - w(k))/(x(k + 1) - x(k)) - tilt)
+            if (k > 1 .and. rotation <= beta%value) cycle
+            beta = located_t(rotation, 0.5_dp*(x(k) + x(k + 1)))
+        end do
+    end function relative_rotation
 
     !> Mean settlement over the base (station_results: the finite-element w integrated, plate
     !! weight 2 pi r, the same whatever the stations) and the secant modulus of subgrade

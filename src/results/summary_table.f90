@@ -52,9 +52,14 @@ contains
              ent('subgrade_modulus', 'secant subgrade modulus (V/A)/w_mean', k%u_subgrade, &
                  s%subgrade_modulus, .not. m%nondim .and. s%w_mean > 0.0_dp), &
              ent('tilt', 'tilt (w(l/2) - w(-l/2))/l (plate: 0)', k%u_rotation, s%tilt*k%rotation), &
-             ent('angular_distortion', 'max angular distortion |dw/dx - tilt|', k%u_rotation, &
-                 s%angular_distortion%value*k%rotation), &
-             ent('angular_distortion_x', '  at', k%u_length, s%angular_distortion%x*k%length), &
+             ent('angular_distortion', 'angular distortion between loaded points', &
+                 k%u_rotation, s%angular_distortion%value*k%rotation, &
+                 s%angular_distortion%defined), &
+             ent('angular_distortion_x', '  midway between the two points, at', k%u_length, &
+                 s%angular_distortion%x*k%length, s%angular_distortion%defined), &
+             ent('slope_relative_max', 'max |dw/dx - tilt| between stations', k%u_rotation, &
+                 s%slope_relative_max%value*k%rotation), &
+             ent('slope_relative_max_x', '  at', k%u_length, s%slope_relative_max%x*k%length), &
              ent('contact_extent_t', 'contact extent t (largest t >= 0 in contact)', '', extent)]
         if (beam) e = [e, end_entries(s, k)]
         e = [e, ent(choose(beam, 'contact_length', 'contact_area'), &
@@ -94,14 +99,15 @@ contains
     !! pressure at an edge in contact or under a POINT or RING load; under a POINT load on
     !! the plate's axis (or a RING of radius 0) also the settlement (Mindlin: the shear
     !! deflection ~ ln r, its slope ~ 1/r), the moments (~ ln r) and the shear force (~ 1/r)
-    !! there, hence the largest settlement, its difference, the largest angular distortion,
-    !! the largest sagging moments and |Q_r|.
+    !! there, hence the largest settlement, its difference, the angular distortion (the axis
+    !! is a loaded point) and the largest slope relative to the tilt, the largest sagging
+    !! moments and |Q_r|.
     pure subroutine mark_singular(s, e)
         type(summary_t), intent(in) :: s
         type(entry_t), intent(inout) :: e(:)
-        character(len=*), parameter :: point_keys(6) = [character(len=24) :: 'settlement_max', &
+        character(len=*), parameter :: point_keys(7) = [character(len=24) :: 'settlement_max', &
             'differential_settlement', 'moment_sagging', 'hoop_moment_sagging', &
-            'shear_force_max', 'angular_distortion']
+            'shear_force_max', 'angular_distortion', 'slope_relative_max']
         integer :: i
         do i = 1, size(e)
             if (trim(e(i)%key) == 'pressure_max') e(i)%singular = s%pressure_max_singular
