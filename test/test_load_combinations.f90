@@ -52,7 +52,8 @@ contains
     !! x 0.8 x 1.2 x 10 (per unit factor of G).
     pure function beam_head() result(lines)
         character(len=w), allocatable :: lines(:)
-        lines = [character(len=w) :: card('TITLE', 'combinations'), card('MODEL', 'BEAM'), card('UNITS', 'kN', 'm'), &
+        lines = [character(len=w) :: card('TITLE', 'combinations'), card('MODEL', 'BEAM'), &
+                 card('UNITS', 'kN', 'm'), &
                  card('GEOMETRY', '10.0', '0.8', '1.2'), card('STRUCTURE', '30.0E6', '0.2'), &
                  card('SOIL', '30.0E3', '0.35'), card('FRICTION', '0.4'), card('MESH', '24')]
     end function beam_head
@@ -289,7 +290,8 @@ contains
         type(model_t) :: m
         type(case_t) :: c
         character(len=:), allocatable :: label
-        call parse_deck('weight.dat', [character(len=w) :: beam_head(), card('LOADCASE', 'G', '25.0'), &
+        call parse_deck('weight.dat', [character(len=w) :: beam_head(), &
+            card('LOADCASE', 'G', '25.0'), &
             card('LOAD', 'PATCH', '1000.0', '', '-3.7', '-3.3'), &
             card('LOAD', 'PATCH', '1000.0', '', '3.3', '3.7'), &
             card('COMBINE', 'ULS', 'G', '1.35'), card('END')], deck, err)
@@ -325,7 +327,8 @@ contains
                                                    '002_LOW', '002_HIGH']
         integer :: k, status
         logical :: there
-        call parse_deck(out_dir//'/swept.dat', [character(len=w) :: beam_head(), card('LOADCASE', 'G'), &
+        call parse_deck(out_dir//'/swept.dat', [character(len=w) :: beam_head(), &
+            card('LOADCASE', 'G'), &
             card('LOAD', 'PATCH', '1000.0', '', '-3.7', '-3.3'), &
             card('LOAD', 'PATCH', '1000.0', '', '3.3', '3.7'), &
             card('COMBINE', 'LOW', 'G', '1.0'), card('COMBINE', 'HIGH', 'G', '1.5'), &
@@ -396,7 +399,8 @@ contains
         type(case_t) :: c
         character(len=:), allocatable :: label
         real(dp), parameter :: pi = acos(-1.0_dp)
-        call parse_deck('plate.dat', [character(len=w) :: card('MODEL', 'PLATE'), card('UNITS', 'kN', 'm'), &
+        call parse_deck('plate.dat', [character(len=w) :: card('MODEL', 'PLATE'), &
+            card('UNITS', 'kN', 'm'), &
             card('GEOMETRY', '6.0', '0.6'), card('STRUCTURE', '30.0E6', '0.2'), &
             card('SOIL', '40.0E3', '0.3'), card('FRICTION', '0.5'), card('MESH', '20'), &
             card('LOADCASE', 'G', '25.0'), card('LOADCASE', 'Q'), &

@@ -160,7 +160,8 @@ contains
         cc%pair_error = cc%pair_error .or. s_name /= FIELD_OK .or. s_factor /= FIELD_OK
         if (s_name /= FIELD_OK) then
             call error_at(diag, line, text, j, 'COMBINE load case name f'//int_text(j)// &
-                ' must be one word (the factor in f'//int_text(j + 1)//' needs its case), got '''// &
+                ' must be one word (the factor in f'//int_text(j + 1)//' needs its case), '// &
+                'got '''// &
                 trim(adjustl(field_text(text, j)))//'''')
             return
         end if
