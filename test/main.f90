@@ -26,6 +26,7 @@ program tester
     use test_layered_ground, only: collect_layered_ground
     use test_layered_program, only: collect_layered_program
     use test_unit_checks, only: collect_unit_checks
+    use test_html_record, only: collect_html_record
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -34,7 +35,7 @@ program tester
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
         'simplifications adaptive nested_spaces architecture layered_ground layered_program '// &
-        'foundation_springs unit_checks '
+        'foundation_springs unit_checks html_record '
 
     want_suite = ''
     want_test = ''
@@ -137,6 +138,10 @@ program tester
     if (wanted('unit_checks')) then
         call collect_unit_checks(tests)
         call run_suite('unit_checks', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('html_record')) then
+        call collect_html_record(tests)
+        call run_suite('html_record', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('paper')) then
         call collect_paper(tests)
