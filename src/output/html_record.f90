@@ -13,14 +13,14 @@ module html_record
     use atomic_files, only: open_temporary, commit_file
     use model, only: model_t, MODEL_BEAM, total_vertical_load
     use solved_case, only: case_t
-    use summary_table, only: entry_t
+    use summary_table, only: entry_t, choose
     use case_scales, only: units_t, case_units
     use design_summary, only: summary_t
     use method_notes, only: error_method_text
     use run_identity, only: program_name, program_version, run_time
     use base64_encoding, only: base64_encoded
     use html_text, only: escaped, html_number, html_unit, cell, head_cell, table_row, &
-                         style_sheet, replaced, pick
+                         style_sheet, replaced
     use deck_reader, only: deck_t
     use output_paths, only: base_name
     use record_inputs, only: write_input_tables, write_ground_model
@@ -159,7 +159,7 @@ contains
         character(len=*), intent(in) :: deck_name, label
         write (u, '(a)') '<table class="meta">'
         write (u, '(a)') table_row(cell('<b>Calculation record</b>')//cell(escaped( &
-            program_name//' '//program_version//': '//pick( &
+            program_name//' '//program_version//': '//choose( &
             m%structure%kind == MODEL_BEAM, 'beam', 'circular raft (plate)')// &
             ' on an elastic half-space with lift-off and friction')))
         write (u, '(a)') table_row(cell('Program')//cell(escaped(program_name)// &
@@ -168,7 +168,7 @@ contains
         write (u, '(a)') table_row(cell('Deck')//cell(escaped(deck_name)))
         if (len_trim(label) > 0) write (u, '(a)') table_row(cell('Case')// &
             cell(escaped(trim(label))))
-        write (u, '(a)') table_row(cell('Data')//cell(pick(m%nondim, &
+        write (u, '(a)') table_row(cell('Data')//cell(choose(m%nondim, &
             'nondimensional groups (NONDIM card): results are nondimensional', &
             'physical; results in the display units named in each table')))
         write (u, '(a)') '</table>'
@@ -184,7 +184,7 @@ contains
         integer :: i
         logical :: estimated
         estimated = any(e%has_error)
-        write (u, '(a)') '<section>'
+        write (u, '(a)') '<section class="results">'
         write (u, '(a)') '<h2>Results: design summary</h2>'
         write (u, '(a)') '<table>'
         write (u, '(a)') '<thead>'//table_row(head_cell('quantity')//head_cell('value')// &
@@ -274,20 +274,26 @@ contains
             html_unit(unit)//']')//head_cell('to ['//html_unit(unit)//']'))//'</thead>'
         write (u, '(a)') '<tbody>'
         do k = 1, size(s%intervals)
-            write (u, '(a)') table_row(cell(pick( &
-                s%intervals(k)%contact, 'contact', 'lift-off'))//cell(html_number(s%intervals(k)%x1*scale, 4), &
-                'num')//cell(html_number(s%intervals(k)%x2*scale, 4), 'num'))
+            write (u, '(a)') interval_row(choose(s%intervals(k)%contact, 'contact', 'lift-off'), &
+                                          s%intervals(k)%x1*scale, s%intervals(k)%x2*scale)
         end do
         do k = 1, size(s%slip_intervals)
-            write (u, '(a)') table_row(cell('slip')//cell(html_number( &
-                s%slip_intervals(k)%x1*scale, 4), 'num')//cell(html_number( &
-                s%slip_intervals(k)%x2*scale, 4), 'num'))
+            write (u, '(a)') interval_row('slip', s%slip_intervals(k)%x1*scale, &
+                                          s%slip_intervals(k)%x2*scale)
         end do
         write (u, '(a)') '</tbody>'
         write (u, '(a)') '</table>'
         if (size(s%slip_intervals) == 0 .and. any(s%intervals%contact)) write (u, '(a)') &
             '<p class="small">No slip: the base sticks wherever it is in contact.</p>'
     end subroutine write_intervals
+
+    pure function interval_row(state, x1, x2) result(tr)
+        character(len=*), intent(in) :: state
+        real(dp), intent(in) :: x1, x2
+        character(len=:), allocatable :: tr
+        tr = table_row(cell(state)//cell(html_number(x1, 4), 'num')// &
+                       cell(html_number(x2, 4), 'num'))
+    end function interval_row
 
     !> Vertical and horizontal equilibrium: the reactions of the soil against the loads.
     subroutine write_statics(u, c)
@@ -332,7 +338,7 @@ contains
             write (u, '(a)') table_row(cell(escaped(trim(ck%name)))// &
                 cell(html_number(ck%value, 4), 'num')//cell(html_number(ck%limit, 4), 'num')// &
                 cell(html_unit(ck%unit))//cell(html_number(ck%utilisation, 3), 'num')// &
-                cell(pick(ck%pass, 'met', 'NOT MET'), pick(ck%pass, 'num', 'fail')))
+                cell(choose(ck%pass, 'met', 'NOT MET'), choose(ck%pass, 'num', 'fail')))
             end associate
         end do
         write (u, '(a)') '</tbody>'
@@ -370,8 +376,8 @@ contains
         write (u, '(a)') '<h2>Warnings and notes</h2>'
         do k = 1, size(notes)
             if (len_trim(notes(k)) == 0) cycle
-            write (u, '(a)') '<p class="'//pick( &
-                index(notes(k), 'WARNING') == 1, 'warn', 'note')//'">'//escaped(trim(notes(k)))//'</p>'
+            write (u, '(a)') '<p class="'//choose(index(notes(k), 'WARNING') == 1, 'warn', &
+                'note')//'">'//escaped(trim(notes(k)))//'</p>'
         end do
         write (u, '(a)') '</section>'
     end subroutine write_notes

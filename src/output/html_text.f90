@@ -8,7 +8,7 @@ module html_text
     private
 
     public :: escaped, html_number, html_exact, html_unit, cell, head_cell, table_row, style_sheet
-    public :: replaced, pick
+    public :: replaced
 
 contains
 
@@ -33,18 +33,6 @@ contains
             end select
         end do
     end function escaped
-
-    !> a if cond, else b (MERGE needs equal lengths).
-    pure function pick(cond, a, b) result(text)
-        logical, intent(in) :: cond              !! which one
-        character(len=*), intent(in) :: a, b     !! the two texts
-        character(len=:), allocatable :: text
-        if (cond) then
-            text = a
-        else
-            text = b
-        end if
-    end function pick
 
     !> text with every occurrence of old replaced by new (old not empty).
     pure function replaced(text, old, new) result(out)
@@ -192,7 +180,7 @@ contains
             '  h2, h3 { break-after: avoid; page-break-after: avoid; }', &
             '  tr, figure, pre { break-inside: avoid; page-break-inside: avoid; }', &
             '  thead { display: table-header-group; }', &
-            '  section.figure { break-before: page; page-break-before: always; }', &
+            '  section.results { break-before: page; page-break-before: always; }', &
             '}']
     end function style_sheet
 end module html_text

@@ -10,8 +10,10 @@ module record_inputs
                      soil_shear_modulus, layer_profile, base_name, GROUND_BASE_HALFSPACE
     use shape_functions, only: interp_name
     use case_scales, only: pressure_unit
+    use summary_table, only: choose
     use ground_text, only: layered, ground_model_words
-    use html_text, only: escaped, html_exact, html_number, html_unit, cell, head_cell, table_row, pick
+    use html_text, only: escaped, html_exact, html_number, html_unit, cell, head_cell, &
+                         table_row
     implicit none
     private
 
@@ -51,16 +53,16 @@ contains
         f = trim(m%units%force)
         l = trim(m%units%length)
         stress = trim(pressure_unit(f, l))
-        write (u, '(a)') word_row('MODEL', 'structure', pick(beam, &
+        write (u, '(a)') word_row('MODEL', 'structure', choose(beam, &
             'BEAM (Timoshenko beam)', 'PLATE (axisymmetric Mindlin plate)'))
         if (m%nondim) then
             call write_nondim_rows(u, m)
             return
         end if
         write (u, '(a)') word_row('UNITS', 'force, length', f//', '//l// &
-            pick(m%units%stated, '', ' (no UNITS card: labels N and m)'))
-        write (u, '(a)') value_row('GEOMETRY', pick(beam, 'length', 'radius'), &
-            pick(beam, 'l', 'a'), m%structure%length, l)
+            choose(m%units%stated, '', ' (no UNITS card: labels N and m)'))
+        write (u, '(a)') value_row('GEOMETRY', choose(beam, 'length', 'radius'), &
+            choose(beam, 'l', 'a'), m%structure%length, l)
         write (u, '(a)') value_row('', 'thickness', 'h', m%structure%h, l)
         if (beam) write (u, '(a)') value_row('', 'width', 'b', m%structure%b, l)
         write (u, '(a)') value_row('STRUCTURE', 'Young''s modulus', 'E', m%structure%e, stress)
@@ -125,7 +127,7 @@ contains
             write (u, '(a)') value_row('ADAPT', 'tolerance', 'tol', m%mesh%adapt_tol, '')
             write (u, '(a)') word_row('', 'largest mesh', int_text(m%mesh%adapt_max_ne))
         end if
-        write (u, '(a)') word_row('SOLVER', 'method', pick( &
+        write (u, '(a)') word_row('SOLVER', 'method', choose( &
             m%solver%method == METHOD_NEWTON, 'NEWTON (semismooth Newton)', &
             'TWOLOOP (the paper''s two loops)'))
         write (u, '(a)') value_row('', 'tolerance outer, inner', '', m%solver%tol_outer, '', &
@@ -146,14 +148,18 @@ contains
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         character(len=:), allocatable :: f, l
+        logical :: beam
         integer :: k
+        beam = m%structure%kind == MODEL_BEAM
         f = html_unit(trim(m%units%force))
         l = html_unit(trim(m%units%length))
-        write (u, '(a)') '<h3>Loads (LOAD cards; F<sub>z</sub> downward, F<sub>x</sub> along '// &
-            '+x on the top face; a PRESSURE is given as its PATCH total)</h3>'
+        write (u, '(a)') '<h3>Loads (LOAD cards; F<sub>z</sub> downward, F<sub>x</sub> '// &
+            choose(beam, 'along +x', 'radial')//' on the top face; a PRESSURE is given as its '// &
+            'PATCH total)</h3>'
         write (u, '(a)') '<table>'
         write (u, '(a)') '<thead>'//table_row(head_cell('#')//head_cell('kind')// &
-            head_cell('F<sub>z</sub> ['//f//'] (MOMENT: ['//f//'&#183;'//l//'])')// &
+            head_cell('F<sub>z</sub> ['//f//']'//choose(beam, ' (MOMENT: ['//f//'&#183;'//l// &
+            '])', ''))// &
             head_cell('F<sub>x</sub> ['//f//']')//head_cell('x<sub>1</sub> ['//l//']')// &
             head_cell('x<sub>2</sub> ['//l//']'))//'</thead>'
         write (u, '(a)') '<tbody>'
