@@ -33,7 +33,8 @@ contains
                  new_unittest('record_of_a_run_well_formed', test_run_record), &
                  new_unittest('record_figure_data_uri_decodes', test_figure_uri), &
                  new_unittest('record_checks_section_only_with_checks', test_checks_section), &
-                 new_unittest('no_html_option_leaves_no_record', test_no_html)]
+                 new_unittest('no_html_option_leaves_no_record', test_no_html), &
+                 new_unittest('failed_case_leaves_no_record', test_failed_case)]
     end subroutine collect_html_record
 
     !> RFC 4648 §10: BASE64("") = "", "f" = "Zg==", "fo" = "Zm8=", "foo" = "Zm9v",
@@ -240,6 +241,54 @@ contains
         inquire (file=dir//'/strip_footing.html', exist=there)
         call check(err, status == EXIT_OK .and. .not. there, 'a record with --no-html')
     end subroutine test_no_html
+
+    !> A case that fails (a horizontal load of 2000 kN above the friction capacity
+    !! f V = 0.4 x 2400 kN = 960 kN: no equilibrium, exit status 2) removes the record an
+    !! earlier, solved run of the same deck wrote: no stale record beside its report.
+    subroutine test_failed_case(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: deck_dir = 'build/test_html_deck'
+        type(deck_t) :: deck
+        integer :: status
+        logical :: there
+        call execute_command_line('rm -rf '//dir//' '//deck_dir//' && mkdir -p '//dir//' '// &
+                                  deck_dir)
+        call write_strip(deck_dir//'/slide.dat', '0.0')
+        call read_deck(deck_dir//'/slide.dat', deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, &
+                          run_options_t(figures=.false.))
+        inquire (file=dir//'/slide.html', exist=there)
+        call check(err, status == EXIT_OK .and. there, 'the solved deck wrote no record')
+        if (allocated(err)) return
+        call write_strip(deck_dir//'/slide.dat', '1000.0')
+        call read_deck(deck_dir//'/slide.dat', deck, err)
+        if (allocated(err)) return
+        call run_analysis(deck, dir, output_unit, error_unit, status, &
+                          run_options_t(figures=.false.))
+        inquire (file=dir//'/slide.html', exist=there)
+        call check(err, status == 2 .and. .not. there, 'a failed case left a record')
+    end subroutine test_failed_case
+
+    !> The strip footing deck with F_x on each of its two column loads.
+    subroutine write_strip(path, f_x)
+        character(len=*), intent(in) :: path, f_x
+        integer :: u
+        open (newunit=u, file=path, status='replace', action='write')
+        write (u, '(a)') 'MODEL     BEAM'
+        write (u, '(a)') 'UNITS     kN        m'
+        write (u, '(a)') 'GEOMETRY  10.0      0.8       1.2'
+        write (u, '(a)') 'STRUCTURE 30.0E6    0.2'
+        write (u, '(a)') 'SOIL      30.0E3    0.35'
+        write (u, '(a)') 'FRICTION  0.4'
+        write (u, '(a)') 'LOAD      PATCH     1200.0    '//f_x//repeat(' ', 10 - len(f_x))// &
+                         '-3.7      -3.3'
+        write (u, '(a)') 'LOAD      PATCH     1200.0    '//f_x//repeat(' ', 10 - len(f_x))// &
+                         '3.3       3.7'
+        write (u, '(a)') 'MESH      20'
+        write (u, '(a)') 'END'
+        close (u)
+    end subroutine write_strip
 
     !> A record's common properties: the doctype, well formed, the version and run time.
     subroutine check_page(html, err)
