@@ -17,6 +17,10 @@ contains
         character(len=*), intent(in) :: text   !! plain text
         character(len=:), allocatable :: html
         integer :: i
+        if (scan(text, '&<>"') == 0) then
+            html = text
+            return
+        end if
         html = ''
         do i = 1, len(text)
             select case (text(i:i))
@@ -103,6 +107,10 @@ contains
         character(len=*), intent(in) :: unit   !! e.g. kN.m/m, kN/m^3, kPa
         character(len=:), allocatable :: html
         integer :: i
+        if (scan(unit, '^.&<>"') == 0) then
+            html = trim(unit)
+            return
+        end if
         html = ''
         i = 1
         do while (i <= len_trim(unit))
