@@ -33,6 +33,7 @@ contains
                  new_unittest('record_of_a_run_well_formed', test_run_record), &
                  new_unittest('record_figure_data_uri_decodes', test_figure_uri), &
                  new_unittest('record_checks_section_only_with_checks', test_checks_section), &
+                 new_unittest('record_without_its_figure_file', test_missing_figure), &
                  new_unittest('no_html_option_leaves_no_record', test_no_html), &
                  new_unittest('failed_case_leaves_no_record', test_failed_case)]
     end subroutine collect_html_record
@@ -189,6 +190,29 @@ contains
         call check(err, index(html, 'figure fig.png is a test') > 0 .and. &
                    index(html, canonical_path(dir)) == 0, 'the folder is left in a note')
     end subroutine test_figure_uri
+
+    !> A figure said to be drawn but not there (removed behind fricon's back): the record is
+    !! still written, well formed, and says the figure could not be read.
+    subroutine test_missing_figure(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: html
+        type(deck_t) :: deck
+        type(case_t) :: c
+        character(len=80) :: notes(0)
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call read_deck(deck_file, deck, err)
+        if (allocated(err)) return
+        call solve_deck(deck_file, 10, c, err)
+        if (allocated(err)) return
+        call write_case_record(deck, c, dir//'/gone', '', c%entries, '', notes, err)
+        if (allocated(err)) return
+        call read_text(dir//'/gone.html', html, err)
+        if (allocated(err)) return
+        call check_page(html, err)
+        if (allocated(err)) return
+        call check(err, index(html, 'No figure: the figure gone.png could not be read') > 0 &
+                   .and. index(html, 'data:image') == 0, 'no word on the missing figure')
+    end subroutine test_missing_figure
 
     !> With two checks the record has a design checks section naming each, its utilisation
     !! and NOT MET for the failed one; with none (an empty array) there is no such section.

@@ -8,7 +8,7 @@
 !! out on A4. Written through atomic_files, after the figure is drawn.
 module html_record
     use kinds, only: dp
-    use errors, only: error_t, new_error, EXIT_INPUT
+    use errors, only: error_t
     use deck_fields, only: int_text
     use atomic_files, only: open_temporary, commit_file
     use model, only: model_t, MODEL_BEAM, total_vertical_load
@@ -90,17 +90,20 @@ contains
         character(len=*), intent(in) :: label          !! 'case i of n: values', or ''
         type(case_t), intent(in) :: c                  !! the solved case
         type(entry_t), intent(in) :: e(:)              !! key results with their estimates
-        character(len=*), intent(in) :: figure         !! the PNG to embed ('' for none)
+        character(len=*), intent(in) :: figure         !! the PNG to embed ('' for none;
+                                                       !! one that cannot be read: none)
         character(len=*), intent(in) :: figure_note    !! why there is no figure
         character(len=*), intent(in) :: notes(:)       !! 'WARNING: ...', 'NOTE: ...' lines
         type(error_t), allocatable, intent(out) :: err !! allocated on failure
         type(record_check_t), intent(in), optional :: checks(:)  !! design checks
-        character(len=:), allocatable :: png
+        character(len=:), allocatable :: png, no_figure
+        logical :: read_ok
         integer :: u
         png = ''
+        no_figure = figure_note
         if (len(figure) > 0) then
-            call read_bytes(figure, png, err)
-            if (allocated(err)) return
+            call read_bytes(figure, png, read_ok)
+            if (.not. read_ok) no_figure = 'the figure '//base_name(figure)//' could not be read'
         end if
         call open_temporary(path, u, err)
         if (allocated(err)) return
@@ -113,7 +116,7 @@ contains
         if (present(checks)) then
             if (size(checks) > 0) call write_checks(u, checks)
         end if
-        call write_figure(u, png, figure_note)
+        call write_figure(u, png, no_figure)
         call write_notes(u, notes)
         call write_deck(u, deck_lines)
         write (u, '(a)') '</body>'
@@ -397,24 +400,25 @@ contains
         write (u, '(a)') '</section>'
     end subroutine write_deck
 
-    !> The bytes of a file.
-    subroutine read_bytes(path, bytes, err)
+    !> The bytes of a file; ok is false (and bytes '') when it cannot be read or is empty.
+    subroutine read_bytes(path, bytes, ok)
         character(len=*), intent(in) :: path
         character(len=:), allocatable, intent(out) :: bytes
-        type(error_t), allocatable, intent(out) :: err
+        logical, intent(out) :: ok
         integer :: u, ios, n
-        character(len=256) :: msg
+        bytes = ''
+        ok = .false.
         open (newunit=u, file=path, status='old', action='read', access='stream', &
-              form='unformatted', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call new_error(err, EXIT_INPUT, 'cannot read the figure '//path//': '//trim(msg))
-            return
-        end if
+              form='unformatted', iostat=ios)
+        if (ios /= 0) return
         inquire (unit=u, size=n)
-        allocate (character(len=max(n, 0)) :: bytes)
-        if (n > 0) read (u, iostat=ios, iomsg=msg) bytes
+        if (n > 0) then
+            deallocate (bytes)
+            allocate (character(len=n) :: bytes)
+            read (u, iostat=ios) bytes
+            ok = ios == 0
+        end if
         close (u)
-        if (ios /= 0 .or. n <= 0) call new_error(err, EXIT_INPUT, 'cannot read the figure '// &
-            path)
+        if (.not. ok) bytes = ''
     end subroutine read_bytes
 end module html_record
