@@ -168,8 +168,8 @@ contains
             '  -V, --version     the version', &
             '', &
             'Each case writes CASE.txt (report), .dat, .csv, .json, .gp, .png and .html (the', &
-            'printable calculation record); README.md and', &
-            'doc/OUTPUT.md describe the decks and the outputs.', &
+            'printable calculation record); README.md and doc/OUTPUT.md describe the decks and', &
+            'the outputs.', &
             'Exit status: the worst of the decks: 0 solved, 1 input or file error, 2 analysis '// &
             'failed, 3 internal error.']
     end function usage_lines
