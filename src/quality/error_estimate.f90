@@ -57,7 +57,17 @@ module error_estimate
     !> Roache's factor of safety on a Richardson estimate with an observed order
     real(dp), parameter :: safety = 1.25_dp
 
-    public :: estimate_errors, coarse_case, attach_estimates, is_estimated, &
+    !> The key results of a case on the other meshes of its estimate (estimate_family).
+    type, public :: estimate_family_t
+        logical :: ok = .false.        !! every solve succeeded
+        logical :: refined = .false.   !! ef is the bisected mesh's (else N_e/4's)
+        logical :: on_nodes = .false.  !! every concentrated load on a node of the meshes
+        logical :: edge = .false.      !! a UNIFORM mesh with an end of the base in contact
+        type(entry_t), allocatable :: ec(:)   !! the keys on the nested coarser mesh
+        type(entry_t), allocatable :: ef(:)   !! on the bisected mesh (or on N_e/4)
+    end type estimate_family_t
+
+    public :: estimate_errors, estimate_family, extent_floors, coarse_case, attach_estimates, is_estimated, &
               formal_order, refined_estimate, liftoff_estimates
 
 contains
@@ -76,35 +86,56 @@ contains
         !> an end of the base is in contact (default false)
         logical, intent(in), optional :: edge_in_contact
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        type(estimate_family_t) :: fam
+        logical :: edge
+        edge = .false.
+        if (present(edge_in_contact)) edge = edge_in_contact
+        call estimate_family(m, d, edge, fam, known, cache)
+        if (.not. fam%ok) return
+        if (fam%refined) then
+            call refined_estimate(m, e, fam%ec, fam%ef, extent_floors(m, d%msh, e), &
+                                  fam%on_nodes, fam%edge)
+        else
+            call attach_estimates(m, e, fam%ec, fam%ef, 2.0_dp, extent_floors(m, d%msh, e), &
+                                  fam%on_nodes, fam%edge)
+        end if
+    end subroutine estimate_errors
+
+    !> The key results of the case on the meshes its estimate compares (module header): the
+    !! nested coarser mesh and the bisected one (refined) or, where the bisected case does
+    !! not fit in memory, the coarser meshes N_e/2 and N_e/4 (the second in fam%ef).
+    subroutine estimate_family(m, d, edge_in_contact, fam, known, cache)
+        type(model_t), intent(in) :: m            !! the model
+        type(discretization_t), intent(in) :: d   !! the case's own discretisation
+        logical, intent(in) :: edge_in_contact    !! an end of the base is in contact
+        type(estimate_family_t), intent(out) :: fam  !! the keys on the other meshes
+        !> the coarse solutions of the Newton start
+        type(coarse_solution_t), intent(in), optional :: known(:)
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(coarse_solution_t), allocatable :: reuse(:)
         type(mesh_t) :: c2, c4
-        type(entry_t), allocatable :: e2(:), e4(:), ef(:)
         logical, allocatable :: p2(:), p4(:)
-        logical :: ok2, ok4, okf, edge, on_nodes
         allocate (reuse(0))
         if (present(known)) reuse = known
-        edge = .false.
-        if (present(edge_in_contact)) edge = edge_in_contact .and. &
-                                             trim(m%mesh%grading) == 'UNIFORM'
+        fam%ok = .false.
+        fam%edge = edge_in_contact .and. trim(m%mesh%grading) == 'UNIFORM'
         call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m%loads)), c2, p2)
         if (c2%ne >= d%msh%ne .or. c2%ne < min_coarse_elements) return
-        call mesh_entries(m, c2, reuse, e2, ok2, cache)
-        if (.not. ok2) return
-        on_nodes = loads_on_nodes(m%loads, d%msh) .and. loads_on_nodes(m%loads, c2)
-        if (refined_fits(m)) then
-            call mesh_entries(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), reuse, ef, &
-                              okf, cache)
-            if (.not. okf) return
-            call refined_estimate(m, e, e2, ef, extent_floors(m, d%msh, e), on_nodes, edge)
+        call mesh_entries(m, c2, reuse, fam%ec, fam%ok, cache)
+        if (.not. fam%ok) return
+        fam%on_nodes = loads_on_nodes(m%loads, d%msh) .and. loads_on_nodes(m%loads, c2)
+        fam%refined = refined_fits(m)
+        if (fam%refined) then
+            call mesh_entries(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), reuse, fam%ef, &
+                              fam%ok, cache)
             return
         end if
+        fam%ok = .false.
         call coarsened(c2, p2, c4, p4)
         if (c4%ne >= c2%ne .or. c4%ne < min_coarse_elements) return
-        call mesh_entries(m, c4, reuse, e4, ok4, cache)
-        if (.not. ok4) return
-        call attach_estimates(m, e, e2, e4, 2.0_dp, extent_floors(m, d%msh, e), &
-                              on_nodes .and. loads_on_nodes(m%loads, c4), edge)
-    end subroutine estimate_errors
+        call mesh_entries(m, c4, reuse, fam%ef, fam%ok, cache)
+        fam%on_nodes = fam%on_nodes .and. loads_on_nodes(m%loads, c4)
+    end subroutine estimate_family
 
     !> Whether the case on twice its elements fits in the memory available.
     logical function refined_fits(m)
@@ -122,9 +153,9 @@ contains
     !! is taken as at least half that element (as t; 0 in contact up to the end); 0 for the
     !! other keys.
     pure function extent_floors(m, msh, e) result(floor)
-        type(model_t), intent(in) :: m
-        type(mesh_t), intent(in) :: msh
-        type(entry_t), intent(in) :: e(:)
+        type(model_t), intent(in) :: m        !! the model
+        type(mesh_t), intent(in) :: msh       !! the case's mesh
+        type(entry_t), intent(in) :: e(:)     !! its key results
         real(dp) :: floor(size(e))
         real(dp) :: x
         integer :: i, k
