@@ -76,7 +76,7 @@ program estimate_effectivity
         open (newunit=dump_unit, file=trim(dump_file), status='replace', action='write')
         dumping = .true.
         write (dump_unit, '(a)') '# case interp grading ne key q qc qf ref bar p_max floor '// &
-            'refined estimate'
+            'refined estimate friction_resolved'
     end if
     call start_program()
     call references(ref, bar, has_ref)
@@ -207,7 +207,8 @@ contains
         logical, intent(in) :: estimate
         real(dp), intent(out) :: q(n_keys), err_est(n_keys)
         logical, intent(out) :: defined(n_keys), singular(n_keys), has_est(n_keys), ok
-        real(dp), intent(out), optional :: raw(5, n_keys)  !! qc, qf, p_max, floor, refined
+        real(dp), intent(out), optional :: raw(6, n_keys)  !! qc, qf, p_max, floor, refined,
+                                                            !! friction resolved (1) or not
         type(case_t) :: c
         type(error_t), allocatable :: err
         type(estimate_family_t) :: fam
@@ -234,7 +235,8 @@ contains
                 if (present(raw)) then
                     if (fam%ok) raw(:, k) = [fam%ec(i)%value, fam%ef(i)%value, &
                         formal_order(c%model, keys(k), fam%on_nodes, fam%edge), floors(i), &
-                        merge(1.0_dp, 0.0_dp, fam%refined)]
+                        merge(1.0_dp, 0.0_dp, fam%refined), merge(1.0_dp, 0.0_dp, &
+                        c%summary%admissibility <= c%summary%admissibility_tol)]
                     if (fam%ok .and. trim(keys(k)) == 'shear_force_max') &
                         raw(1:2, k) = abs(raw(1:2, k))
                 end if
@@ -338,7 +340,7 @@ contains
         real(dp), allocatable, intent(out) :: eff(:)
         integer, allocatable, intent(out) :: group(:)
         character(len=200), allocatable, intent(out) :: rows(:)
-        real(dp) :: q(n_keys), est(n_keys), true_error, raw(5, n_keys)
+        real(dp) :: q(n_keys), est(n_keys), true_error, raw(6, n_keys)
         logical :: def(n_keys), sing(n_keys), has_est(n_keys), ok
         character(len=200) :: row
         integer :: i, a, g, n, k
@@ -361,9 +363,9 @@ contains
                                 interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
                                 true_error, est(k), est(k)/true_error
                             if (dumping) write (dump_unit, &
-                                '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,es12.4)') &
+                                '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,es12.4,f4.0)') &
                                 i, interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
-                                raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k)
+                                raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), raw(6, k)
                             eff = [eff, est(k)/true_error]
                             group = [group, merge(1, merge(2, 3, i <= n_held_earlier), &
                                                   i <= n_tuning)]

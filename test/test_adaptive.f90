@@ -22,7 +22,8 @@ module test_adaptive
     use discretization, only: discretization_t, new_discretization
     use contact_solver, only: solution_t
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
-    use error_estimate, only: formal_order
+    use error_estimate, only: formal_order, extent_floors
+    use summary_table, only: entry_t
     use shape_functions, only: INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck, case_model
     use analysis_driver, only: case_result_t, run_case
@@ -44,6 +45,7 @@ contains
                  new_unittest('max_elements_stops_short', test_max_elements), &
                  new_unittest('adapt_card_read', test_card), &
                  new_unittest('formal_orders', test_formal_orders), &
+                 new_unittest('extent_floors_half_element', test_extent_floors), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
     end subroutine collect_adaptive
@@ -329,6 +331,31 @@ contains
         call check(err, formal_order(m, 'settlement_max', .true.) == 4.0_dp, &
                    'P1 beam, point load on a node')
     end subroutine test_formal_orders
+
+    !> The least estimate of a contact extent (error_estimate, extent_floors) is half the
+    !! element its boundary may lie in: beyond the last node in contact, before the first,
+    !! and at an end of the base the end element (a lift-off shorter than it leaves the end
+    !! node in contact). Beam of length 1 on the nodes -0.5, -0.4, 0, 0.3, 0.5: the
+    !! elements are 0.1, 0.4, 0.3 and 0.2 long, so the floors are their halves (geometry).
+    subroutine test_extent_floors(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(mesh_t) :: msh
+        type(entry_t) :: e(4)
+        real(dp) :: floor(4)
+        m%structure%kind = MODEL_BEAM
+        m%structure%length = 1.0_dp
+        msh%ne = 4
+        allocate (msh%x(0:4))
+        msh%x(:) = [-0.5_dp, -0.4_dp, 0.0_dp, 0.3_dp, 0.5_dp]
+        e = [entry_t(key='contact_extent_right_t', value=0.5_dp, defined=.true.), &
+             entry_t(key='contact_extent_t', value=0.0_dp, defined=.true.), &
+             entry_t(key='contact_extent_left_t', value=-0.5_dp, defined=.true.), &
+             entry_t(key='contact_extent_left_t', value=0.0_dp, defined=.true.)]
+        floor = extent_floors(m, msh, e)
+        call check(err, all(abs(floor - [0.1_dp, 0.15_dp, 0.05_dp, 0.2_dp]) <= 1.0e-12_dp), &
+                   'extent floors: end element, element beyond, first element, element before')
+    end subroutine test_extent_floors
 
     !> A very soft beam (rho 1e-6, zeta 0.5, f 2, eps_bar 1e-12, nu_f 0, H = 0.3 V; the
     !! atlas's corner, doc/CHOICES.md "Very soft beams") on 20 elements: solved with the law
