@@ -37,7 +37,11 @@ program estimate_effectivity
                      LOAD_RING, complete_model
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
     use summary_table, only: entry_t
-    use solved_case, only: case_t, solve_case
+    use solved_case, only: case_t, solve_case, solve_on
+    use mesh, only: mesh_t
+    use mesh_refinement, only: coarsened, pinned_nodes
+    use applied_loads, only: load_positions
+    use discretization, only: discretization_t, discretise_mesh
     use error_estimate, only: estimate_errors, is_estimated, estimate_family, &
                               estimate_family_t, formal_order, extent_floors
     implicit none
@@ -76,7 +80,7 @@ program estimate_effectivity
         open (newunit=dump_unit, file=trim(dump_file), status='replace', action='write')
         dumping = .true.
         write (dump_unit, '(a)') '# case interp grading ne key q qc qf ref bar p_max floor '// &
-            'refined estimate friction_resolved'
+            'refined estimate friction_resolved q4'
     end if
     call start_program()
     call references(ref, bar, has_ref)
@@ -207,12 +211,14 @@ contains
         logical, intent(in) :: estimate
         real(dp), intent(out) :: q(n_keys), err_est(n_keys)
         logical, intent(out) :: defined(n_keys), singular(n_keys), has_est(n_keys), ok
-        real(dp), intent(out), optional :: raw(6, n_keys)  !! qc, qf, p_max, floor, refined,
-                                                            !! friction resolved (1) or not
+        real(dp), intent(out), optional :: raw(7, n_keys)  !! qc, qf, p_max, floor, refined,
+                                                            !! friction resolved (1) or not,
+                                                            !! q on the mesh coarsened twice
         type(case_t) :: c
         type(error_t), allocatable :: err
         type(estimate_family_t) :: fam
         real(dp), allocatable :: floors(:)
+        real(dp) :: q4(n_keys)
         integer :: i, k
         q = 0.0_dp
         err_est = 0.0_dp
@@ -224,11 +230,13 @@ contains
         if (.not. ok) return
         if (present(raw)) then
             raw = -1.0_dp
-            call estimate_family(c%model, c%d, c%summary%edge_in_contact, fam, c%sol%coarse)
+            call estimate_family(c%model, c%d, c%summary%edge_in_contact, fam, c%sol%coarse, &
+                                 solution=c%sol)
             floors = extent_floors(c%model, c%d%msh, c%entries)
+            call twice_coarsened_values(c%model, c%d%msh, q4)
         end if
         if (estimate) call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
-                                           c%summary%edge_in_contact)
+                                           c%summary%edge_in_contact, solution=c%sol)
         do i = 1, size(c%entries)
             do k = 1, n_keys
                 if (trim(c%entries(i)%key) /= trim(keys(k))) cycle
@@ -236,7 +244,7 @@ contains
                     if (fam%ok) raw(:, k) = [fam%ec(i)%value, fam%ef(i)%value, &
                         formal_order(c%model, keys(k), fam%on_nodes, fam%edge), floors(i), &
                         merge(1.0_dp, 0.0_dp, fam%refined), merge(1.0_dp, 0.0_dp, &
-                        c%summary%admissibility <= c%summary%admissibility_tol)]
+                        c%summary%admissibility <= c%summary%admissibility_tol), q4(k)]
                     if (fam%ok .and. trim(keys(k)) == 'shear_force_max') &
                         raw(1:2, k) = abs(raw(1:2, k))
                 end if
@@ -249,6 +257,36 @@ contains
             end do
         end do
     end subroutine key_values
+
+    !> The key results on the case's mesh coarsened twice (every other node removed, the ends
+    !! and the load positions kept; 0 where undefined or not solved).
+    subroutine twice_coarsened_values(m, msh, q4)
+        type(model_t), intent(in) :: m
+        type(mesh_t), intent(in) :: msh
+        real(dp), intent(out) :: q4(n_keys)
+        type(mesh_t) :: c2, c4
+        type(model_t) :: mc
+        type(discretization_t) :: d
+        type(case_t) :: c
+        type(error_t), allocatable :: err
+        logical, allocatable :: p2(:), p4(:)
+        integer :: i, k
+        q4 = 0.0_dp
+        call coarsened(msh, pinned_nodes(msh, load_positions(m%loads)), c2, p2)
+        call coarsened(c2, p2, c4, p4)
+        mc = m
+        mc%mesh%ne = c4%ne
+        call discretise_mesh(mc, c4, d)
+        call solve_on(mc, d, c, err)
+        if (allocated(err)) return
+        do i = 1, size(c%entries)
+            do k = 1, n_keys
+                if (trim(c%entries(i)%key) /= trim(keys(k))) cycle
+                q4(k) = c%entries(i)%value
+                if (trim(keys(k)) == 'shear_force_max') q4(k) = abs(q4(k))
+            end do
+        end do
+    end subroutine twice_coarsened_values
 
     !> The references of every case: read from ref_file; a case without any there is
     !! computed and appended to it (a new file gets a header line).
@@ -340,7 +378,7 @@ contains
         real(dp), allocatable, intent(out) :: eff(:)
         integer, allocatable, intent(out) :: group(:)
         character(len=200), allocatable, intent(out) :: rows(:)
-        real(dp) :: q(n_keys), est(n_keys), true_error, raw(6, n_keys)
+        real(dp) :: q(n_keys), est(n_keys), true_error, raw(7, n_keys)
         logical :: def(n_keys), sing(n_keys), has_est(n_keys), ok
         character(len=200) :: row
         integer :: i, a, g, n, k
@@ -363,9 +401,9 @@ contains
                                 interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
                                 true_error, est(k), est(k)/true_error
                             if (dumping) write (dump_unit, &
-                                '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,es12.4,f4.0)') &
+                                '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,es12.4,f4.0,es24.15)') &
                                 i, interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
-                                raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), raw(6, k)
+                                raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), raw(6:7, k)
                             eff = [eff, est(k)/true_error]
                             group = [group, merge(1, merge(2, 3, i <= n_held_earlier), &
                                                   i <= n_tuning)]

@@ -32,7 +32,7 @@ module error_estimate
     use model, only: model_t, LOAD_PATCH
     use shape_functions, only: INTERP_P1
     use mesh, only: mesh_t
-    use mesh_refinement, only: coarsened, pinned_nodes, bisected
+    use mesh_refinement, only: coarsened, pinned_nodes, bisected, same_nodes
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
@@ -78,7 +78,7 @@ contains
     !! (solution_t%coarse); one whose mesh is the coarse mesh is not solved again.
     !! edge_in_contact: an end of the base is in contact (summary_t), which limits a
     !! uniform mesh to first order (formal_order).
-    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache)
+    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution)
         type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         type(entry_t), intent(inout) :: e(:)      !! the key results, updated
@@ -87,11 +87,13 @@ contains
         !> an end of the base is in contact (default false)
         logical, intent(in), optional :: edge_in_contact
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> the case's solution on d: the refined solve's Newton start is predicted from it
+        type(solution_t), intent(in), optional :: solution
         type(estimate_family_t) :: fam
         logical :: edge
         edge = .false.
         if (present(edge_in_contact)) edge = edge_in_contact
-        call estimate_family(m, d, edge, fam, known, cache)
+        call estimate_family(m, d, edge, fam, known, cache, solution)
         if (.not. fam%ok) return
         if (fam%refined) then
             call refined_estimate(m, e, fam%ec, fam%ef, extent_floors(m, d%msh, e), &
@@ -105,7 +107,7 @@ contains
     !> The key results of the case on the meshes its estimate compares (module header): the
     !! nested coarser mesh and the bisected one (refined) or, where the bisected case does
     !! not fit in memory, the coarser meshes N_e/2 and N_e/4 (the second in fam%ef).
-    subroutine estimate_family(m, d, edge_in_contact, fam, known, cache)
+    subroutine estimate_family(m, d, edge_in_contact, fam, known, cache, solution)
         type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         logical, intent(in) :: edge_in_contact    !! an end of the base is in contact
@@ -113,7 +115,9 @@ contains
         !> the coarse solutions of the Newton start
         type(coarse_solution_t), intent(in), optional :: known(:)
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
-        type(coarse_solution_t), allocatable :: reuse(:)
+        !> the case's solution on d (the refined solve starts from it)
+        type(solution_t), intent(in), optional :: solution
+        type(coarse_solution_t), allocatable :: reuse(:), own(:)
         type(mesh_t) :: c2, c4
         logical, allocatable :: p2(:), p4(:)
         allocate (reuse(0))
@@ -127,8 +131,12 @@ contains
         fam%on_nodes = loads_on_nodes(m%loads, d%msh) .and. loads_on_nodes(m%loads, c2)
         fam%refined = refined_fits(m)
         if (fam%refined) then
+            allocate (own(0))
+            if (present(solution)) own = [coarse_solution_t(x=d%msh%x, z=solution%z, &
+                admissibility=solution%admissibility, reaction=solution%reaction, &
+                applied=solution%applied, n_solves=solution%n_solves)]
             call mesh_entries(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), reuse, fam%ef, &
-                              fam%ok, cache)
+                              fam%ok, cache, own)
             return
         end if
         fam%ok = .false.
@@ -335,13 +343,15 @@ contains
 
     !> The key results of the case on the mesh msh (ok false when the solve fails), from a
     !! known solution on that mesh if there is one.
-    subroutine mesh_entries(m, msh, known, e, ok, cache)
+    subroutine mesh_entries(m, msh, known, e, ok, cache, start)
         type(model_t), intent(in) :: m
         type(mesh_t), intent(in) :: msh
         type(coarse_solution_t), intent(in) :: known(:)
         type(entry_t), allocatable, intent(out) :: e(:)
         logical, intent(out) :: ok
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> (0 or 1) a solution on msh's nested coarser mesh, the Newton start's (solve_contact)
+        type(coarse_solution_t), intent(in), optional :: start(:)
         type(model_t) :: mc
         type(discretization_t) :: d
         type(case_t) :: c
@@ -356,26 +366,28 @@ contains
                 return
             end if
         end do
+        if (present(start)) then
+            if (size(start) == 1) then
+                call coarse_case(mc, d, c, ok, cache=cache, start=start(1))
+                if (ok) e = c%entries
+                return
+            end if
+        end if
         call coarse_case(mc, d, c, ok, cache=cache)
         if (ok) e = c%entries
     end subroutine mesh_entries
 
-    !> Whether two meshes have the same nodes (to 1e-12 of the length).
-    pure logical function same_nodes(x1, x2)
-        real(dp), intent(in) :: x1(:), x2(:)
-        same_nodes = size(x1) == size(x2)
-        if (same_nodes) same_nodes = all(abs(x1 - x2) <= 1.0e-12_dp*(x2(size(x2)) - x2(1)))
-    end function same_nodes
-
     !> The case solved on the discretisation d, or finished from a known solution on d; ok
     !! false when the solve fails.
-    subroutine coarse_case(m, d, c, ok, known, cache)
+    subroutine coarse_case(m, d, c, ok, known, cache, start)
         type(model_t), intent(in) :: m                 !! the model
         type(discretization_t), intent(in) :: d        !! a coarser mesh of it
         type(case_t), intent(out) :: c                 !! the case on d
         logical, intent(out) :: ok                     !! solved and tabulated
         type(coarse_solution_t), intent(in), optional :: known   !! the solution on d
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> a solution on d's nested coarser mesh, for the Newton start (solve_contact)
+        type(coarse_solution_t), intent(in), optional :: start
         type(solution_t) :: sol
         type(error_t), allocatable :: err
         if (present(known)) then
@@ -386,7 +398,7 @@ contains
             sol%n_solves = known%n_solves
             call finish_case(m, d, sol, c, err)
         else
-            call solve_on(m, d, c, err, cache=cache)
+            call solve_on(m, d, c, err, cache=cache, start=start)
         end if
         ok = .not. allocated(err)
     end subroutine coarse_case
