@@ -362,7 +362,8 @@ contains
     !! start: the nested coarser mesh of the bisected mesh is the case's mesh). Its answer
     !! is the same solution: compared with the same mesh solved from its own nested start (an
     !! independent run of the Newton method), to 1e-7 of max |z| (the Newton tolerance's
-    !! order); no nested solve made (the start was used), one made without it.
+    !! order); no nested solve made (the start was used), one made without it. The same
+    !! from a start on a mesh that is not the nested one.
     subroutine test_known_start(err)
         type(error_t), allocatable, intent(out) :: err
         type(model_t) :: m
@@ -392,6 +393,19 @@ contains
         call check(err, maxval(abs(started%z - plain%z)) <= 1.0e-7_dp*maxval(abs(plain%z)) &
                    .and. started%n_nested_solves == 0 .and. plain%n_nested_solves > 0, &
                    'the started solve differs, or its start was not used')
+        if (allocated(err)) return
+        ! a start on a mesh that is not the nested one (30 uniform elements, as an
+        ! adaptation's previous cycle): the same solution again
+        m%mesh%ne = 30
+        call new_discretization(m, d, run_err)
+        if (.not. allocated(run_err)) call solve_contact(m, d, sol, run_err)
+        if (.not. allocated(run_err)) call solve_contact(m, d_fine, started, run_err, &
+            start=coarse_solution_t(x=d%msh%x, z=sol%z))
+        call check(err, .not. allocated(run_err), 'not solved from a 30-element start')
+        if (allocated(err)) return
+        call check(err, maxval(abs(started%z - plain%z)) <= 1.0e-7_dp*maxval(abs(plain%z)) &
+                   .and. started%n_nested_solves == 0, &
+                   'the solve started on another mesh differs, or its start was not used')
     end subroutine test_known_start
 
     !> A very soft beam (rho 1e-6, zeta 0.5, f 2, eps_bar 1e-12, nu_f 0, H = 0.3 V; the

@@ -66,12 +66,13 @@ contains
         !> T of d when it is known (the restriction of a finer mesh's): moved in
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
-        !> a solution known on d's nested coarser mesh (a case's own, d being its mesh with
-        !! every element cut in two): the nested start predicts from it instead of solving
-        !! that mesh again (ignored when its nodes are not that mesh's)
+        !> a solution known on a coarser mesh of the same base (a case's own, d being its
+        !! mesh with every element cut in two; an adaptation's previous cycle): where d gets
+        !! a nested start, it is predicted from this solution instead of solving the nested
+        !! coarser mesh
         type(coarse_solution_t), intent(in), optional :: start
         type(system_t) :: sys
-        type(discretization_t) :: dc
+        type(discretization_t) :: dc, ds
         real(dp), allocatable :: sigma_start(:, :), t_c(:, :)
         real(dp) :: t0
         logical :: nest, known
@@ -82,8 +83,7 @@ contains
         if (allocated(err)) return
         sol%pts = contact_points(m%structure, d)
         nest = nested_discretisation(m, d, dc)
-        known = .false.
-        if (nest .and. present(start)) known = same_nodes(start%x, dc%msh%x)
+        known = nest .and. present(start)
         t0 = wall_seconds()
         if (nest .and. .not. known) then
             call build_system(m, d, sol%pts, sys, err, t_given, dc, t_c, cache=cache)
@@ -96,7 +96,9 @@ contains
         t0 = wall_seconds()
         if (known) then
             sol%coarse = [start]
-            call predicted_tractions(dc, start%z, sol%pts, sigma_start)
+            ds = dc
+            if (.not. same_nodes(start%x, dc%msh%x)) call discretise_nodes(m, start%x, ds)
+            call predicted_tractions(ds, start%z, sol%pts, sigma_start)
         else if (nest) then
             call nested_prediction(m, dc, t_c, sol, sigma_start)
         end if
@@ -209,6 +211,18 @@ contains
                                         n_solves=sol_c%n_solves), sol_c%coarse]
         call predicted_tractions(dc, sol_c%z, sol%pts, sigma)
     end subroutine nested_prediction
+
+    !> The model discretised on the mesh whose nodes are x (x(1) the first).
+    subroutine discretise_nodes(m, x, d)
+        type(model_t), intent(in) :: m              !! the model
+        real(dp), intent(in) :: x(:)                !! the nodes [L]
+        type(discretization_t), intent(out) :: d    !! the discretisation
+        type(mesh_t) :: msh
+        msh%ne = size(x) - 1
+        allocate (msh%x(0:msh%ne))
+        msh%x(:) = x
+        call discretise_mesh(m, msh, d)
+    end subroutine discretise_nodes
 
     !> The tractions (sigma_x, sigma_z) of the solution z on the coarser discretisation dc
     !! at the contact points pts of a finer mesh.

@@ -37,7 +37,8 @@ module adaptive_solve
                                nearest_node
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
-    use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
+    use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK, &
+                              coarse_solution_t
     use station_results, only: station_table_t
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
     use design_summary, only: summary_t
@@ -121,7 +122,12 @@ contains
         ne_estimated = 0
         last_estimate = huge(1.0_dp)
         cycles: do k = 1, max_cycles
-            call solve_contact(m, d_try, sol_try, err_try, cache=cache)
+            if (k == 1) then
+                call solve_contact(m, d_try, sol_try, err_try, cache=cache)
+            else   ! the Newton start predicted from the last mesh's solution
+                call solve_contact(m, d_try, sol_try, err_try, cache=cache, &
+                                   start=coarse_solution_t(x=d%msh%x, z=sol%z))
+            end if
             if (allocated(err_try) .and. k == 1) then
                 call move_alloc(err_try, err)
                 return
@@ -262,7 +268,7 @@ contains
             a%rel = prev%rel                        ! the same keys, in the same order
             a%estimate = huge(1.0_dp)
         else
-            call coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
+            call coarse_estimates(m, d, sol, a, e2, e4, tab2, ok, cache)
             if (ok) a%eta = indicators(m%structure, d, s, tab_nodes, tab2)
             a%rel = relative_errors(a%e)
             a%estimate = huge(1.0_dp)
@@ -276,10 +282,12 @@ contains
     end subroutine assess
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
-    !! made or solved); tab2: the first coarse solution at its nodes.
-    subroutine coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
+    !! made or solved); tab2: the first coarse solution at its nodes. The coarse solves
+    !! start from sol (solve_contact, start) instead of their own nested coarser meshes.
+    subroutine coarse_estimates(m, d, sol, a, e2, e4, tab2, ok, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol          !! the solution on d
         type(assessment_t), intent(inout) :: a
         type(entry_t), allocatable, intent(out) :: e2(:), e4(:)
         type(station_table_t), intent(out) :: tab2
@@ -296,8 +304,10 @@ contains
         if (c4%ne < min_coarse .or. c2%ne >= d%msh%ne .or. c4%ne >= c2%ne) return
         call discretise_mesh(m, c2, d2)
         call discretise_mesh(m, c4, d4)
-        call coarse_case(m, d2, c2_case, ok, cache=cache)
-        if (ok) call coarse_case(m, d4, c4_case, ok, cache=cache)
+        call coarse_case(m, d2, c2_case, ok, cache=cache, &
+                         start=coarse_solution_t(x=d%msh%x, z=sol%z))
+        if (ok) call coarse_case(m, d4, c4_case, ok, cache=cache, &
+                                 start=coarse_solution_t(x=d%msh%x, z=sol%z))
         if (.not. ok) return
         e2 = c2_case%entries
         e4 = c4_case%entries
