@@ -23,7 +23,8 @@
 !!     are bisected and neighbours kept within a size ratio of 2 (a geometric grading
 !!     towards singular ends and boundaries).
 !!
-!! It stops at the tolerance, or when the next mesh would exceed max_elements (the report
+!! It stops at the tolerance, or when the next mesh would exceed max_elements, or would have
+!! to stay below it with fewer than a tenth more elements than the last (the report
 !! then says the tolerance was not reached, with the estimate: a warning, status 0, since the
 !! result and its error estimate are valid), or when a refined solve fails: the result is
 !! then that of the last mesh solved, and the report says so. Refining never turns a solved
@@ -91,6 +92,9 @@ module adaptive_solve
     !> at least this fraction of the elements (the largest indicators) is cut in each
     !! cycle, so that the mesh grows geometrically and the cycles stay few
     real(dp), parameter :: min_fraction = 0.4_dp
+    !> a cycle whose marks max_elements cuts to fewer than this fraction of the elements is
+    !! not made (the adaptation stops: max_elements reached)
+    real(dp), parameter :: min_growth = 0.1_dp
 
     public :: solve_adaptive, relative_errors
 
@@ -571,14 +575,19 @@ contains
         type(mesh_t), intent(out) :: next
         logical, intent(out) :: short        !! max_elements left no room for the marks
         logical, allocatable :: marked(:), pinned(:)
-        integer :: k, node, budget
+        integer :: k, node, budget, wanted
         next = d%msh
         budget = m%mesh%adapt_max_ne - d%msh%ne
         short = .true.
         if (budget <= 0) return
         marked = element_marks(d, a)
         short = .not. any(marked)
+        wanted = count(marked)
         call fit_budget(d%msh, a%eta, budget, marked)
+        ! a cycle cut short by max_elements to a few new elements costs a whole solve for
+        ! little: the adaptation stops instead
+        if (count(marked) < wanted .and. count(marked) < ceiling(min_growth*d%msh%ne)) &
+            marked = .false.
         short = .not. (short .or. any(marked))
         if (.not. any(marked)) return
         allocate (pinned(0:next%ne))     ! node numbers from 0, as the mesh's
