@@ -1,9 +1,9 @@
-!> What the error estimate costs: per case and N_e, the in-process time of the case (solve_case:
+!> What the error estimate costs: per case and N_e, the time of the case (solve_case:
 !! discretise, solve, tabulate, summarise) and of its error estimate (error_estimate::
 !! estimate_errors with the case's nested-start solutions and its solution, as the program
 !! calls it), as processor time (the machine is shared: wall time varied by a factor 2
-!! between runs), the least of five repetitions each, and their ratio. The cases are bench_phases' (a plate
-!! and a beam under a central point load, lift-off and slip).
+!! between runs), the least of five repetitions each, and their ratio. The cases are
+!! bench_phases' (a plate and a beam under a central point load, lift-off and slip).
 !!
 !! Usage: OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 fpm run --profile release --example
 !!        bench_estimate_cost [-- OUT.md]     (default output/bench/estimate_cost.md)
@@ -26,8 +26,8 @@ program bench_estimate_cost
     open (newunit=u, file=trim(out_file), status='replace', action='write')
     write (u, '(a)') '# What the error estimate costs (example/bench_estimate_cost.f90)'
     write (u, '(a)') ''
-    write (u, '(a)') 'Processor time, least of 5 repetitions, one thread; case = solve_case (discretise, solve, '// &
-        'tabulate, summarise), estimate = error_estimate::estimate_errors.'
+    write (u, '(a)') 'Processor time, least of 5 repetitions, one thread; case = solve_case '// &
+        '(discretise, solve, tabulate, summarise), estimate = error_estimate::estimate_errors.'
     write (u, '(a)') ''
     write (u, '(a)') '| case | N_e | case s | estimate s | estimate / case |'
     write (u, '(a)') '|---|---:|---:|---:|---:|'

@@ -25,10 +25,11 @@
 !! Usage: fpm run --profile release --example estimate_effectivity -- OUT.md [LABEL [RAW]]
 !! RAW: a file for one line per result with the values the estimate is made from (the key on
 !! the case's mesh, on the nested coarser and on the bisected mesh), its reference and bar,
-!! the order cap (formal_order), the floor and the estimate, for studying estimate formulas.
+!! the order cap (formal_order), the floor, the estimate, whether the friction is resolved
+!! pointwise and the key on the mesh coarsened twice, for studying estimate formulas.
 !! The references are read from output/bench/estimate_references.txt if it exists (they do
-!! not depend on the estimator), else computed (about 30 s) and written there. The whole
-!! study with stored references takes about 5 s on one core.
+!! not depend on the estimator); a case without any is computed (about 3 s a case) and
+!! appended. The whole study with stored references takes about 10 s on one core.
 program estimate_effectivity
     use kinds, only: dp
     use errors, only: error_t

@@ -265,7 +265,8 @@ contains
                 unc(i), '  ('//source(i)//')'
         end do
         call write_costs(u, plate, rows, unknowns, seconds, errors, ok)
-        write (u, '(a)') '# errors relative to the reference (extent: absolute, t); time: discretise + solve, processor time [s]'
+        write (u, '(a)') '# errors relative to the reference (extent: absolute, t); '// &
+            'time: discretise + solve, processor time [s]'
         write (u, '(a)') '# disc              N_e  unknowns   time_s      err_W0      err_Sz0     '// &
             'err_Szmax   err_Mmax    err_extent'
         do k = 1, n_disc
