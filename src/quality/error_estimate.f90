@@ -19,7 +19,8 @@
 !! the coarse meshes of N_e = 20 to 80 are short of the asymptotic range and gave estimates
 !! from 0.3 to 50 times the error (10th to 90th percentile).
 !!
-!! The refined solve costs about 8 dense solves of the case (4 times the T assembly). Where
+!! The refined solve starts its Newton method from the case's solution (solve_contact,
+!! start) and costs 2 to 4 times the case (output/bench/estimate_cost.md). Where
 !! the refined case would not fit in memory (resource_limits), the estimate falls back to the
 !! coarse family alone: N_e/2 and N_e/4 (every other node removed, twice) with Roache's grid
 !! convergence index, E = 1.25 |Q_2 - Q_1| / (2^p - 1), p observed and capped by
