@@ -345,7 +345,7 @@ contains
         e = summary_entries(m, s, contact_extent(design, m%structure%length))
         t_summary = now() - t0
         t0 = now()
-        call estimate_errors(m, d, e, sol%coarse, s%edge_in_contact)
+        call estimate_errors(m, d, e, sol%coarse, s%edge_in_contact, solution=sol)
         t_estimate = now() - t0
     end subroutine time_results
 

@@ -23,7 +23,7 @@
 # time (-j 1) and one BLAS thread, so that the console lines come in one order; --progress so
 # that the progress lines are compared too. Compared for each case: the exit status (must be
 # equal; non-zero in both is counted), standard output, standard error and every file of OUT
-# (report .txt, .dat, .csv, .json, .gp, the sweep summary and overlay; a file present in one
+# (report .txt, .dat, .csv, .json, .gp, .html, the sweep summary and overlay; a file present in one
 # folder only is a difference).
 #
 # Filter (applied to every compared file): only the progress lines of standard error carry

@@ -16,13 +16,14 @@
 module test_adaptive
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT
+    use model, only: model_t, load_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, complete_model
     use mesh, only: mesh_t, new_mesh
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes
-    use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t
+    use discretization, only: discretization_t, new_discretization, discretise_mesh
+    use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
-    use error_estimate, only: formal_order
+    use error_estimate, only: formal_order, extent_floors
+    use summary_table, only: entry_t
     use shape_functions, only: INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck, case_model
     use analysis_driver, only: case_result_t, run_case
@@ -44,6 +45,8 @@ contains
                  new_unittest('max_elements_stops_short', test_max_elements), &
                  new_unittest('adapt_card_read', test_card), &
                  new_unittest('formal_orders', test_formal_orders), &
+                 new_unittest('extent_floors_half_element', test_extent_floors), &
+                 new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
     end subroutine collect_adaptive
@@ -329,6 +332,81 @@ contains
         call check(err, formal_order(m, 'settlement_max', .true.) == 4.0_dp, &
                    'P1 beam, point load on a node')
     end subroutine test_formal_orders
+
+    !> The least estimate of a contact extent (error_estimate, extent_floors) is half the
+    !! element its boundary may lie in: beyond the last node in contact, before the first,
+    !! and at an end of the base the end element (a lift-off shorter than it leaves the end
+    !! node in contact). Beam of length 1 on the nodes -0.5, -0.4, 0, 0.3, 0.5: the
+    !! elements are 0.1, 0.4, 0.3 and 0.2 long, so the floors are their halves (geometry).
+    subroutine test_extent_floors(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(mesh_t) :: msh
+        type(entry_t) :: e(4)
+        real(dp) :: floor(4)
+        m%structure%kind = MODEL_BEAM
+        m%structure%length = 1.0_dp
+        msh%ne = 4
+        allocate (msh%x(0:4))
+        msh%x(:) = [-0.5_dp, -0.4_dp, 0.0_dp, 0.3_dp, 0.5_dp]
+        e = [entry_t(key='contact_extent_right_t', value=0.5_dp, defined=.true.), &
+             entry_t(key='contact_extent_t', value=0.0_dp, defined=.true.), &
+             entry_t(key='contact_extent_left_t', value=-0.5_dp, defined=.true.), &
+             entry_t(key='contact_extent_left_t', value=0.0_dp, defined=.true.)]
+        floor = extent_floors(m, msh, e)
+        call check(err, all(abs(floor - [0.1_dp, 0.15_dp, 0.05_dp, 0.2_dp]) <= 1.0e-12_dp), &
+                   'extent floors: end element, element beyond, first element, element before')
+    end subroutine test_extent_floors
+
+    !> The refined solve of an estimate may start from the case's own solution (solve_contact,
+    !! start: the nested coarser mesh of the bisected mesh is the case's mesh). Its answer
+    !! is the same solution: compared with the same mesh solved from its own nested start (an
+    !! independent run of the Newton method), to 1e-7 of max |z| (the Newton tolerance's
+    !! order); no nested solve made (the start was used), one made without it. The same
+    !! from a start on a mesh that is not the nested one.
+    subroutine test_known_start(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(discretization_t) :: d, d_fine
+        type(solution_t) :: sol, plain, started
+        type(error_t), allocatable :: run_err
+        m%nondim = .true.
+        m%structure%kind = MODEL_BEAM
+        m%groups%rho = 2.5e-3_dp
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = 0.05_dp
+        m%interface%f = 0.6_dp
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=0.1_dp, x1=0.0_dp)]
+        m%mesh%ne = 40
+        call complete_model(m)
+        call new_discretization(m, d, run_err)
+        if (.not. allocated(run_err)) call solve_contact(m, d, sol, run_err)
+        call check(err, .not. allocated(run_err), 'the case on 40 elements was not solved')
+        if (allocated(err)) return
+        m%mesh%ne = 80
+        call discretise_mesh(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), d_fine)
+        call solve_contact(m, d_fine, plain, run_err)
+        if (.not. allocated(run_err)) call solve_contact(m, d_fine, started, run_err, &
+            start=coarse_solution_t(x=d%msh%x, z=sol%z))
+        call check(err, .not. allocated(run_err), 'the bisected mesh was not solved')
+        if (allocated(err)) return
+        call check(err, maxval(abs(started%z - plain%z)) <= 1.0e-7_dp*maxval(abs(plain%z)) &
+                   .and. started%n_nested_solves == 0 .and. plain%n_nested_solves > 0, &
+                   'the started solve differs, or its start was not used')
+        if (allocated(err)) return
+        ! a start on a mesh that is not the nested one (30 uniform elements, as an
+        ! adaptation's previous cycle): the same solution again
+        m%mesh%ne = 30
+        call new_discretization(m, d, run_err)
+        if (.not. allocated(run_err)) call solve_contact(m, d, sol, run_err)
+        if (.not. allocated(run_err)) call solve_contact(m, d_fine, started, run_err, &
+            start=coarse_solution_t(x=d%msh%x, z=sol%z))
+        call check(err, .not. allocated(run_err), 'not solved from a 30-element start')
+        if (allocated(err)) return
+        call check(err, maxval(abs(started%z - plain%z)) <= 1.0e-7_dp*maxval(abs(plain%z)) &
+                   .and. started%n_nested_solves == 0, &
+                   'the solve started on another mesh differs, or its start was not used')
+    end subroutine test_known_start
 
     !> A very soft beam (rho 1e-6, zeta 0.5, f 2, eps_bar 1e-12, nu_f 0, H = 0.3 V; the
     !! atlas's corner, doc/CHOICES.md "Very soft beams") on 20 elements: solved with the law

@@ -29,7 +29,7 @@ module contact_solver
     use discretization, only: discretization_t, discretise_mesh, &
                               locate_element
     use mesh, only: mesh_t
-    use mesh_refinement, only: coarsened, pinned_nodes
+    use mesh_refinement, only: coarsened, pinned_nodes, same_nodes
     use mindlin_structure, only: traction_at
     use contact_system, only: contact_points_t, iteration_record_t, solution_t, system_t, &
                               coarse_solution_t, &
@@ -57,7 +57,7 @@ module contact_solver
 contains
 
     !> Solve one case. Fails with EXIT_ANALYSIS when there is no equilibrium or no convergence.
-    recursive subroutine solve_contact(m, d, sol, err, progress_unit, t_given, cache)
+    recursive subroutine solve_contact(m, d, sol, err, progress_unit, t_given, cache, start)
         type(model_t), intent(in) :: m                   !! the model
         type(discretization_t), intent(in) :: d          !! the discretisation
         type(solution_t), intent(out) :: sol             !! the solution
@@ -66,11 +66,16 @@ contains
         !> T of d when it is known (the restriction of a finer mesh's): moved in
         real(dp), allocatable, intent(inout), optional :: t_given(:, :)
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> a solution known on a coarser mesh of the same base (a case's own, d being its
+        !! mesh with every element cut in two; an adaptation's previous cycle): where d gets
+        !! a nested start, it is predicted from this solution instead of solving the nested
+        !! coarser mesh
+        type(coarse_solution_t), intent(in), optional :: start
         type(system_t) :: sys
-        type(discretization_t) :: dc
+        type(discretization_t) :: dc, ds
         real(dp), allocatable :: sigma_start(:, :), t_c(:, :)
         real(dp) :: t0
-        logical :: nest
+        logical :: nest, known
 
         allocate (sol%history(0))
         if (present(progress_unit)) sol%progress_unit = progress_unit
@@ -78,8 +83,9 @@ contains
         if (allocated(err)) return
         sol%pts = contact_points(m%structure, d)
         nest = nested_discretisation(m, d, dc)
+        known = nest .and. present(start)
         t0 = wall_seconds()
-        if (nest) then
+        if (nest .and. .not. known) then
             call build_system(m, d, sol%pts, sys, err, t_given, dc, t_c, cache=cache)
         else
             call build_system(m, d, sol%pts, sys, err, t_given, cache=cache)
@@ -88,7 +94,14 @@ contains
         sol%seconds(2) = wall_seconds() - t0 - sys%t_seconds
         if (allocated(err)) return
         t0 = wall_seconds()
-        if (nest) call nested_prediction(m, dc, t_c, sol, sigma_start)
+        if (known) then
+            sol%coarse = [start]
+            ds = dc
+            if (.not. same_nodes(start%x, dc%msh%x)) call discretise_nodes(m, start%x, ds)
+            call predicted_tractions(ds, start%z, sol%pts, sigma_start)
+        else if (nest) then
+            call nested_prediction(m, dc, t_c, sol, sigma_start)
+        end if
         sol%seconds(3) = wall_seconds() - t0
         allocate (sol%z(d%n), sol%state(sol%pts%n), sol%sigma(2, sol%pts%n))
         allocate (sol%slip(sol%pts%n), sol%tension(sol%pts%n))
@@ -189,8 +202,6 @@ contains
         real(dp), allocatable, intent(out) :: sigma(:, :)
         type(solution_t) :: sol_c
         type(error_t), allocatable :: err_c
-        integer :: p, e
-        real(dp) :: xi
         call solve_contact(m, dc, sol_c, err_c, t_given=t_c)
         sol%n_nested_solves = sol_c%n_solves + sol_c%n_nested_solves
         if (allocated(err_c)) return
@@ -198,12 +209,36 @@ contains
         sol%coarse = [coarse_solution_t(x=dc%msh%x, z=sol_c%z, admissibility=sol_c%admissibility, &
                                         reaction=sol_c%reaction, applied=sol_c%applied, &
                                         n_solves=sol_c%n_solves), sol_c%coarse]
-        allocate (sigma(2, sol%pts%n))
-        do p = 1, sol%pts%n
-            call locate_element(dc%msh, sol%pts%x(p), e, xi)
-            sigma(:, p) = traction_at(dc, sol_c%z(dc%nv + 1:), e, xi)
-        end do
+        call predicted_tractions(dc, sol_c%z, sol%pts, sigma)
     end subroutine nested_prediction
+
+    !> The model discretised on the mesh whose nodes are x (x(1) the first).
+    subroutine discretise_nodes(m, x, d)
+        type(model_t), intent(in) :: m              !! the model
+        real(dp), intent(in) :: x(:)                !! the nodes [L]
+        type(discretization_t), intent(out) :: d    !! the discretisation
+        type(mesh_t) :: msh
+        msh%ne = size(x) - 1
+        allocate (msh%x(0:msh%ne))
+        msh%x(:) = x
+        call discretise_mesh(m, msh, d)
+    end subroutine discretise_nodes
+
+    !> The tractions (sigma_x, sigma_z) of the solution z on the coarser discretisation dc
+    !! at the contact points pts of a finer mesh.
+    pure subroutine predicted_tractions(dc, z, pts, sigma)
+        type(discretization_t), intent(in) :: dc          !! the coarser discretisation
+        real(dp), intent(in) :: z(:)                      !! its solution [v; r]
+        type(contact_points_t), intent(in) :: pts         !! the finer mesh's contact points
+        real(dp), allocatable, intent(out) :: sigma(:, :) !! (2, pts%n) the tractions there
+        integer :: p, e
+        real(dp) :: xi
+        allocate (sigma(2, pts%n))
+        do p = 1, pts%n
+            call locate_element(dc%msh, pts%x(p), e, xi)
+            sigma(:, p) = traction_at(dc, z(dc%nv + 1:), e, xi)
+        end do
+    end subroutine predicted_tractions
 
     !> Tractions, threshold tau0 = f max(sigma_z, 0), sets and states of the complete problem.
     subroutine classify_complete(interface, sol)

@@ -28,6 +28,7 @@ module analysis_driver
     !> How a run behaves (command-line options).
     type, public :: run_options_t
         logical :: figures = .true.     !! run gnuplot (the .gp is always written)
+        logical :: record = .true.      !! write each case's HTML record (--no-html: not)
         logical :: progress = .false.   !! progress on the error unit: case i of n, time left
         integer :: threads = 0          !! cases solved at once (0: all cores)
         logical :: estimates = .true.   !! error estimates (two coarser solves per case)
@@ -124,7 +125,7 @@ contains
             call run_case(deck, cases(i), trim(labels(i)), out_dir, &
                             case_name(deck%stem, i, n, tags), &
                             opt%figures, opt%estimates, big_case_unit, results(i), cache, &
-                            renderers(thread))
+                            renderers(thread), opt%record)
             !$omp critical (fricon_progress)
             done = done + 1
             if (opt%progress) call report_progress(err_unit, done, count(selected), &
@@ -232,7 +233,7 @@ contains
     !! (case_files: the writing one case at a time, the figure drawn by the thread's own
     !! gnuplot in parallel).
     subroutine run_case(deck, m, label, out_dir, name, figures, estimates, progress_unit, &
-                        result, cache, renderer)
+                        result, cache, renderer, record)
         type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
         type(model_t), intent(in) :: m               !! the case's model
         character(len=*), intent(in) :: label        !! 'case i of n: swept values'
@@ -244,6 +245,7 @@ contains
         type(case_result_t), intent(out) :: result   !! status, key results, warnings
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         type(renderer_t), intent(inout), optional :: renderer  !! the thread's gnuplot
+        logical, intent(in), optional :: record      !! write the HTML record (default yes)
         type(case_t) :: c
         character(len=warning_length), allocatable :: warnings(:)
         type(error_t), allocatable :: err
@@ -268,7 +270,7 @@ contains
             result%checks = evaluate_design_checks(c%model, c%summary)
             result%mean_pressure = c%summary%mean_pressure
         end if
-        call write_case_files(deck, c, out_dir//'/'//name, figures, result, renderer)
+        call write_case_files(deck, c, out_dir//'/'//name, figures, result, renderer, record)
     end subroutine run_case
 
 end module analysis_driver

@@ -57,6 +57,8 @@ contains
                 if (allocated(err)) return
             case ('--no-figures')
                 cmd%options%figures = .false.
+            case ('--no-html')
+                cmd%options%record = .false.
             case ('--no-estimates')
                 cmd%options%estimates = .false.
             case ('--full-model')
@@ -157,6 +159,7 @@ contains
             'folder,', &
             '                    output/SUB for a deck in input/SUB/)', &
             '      --no-figures  write each figure script (.gp) but do not run gnuplot', &
+            '      --no-html     no calculation record (CASE.html) per case', &
             '      --no-estimates  no error estimates (they re-solve each case on 2 N_e and N_e/2)', &
             '      --full-model  no simplifications (half beam, no sigma_x at f = 0, settled '// &
             'lift-off', &
@@ -172,8 +175,9 @@ contains
             '  -h, --help        this text', &
             '  -V, --version     the version', &
             '', &
-            'Each case writes CASE.txt (report), .dat, .csv, .json, .gp and .png; README.md and', &
-            'doc/OUTPUT.md describe the decks and the outputs.', &
+            'Each case writes CASE.txt (report), .dat, .csv, .json, .gp, .png and .html (the', &
+            'printable calculation record); README.md and doc/OUTPUT.md describe the decks and', &
+            'the outputs.', &
             'Exit status: the worst of the decks: 0 solved, 1 input or file error, 2 analysis '// &
             'failed, 3 internal error.']
     end function usage_lines

@@ -14,7 +14,8 @@ module mesh_refinement
     implicit none
     private
 
-    public :: bisected, balance_marks, snap_node, coarsened, pinned_nodes, nearest_node
+    public :: bisected, balance_marks, snap_node, coarsened, pinned_nodes, nearest_node, &
+              same_nodes
 
     real(dp), parameter :: max_ratio = 2.0_dp   !! largest size ratio of neighbouring elements
 
@@ -148,4 +149,13 @@ contains
             pinned_out(k) = pinned(i)
         end do
     end subroutine coarsened
+
+    !> Whether two meshes have the same nodes (to 1e-12 of the second one's length).
+    pure logical function same_nodes(x1, x2)
+        real(dp), intent(in) :: x1(:)   !! the nodes of one mesh [L]
+        real(dp), intent(in) :: x2(:)   !! the nodes of the other [L]
+        same_nodes = size(x1) == size(x2)
+        if (same_nodes) same_nodes = all(abs(x1 - x2) <= 1.0e-12_dp*(x2(size(x2)) - x2(1)))
+    end function same_nodes
+
 end module mesh_refinement

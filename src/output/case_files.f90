@@ -14,6 +14,7 @@ module case_files
                              write_plot_script, write_report
     use output_paths, only: remove_output, canonical_path, deck_identity
     use spring_file, only: has_springs, write_springs_csv
+    use html_record, only: write_case_record
     use temporary_cleanup, only: register_temporary, release_temporary
     use file_system, only: move_file, delete_file
     use figure_renderer, only: renderer_t, draw_figure, stop_renderer, FIGURE_DRAWN, &
@@ -51,17 +52,21 @@ contains
     !! internal write that runs while another thread opens or closes a file can come out
     !! garbled, doc/CHOICES.md), and only gnuplot's drawing, a child process fed through C,
     !! runs in parallel.
-    subroutine write_case_files(deck, c, base, figures, result, renderer)
+    subroutine write_case_files(deck, c, base, figures, result, renderer, record)
         type(deck_t), intent(in) :: deck             !! the deck (echoed in the report)
         type(case_t), intent(in) :: c                !! the case, solved or failed
         character(len=*), intent(in) :: base         !! output path without extension
         logical, intent(in) :: figures               !! run gnuplot on the written .gp
         type(case_result_t), intent(inout) :: result !! status and message on return
         type(renderer_t), intent(inout), optional :: renderer  !! the thread's gnuplot
+        logical, intent(in), optional :: record      !! write the HTML record (default yes)
         character(len=:), allocatable :: note
-        logical :: written, drawn_next
+        logical :: written, drawn_next, html
+        html = .true.
+        if (present(record)) html = record
         !$omp critical (fricon_output)
         call remove_temporaries(base)
+        if (.not. html) call remove_output(base//'.html')
         if (result%status /= EXIT_OK) then
             call write_failed_case(deck, c, base, result)
             written = .false.
@@ -71,14 +76,37 @@ contains
         ! without a figure the report follows at once (one pass through the section)
         drawn_next = written .and. figures
         if (written .and. .not. figures) call write_case_report(deck, c, base, '', result)
+        if (written .and. .not. figures .and. html) call write_record(deck, c, base, &
+            'the run was asked for no figures (--no-figures)', '', result)
         !$omp end critical (fricon_output)
         if (.not. drawn_next) return
         call render_png(base, note, renderer)
         result%message = note
         !$omp critical (fricon_output)
         call write_case_report(deck, c, base, note, result)
+        if (html) call write_record(deck, c, base, note, note, result)
         !$omp end critical (fricon_output)
     end subroutine write_case_files
+
+    !> A solved case's calculation record (html_record), written after its report and
+    !! figure; if it cannot be written, no file of the case is left.
+    subroutine write_record(deck, c, base, figure_note, note, result)
+        type(deck_t), intent(in) :: deck             !! the deck (its name and lines)
+        type(case_t), intent(in) :: c                !! the solved case
+        character(len=*), intent(in) :: base         !! output path without extension
+        character(len=*), intent(in) :: figure_note  !! why there is no figure ('': drawn)
+        character(len=*), intent(in) :: note         !! the report's note on the figure, or ''
+        type(case_result_t), intent(inout) :: result !! status and message on failure
+        type(error_t), allocatable :: err
+        if (result%status /= EXIT_OK) return
+        call write_case_record(deck, c, base, result%label, result%entries, figure_note, &
+                               report_notes(result%warnings, note), err)
+        if (allocated(err)) then
+            call remove_case_files(base)
+            result%status = err%code
+            result%message = err%message
+        end if
+    end subroutine write_record
 
     !> A failed case: its report (ANALYSIS FAILED) and JSON; no data file or figure of an
     !! earlier run of the case is left beside them.
@@ -181,8 +209,8 @@ contains
     !! ANALYSIS FAILED report.
     subroutine remove_stale(base)
         character(len=*), intent(in) :: base
-        character(len=*), parameter :: ext(6) = ['.dat        ', '.csv        ', &
-            '.gp         ', '.png        ', '.txt        ', '_springs.csv']
+        character(len=*), parameter :: ext(7) = ['.dat        ', '.csv        ', &
+            '.gp         ', '.png        ', '.txt        ', '_springs.csv', '.html       ']
         call remove_files(base, ext)
     end subroutine remove_stale
 
@@ -207,9 +235,9 @@ contains
     !! (NAME.ext.tmp): removed before the case writes, so none is ever taken for a result.
     subroutine remove_temporaries(base)
         character(len=*), intent(in) :: base
-        character(len=*), parameter :: ext(7) = ['.dat.tmp        ', '.csv.tmp        ', &
+        character(len=*), parameter :: ext(8) = ['.dat.tmp        ', '.csv.tmp        ', &
             '.gp.tmp         ', '.png.tmp        ', '.txt.tmp        ', '.json.tmp       ', &
-            '_springs.csv.tmp']
+            '_springs.csv.tmp', '.html.tmp       ']
         call remove_files(base, ext)
     end subroutine remove_temporaries
 

@@ -13,10 +13,11 @@ module output_paths
 
     integer, parameter :: path_max = 4096
 
-    !> The endings fricon writes (a case: NAME.ext and NAME_springs.csv; a sweep also
+    !> The endings fricon writes (a case: NAME.ext, NAME_springs.csv and NAME.html; a sweep also
     !! STEM_summary.csv, STEM_sweep.gp, .png and STEM_response.gp, .png).
-    character(len=*), parameter :: output_extensions(7) = ['.txt        ', '.dat        ', &
-        '.csv        ', '.json       ', '.gp         ', '.png        ', '_springs.csv']
+    character(len=*), parameter :: output_extensions(8) = ['.txt        ', '.dat        ', &
+        '.csv        ', '.json       ', '.gp         ', '.png        ', '_springs.csv', &
+        '.html       ']
 
     interface
         ! char *realpath(const char *path, char *resolved_path);
@@ -251,7 +252,8 @@ contains
     !> Delete path if it exists and looks like a file fricon writes, by its first bytes and
     !! its extension (a .tmp by the extension before it): a report starts with '=', a data
     !! file or figure script with '#', a JSON summary with '{', a station CSV has a 'key
-    !! [unit]' header and a sweep summary starts with 'case,', a figure is a PNG. A deck
+    !! [unit]' header and a sweep summary starts with 'case,', a figure is a PNG, a record
+    !! starts with '<!DOCTYPE html>'. A deck
     !! starts with none of these (a card name, or a comment '*', '$' or 'C '), so no deck
     !! given an output's name is ever deleted.
     subroutine remove_output(path)
@@ -299,6 +301,8 @@ contains
                                 .or. head(1:9) == '# fricon '
         else if (ends_with(name, '.png')) then
             looks_like_output = head(1:4) == achar(137)//'PNG'
+        else if (ends_with(name, '.html')) then
+            looks_like_output = head(1:15) == '<!DOCTYPE html>'
         end if
     end function looks_like_output
 

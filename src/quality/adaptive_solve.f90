@@ -23,7 +23,8 @@
 !!     are bisected and neighbours kept within a size ratio of 2 (a geometric grading
 !!     towards singular ends and boundaries).
 !!
-!! It stops at the tolerance, or when the next mesh would exceed max_elements (the report
+!! It stops at the tolerance, or when the next mesh would exceed max_elements, or would have
+!! to stay below it with fewer than a tenth more elements than the last (the report
 !! then says the tolerance was not reached, with the estimate: a warning, status 0, since the
 !! result and its error estimate are valid), or when a refined solve fails: the result is
 !! then that of the last mesh solved, and the report says so. Refining never turns a solved
@@ -37,7 +38,8 @@ module adaptive_solve
                                nearest_node
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
-    use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK
+    use contact_solver, only: solution_t, solve_contact, STATE_LIFTOFF, STATE_STICK, &
+                              coarse_solution_t
     use station_results, only: station_table_t
     use station_columns, only: Q_X, Q_W, Q_SZ, Q_M
     use design_summary, only: summary_t
@@ -90,6 +92,9 @@ module adaptive_solve
     !> at least this fraction of the elements (the largest indicators) is cut in each
     !! cycle, so that the mesh grows geometrically and the cycles stay few
     real(dp), parameter :: min_fraction = 0.4_dp
+    !> a cycle whose marks max_elements cuts to fewer than this fraction of the elements is
+    !! not made (the adaptation stops: max_elements reached)
+    real(dp), parameter :: min_growth = 0.1_dp
 
     public :: solve_adaptive, relative_errors
 
@@ -121,7 +126,12 @@ contains
         ne_estimated = 0
         last_estimate = huge(1.0_dp)
         cycles: do k = 1, max_cycles
-            call solve_contact(m, d_try, sol_try, err_try, cache=cache)
+            if (k == 1) then
+                call solve_contact(m, d_try, sol_try, err_try, cache=cache)
+            else   ! the Newton start predicted from the last mesh's solution
+                call solve_contact(m, d_try, sol_try, err_try, cache=cache, &
+                                   start=coarse_solution_t(x=d%msh%x, z=sol%z))
+            end if
             if (allocated(err_try) .and. k == 1) then
                 call move_alloc(err_try, err)
                 return
@@ -262,7 +272,7 @@ contains
             a%rel = prev%rel                        ! the same keys, in the same order
             a%estimate = huge(1.0_dp)
         else
-            call coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
+            call coarse_estimates(m, d, sol, a, e2, e4, tab2, ok, cache)
             if (ok) a%eta = indicators(m%structure, d, s, tab_nodes, tab2)
             a%rel = relative_errors(a%e)
             a%estimate = huge(1.0_dp)
@@ -276,10 +286,12 @@ contains
     end subroutine assess
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
-    !! made or solved); tab2: the first coarse solution at its nodes.
-    subroutine coarse_estimates(m, d, a, e2, e4, tab2, ok, cache)
+    !! made or solved); tab2: the first coarse solution at its nodes. The coarse solves
+    !! start from sol (solve_contact, start) instead of their own nested coarser meshes.
+    subroutine coarse_estimates(m, d, sol, a, e2, e4, tab2, ok, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol          !! the solution on d
         type(assessment_t), intent(inout) :: a
         type(entry_t), allocatable, intent(out) :: e2(:), e4(:)
         type(station_table_t), intent(out) :: tab2
@@ -296,8 +308,10 @@ contains
         if (c4%ne < min_coarse .or. c2%ne >= d%msh%ne .or. c4%ne >= c2%ne) return
         call discretise_mesh(m, c2, d2)
         call discretise_mesh(m, c4, d4)
-        call coarse_case(m, d2, c2_case, ok, cache=cache)
-        if (ok) call coarse_case(m, d4, c4_case, ok, cache=cache)
+        call coarse_case(m, d2, c2_case, ok, cache=cache, &
+                         start=coarse_solution_t(x=d%msh%x, z=sol%z))
+        if (ok) call coarse_case(m, d4, c4_case, ok, cache=cache, &
+                                 start=coarse_solution_t(x=d%msh%x, z=sol%z))
         if (.not. ok) return
         e2 = c2_case%entries
         e4 = c4_case%entries
@@ -561,14 +575,19 @@ contains
         type(mesh_t), intent(out) :: next
         logical, intent(out) :: short        !! max_elements left no room for the marks
         logical, allocatable :: marked(:), pinned(:)
-        integer :: k, node, budget
+        integer :: k, node, budget, wanted
         next = d%msh
         budget = m%mesh%adapt_max_ne - d%msh%ne
         short = .true.
         if (budget <= 0) return
         marked = element_marks(d, a)
         short = .not. any(marked)
+        wanted = count(marked)
         call fit_budget(d%msh, a%eta, budget, marked)
+        ! a cycle cut short by max_elements to a few new elements costs a whole solve for
+        ! little: the adaptation stops instead
+        if (count(marked) < wanted .and. count(marked) < ceiling(min_growth*d%msh%ne)) &
+            marked = .false.
         short = .not. (short .or. any(marked))
         if (.not. any(marked)) return
         allocate (pinned(0:next%ne))     ! node numbers from 0, as the mesh's

@@ -13,12 +13,14 @@
 !! safety 1.25; the second keeps the
 !! estimate from collapsing where the fine pair happens to agree (a boundary that stays in one
 !! element). The contact extent moves by whole nodes: its estimate is at least half the
-!! element beyond the last node in contact. Measured on a reference set of 1665 results
+!! element beyond the last node in contact (at an end of the base, the end element).
+!! Measured on a reference set of 1665 results
 !! (output/bench/estimate_effectivity.md), against the estimates from coarser meshes only:
 !! the coarse meshes of N_e = 20 to 80 are short of the asymptotic range and gave estimates
 !! from 0.3 to 50 times the error (10th to 90th percentile).
 !!
-!! The refined solve costs about 8 dense solves of the case (4 times the T assembly). Where
+!! The refined solve starts its Newton method from the case's solution (solve_contact,
+!! start) and costs 2 to 4 times the case (output/bench/estimate_cost.md). Where
 !! the refined case would not fit in memory (resource_limits), the estimate falls back to the
 !! coarse family alone: N_e/2 and N_e/4 (every other node removed, twice) with Roache's grid
 !! convergence index, E = 1.25 |Q_2 - Q_1| / (2^p - 1), p observed and capped by
@@ -31,7 +33,7 @@ module error_estimate
     use model, only: model_t, LOAD_PATCH
     use shape_functions, only: INTERP_P1
     use mesh, only: mesh_t
-    use mesh_refinement, only: coarsened, pinned_nodes, bisected
+    use mesh_refinement, only: coarsened, pinned_nodes, bisected, same_nodes
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
@@ -57,8 +59,18 @@ module error_estimate
     !> Roache's factor of safety on a Richardson estimate with an observed order
     real(dp), parameter :: safety = 1.25_dp
 
-    public :: estimate_errors, coarse_case, attach_estimates, is_estimated, &
-              formal_order, refined_estimate, liftoff_estimates
+    !> The key results of a case on the other meshes of its estimate (estimate_family).
+    type, public :: estimate_family_t
+        logical :: ok = .false.        !! every solve succeeded
+        logical :: refined = .false.   !! ef is the bisected mesh's (else N_e/4's)
+        logical :: on_nodes = .false.  !! every concentrated load on a node of the meshes
+        logical :: edge = .false.      !! a UNIFORM mesh with an end of the base in contact
+        type(entry_t), allocatable :: ec(:)   !! the keys on the nested coarser mesh
+        type(entry_t), allocatable :: ef(:)   !! on the bisected mesh (or on N_e/4)
+    end type estimate_family_t
+
+    public :: estimate_errors, estimate_family, extent_floors, coarse_case, attach_estimates, &
+              is_estimated, formal_order, refined_estimate, liftoff_estimates
 
 contains
 
@@ -67,7 +79,7 @@ contains
     !! (solution_t%coarse); one whose mesh is the coarse mesh is not solved again.
     !! edge_in_contact: an end of the base is in contact (summary_t), which limits a
     !! uniform mesh to first order (formal_order).
-    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache)
+    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution)
         type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         type(entry_t), intent(inout) :: e(:)      !! the key results, updated
@@ -76,35 +88,64 @@ contains
         !> an end of the base is in contact (default false)
         logical, intent(in), optional :: edge_in_contact
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
-        type(coarse_solution_t), allocatable :: reuse(:)
+        !> the case's solution on d: the refined solve's Newton start is predicted from it
+        type(solution_t), intent(in), optional :: solution
+        type(estimate_family_t) :: fam
+        logical :: edge
+        edge = .false.
+        if (present(edge_in_contact)) edge = edge_in_contact
+        call estimate_family(m, d, edge, fam, known, cache, solution)
+        if (.not. fam%ok) return
+        if (fam%refined) then
+            call refined_estimate(m, e, fam%ec, fam%ef, extent_floors(m, d%msh, e), &
+                                  fam%on_nodes, fam%edge)
+        else
+            call attach_estimates(m, e, fam%ec, fam%ef, 2.0_dp, extent_floors(m, d%msh, e), &
+                                  fam%on_nodes, fam%edge)
+        end if
+    end subroutine estimate_errors
+
+    !> The key results of the case on the meshes its estimate compares (module header): the
+    !! nested coarser mesh and the bisected one (refined) or, where the bisected case does
+    !! not fit in memory, the coarser meshes N_e/2 and N_e/4 (the second in fam%ef).
+    subroutine estimate_family(m, d, edge_in_contact, fam, known, cache, solution)
+        type(model_t), intent(in) :: m            !! the model
+        type(discretization_t), intent(in) :: d   !! the case's own discretisation
+        logical, intent(in) :: edge_in_contact    !! an end of the base is in contact
+        type(estimate_family_t), intent(out) :: fam  !! the keys on the other meshes
+        !> the coarse solutions of the Newton start
+        type(coarse_solution_t), intent(in), optional :: known(:)
+        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> the case's solution on d (the refined solve starts from it)
+        type(solution_t), intent(in), optional :: solution
+        type(coarse_solution_t), allocatable :: reuse(:), own(:)
         type(mesh_t) :: c2, c4
-        type(entry_t), allocatable :: e2(:), e4(:), ef(:)
         logical, allocatable :: p2(:), p4(:)
-        logical :: ok2, ok4, okf, edge, on_nodes
         allocate (reuse(0))
         if (present(known)) reuse = known
-        edge = .false.
-        if (present(edge_in_contact)) edge = edge_in_contact .and. &
-                                             trim(m%mesh%grading) == 'UNIFORM'
+        fam%ok = .false.
+        fam%edge = edge_in_contact .and. trim(m%mesh%grading) == 'UNIFORM'
         call coarsened(d%msh, pinned_nodes(d%msh, load_positions(m%loads)), c2, p2)
         if (c2%ne >= d%msh%ne .or. c2%ne < min_coarse_elements) return
-        call mesh_entries(m, c2, reuse, e2, ok2, cache)
-        if (.not. ok2) return
-        on_nodes = loads_on_nodes(m%loads, d%msh) .and. loads_on_nodes(m%loads, c2)
-        if (refined_fits(m)) then
-            call mesh_entries(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), reuse, ef, &
-                              okf, cache)
-            if (.not. okf) return
-            call refined_estimate(m, e, e2, ef, extent_floors(m, d%msh, e), on_nodes, edge)
+        call mesh_entries(m, c2, reuse, fam%ec, fam%ok, cache)
+        if (.not. fam%ok) return
+        fam%on_nodes = loads_on_nodes(m%loads, d%msh) .and. loads_on_nodes(m%loads, c2)
+        fam%refined = refined_fits(m)
+        if (fam%refined) then
+            allocate (own(0))
+            if (present(solution)) own = [coarse_solution_t(x=d%msh%x, z=solution%z, &
+                admissibility=solution%admissibility, reaction=solution%reaction, &
+                applied=solution%applied, n_solves=solution%n_solves)]
+            call mesh_entries(m, bisected(d%msh, spread(.true., 1, d%msh%ne)), reuse, fam%ef, &
+                              fam%ok, cache, own)
             return
         end if
+        fam%ok = .false.
         call coarsened(c2, p2, c4, p4)
         if (c4%ne >= c2%ne .or. c4%ne < min_coarse_elements) return
-        call mesh_entries(m, c4, reuse, e4, ok4, cache)
-        if (.not. ok4) return
-        call attach_estimates(m, e, e2, e4, 2.0_dp, extent_floors(m, d%msh, e), &
-                              on_nodes .and. loads_on_nodes(m%loads, c4), edge)
-    end subroutine estimate_errors
+        call mesh_entries(m, c4, reuse, fam%ef, fam%ok, cache)
+        fam%on_nodes = fam%on_nodes .and. loads_on_nodes(m%loads, c4)
+    end subroutine estimate_family
 
     !> Whether the case on twice its elements fits in the memory available.
     logical function refined_fits(m)
@@ -119,12 +160,15 @@ contains
 
     !> Per entry, the least estimate: a contact extent is a node, and the boundary lies in
     !! the element beyond it (before it, for the leftmost station in contact), so its error
-    !! is taken as at least half that element (as t; 0 in contact up to the end); 0 for the
-    !! other keys.
+    !! is taken as at least half that element (as t); 0 for the other keys. An extent at an
+    !! end of the base gets half the element at that end: a lift-off shorter than that
+    !! element leaves the end node in contact on the mesh and on its coarser and bisected
+    !! neighbours alike (two point loads on a soft beam: extent 0.5 on N_e = 10, 20, 40,
+    !! 0.4855 converged), so the meshes cannot tell it from contact up to the end.
     pure function extent_floors(m, msh, e) result(floor)
-        type(model_t), intent(in) :: m
-        type(mesh_t), intent(in) :: msh
-        type(entry_t), intent(in) :: e(:)
+        type(model_t), intent(in) :: m        !! the model
+        type(mesh_t), intent(in) :: msh       !! the case's mesh
+        type(entry_t), intent(in) :: e(:)     !! its key results
         real(dp) :: floor(size(e))
         real(dp) :: x
         integer :: i, k
@@ -135,9 +179,11 @@ contains
             k = count(msh%x(1:) <= x + 1.0e-9_dp*m%structure%length)  ! nodes at or before x
             select case (trim(e(i)%key))
             case ('contact_extent_t', 'contact_extent_right_t')
-                if (k < msh%ne) floor(i) = 0.5_dp*(msh%x(k + 1) - msh%x(k))/m%structure%length
+                k = min(k + 1, msh%ne)    ! the element beyond, or the last one
+                floor(i) = 0.5_dp*(msh%x(k) - msh%x(k - 1))/m%structure%length
             case ('contact_extent_left_t')
-                if (k > 0) floor(i) = 0.5_dp*(msh%x(k) - msh%x(k - 1))/m%structure%length
+                k = max(k, 1)             ! the element before, or the first one
+                floor(i) = 0.5_dp*(msh%x(k) - msh%x(k - 1))/m%structure%length
             end select
         end do
     end function extent_floors
@@ -298,13 +344,15 @@ contains
 
     !> The key results of the case on the mesh msh (ok false when the solve fails), from a
     !! known solution on that mesh if there is one.
-    subroutine mesh_entries(m, msh, known, e, ok, cache)
+    subroutine mesh_entries(m, msh, known, e, ok, cache, start)
         type(model_t), intent(in) :: m
         type(mesh_t), intent(in) :: msh
         type(coarse_solution_t), intent(in) :: known(:)
         type(entry_t), allocatable, intent(out) :: e(:)
         logical, intent(out) :: ok
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> (0 or 1) a solution on msh's nested coarser mesh, the Newton start's (solve_contact)
+        type(coarse_solution_t), intent(in), optional :: start(:)
         type(model_t) :: mc
         type(discretization_t) :: d
         type(case_t) :: c
@@ -319,26 +367,28 @@ contains
                 return
             end if
         end do
+        if (present(start)) then
+            if (size(start) == 1) then
+                call coarse_case(mc, d, c, ok, cache=cache, start=start(1))
+                if (ok) e = c%entries
+                return
+            end if
+        end if
         call coarse_case(mc, d, c, ok, cache=cache)
         if (ok) e = c%entries
     end subroutine mesh_entries
 
-    !> Whether two meshes have the same nodes (to 1e-12 of the length).
-    pure logical function same_nodes(x1, x2)
-        real(dp), intent(in) :: x1(:), x2(:)
-        same_nodes = size(x1) == size(x2)
-        if (same_nodes) same_nodes = all(abs(x1 - x2) <= 1.0e-12_dp*(x2(size(x2)) - x2(1)))
-    end function same_nodes
-
     !> The case solved on the discretisation d, or finished from a known solution on d; ok
     !! false when the solve fails.
-    subroutine coarse_case(m, d, c, ok, known, cache)
+    subroutine coarse_case(m, d, c, ok, known, cache, start)
         type(model_t), intent(in) :: m                 !! the model
         type(discretization_t), intent(in) :: d        !! a coarser mesh of it
         type(case_t), intent(out) :: c                 !! the case on d
         logical, intent(out) :: ok                     !! solved and tabulated
         type(coarse_solution_t), intent(in), optional :: known   !! the solution on d
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> a solution on d's nested coarser mesh, for the Newton start (solve_contact)
+        type(coarse_solution_t), intent(in), optional :: start
         type(solution_t) :: sol
         type(error_t), allocatable :: err
         if (present(known)) then
@@ -349,7 +399,7 @@ contains
             sol%n_solves = known%n_solves
             call finish_case(m, d, sol, c, err)
         else
-            call solve_on(m, d, c, err, cache=cache)
+            call solve_on(m, d, c, err, cache=cache, start=start)
         end if
         ok = .not. allocated(err)
     end subroutine coarse_case

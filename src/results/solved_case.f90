@@ -11,7 +11,7 @@ module solved_case
     use errors, only: error_t
     use model, only: model_t
     use discretization, only: discretization_t, new_discretization
-    use contact_solver, only: solution_t, solve_contact
+    use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use flexibility_cache, only: flexibility_cache_t
     use station_results, only: station_table_t, tabulate, tabulate_design, contact_extent
     use design_summary, only: summary_t, summarise
@@ -49,22 +49,24 @@ contains
     end subroutine solve_case
 
     !> Solve m on the discretisation d and finish the case (finish_case).
-    subroutine solve_on(m, d, c, err, progress_unit, cache)
+    subroutine solve_on(m, d, c, err, progress_unit, cache, start)
         type(model_t), intent(in) :: m                  !! the model
         type(discretization_t), intent(in) :: d         !! any mesh of m (MESH card, adapted)
         type(case_t), intent(out) :: c                  !! the finished case
         type(error_t), allocatable, intent(out) :: err  !! solve or tabulation failed
         integer, intent(in), optional :: progress_unit  !! a unit for one line per Newton step
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
+        !> a solution known on d's nested coarser mesh (contact_solver, solve_contact)
+        type(coarse_solution_t), intent(in), optional :: start
         type(solution_t) :: sol
         if (present(progress_unit)) then
             if (progress_unit >= 0) then
-                call solve_contact(m, d, sol, err, progress_unit, cache=cache)
+                call solve_contact(m, d, sol, err, progress_unit, cache=cache, start=start)
             else
-                call solve_contact(m, d, sol, err, cache=cache)
+                call solve_contact(m, d, sol, err, cache=cache, start=start)
             end if
         else
-            call solve_contact(m, d, sol, err, cache=cache)
+            call solve_contact(m, d, sol, err, cache=cache, start=start)
         end if
         if (allocated(err)) then
             c = failed_case(m, d, sol)

@@ -28,7 +28,7 @@ module summary_table
                                             !! mesh decides the value; no error estimate
     end type entry_t
 
-    public :: summary_entries, entry_keys, entry_index
+    public :: summary_entries, entry_keys, entry_index, choose
 
 contains
 
@@ -187,8 +187,8 @@ contains
 
     !> a if cond, else b (MERGE needs equal lengths).
     pure function choose(cond, a, b) result(text)
-        logical, intent(in) :: cond
-        character(len=*), intent(in) :: a, b
+        logical, intent(in) :: cond              !! which one
+        character(len=*), intent(in) :: a, b     !! the two texts
         character(len=:), allocatable :: text
         if (cond) then
             text = a

@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Does ADAPT pay? From one run of example/work_precision (its two tables), for each ADAPT
+family at tol 1e-3 and 1e-4: the true error of its final mesh (plate: the larger of the
+relative errors of W(0) and Sigma_z(0); beam: of W(0) and max |M|, Sigma_z(0) being singular
+under the point load), its time (the whole adaptation), and the time each fixed family needs
+to reach the same error (log-log interpolation along its rows, first crossing; '-' where its
+rows never reach it), the cheapest of them named. Usage:
+    python3 scripts/adapt_pays.py DIR > output/bench/adapt_pays.md
+with DIR holding work_precision_{plate,beam}.txt."""
+import math
+import sys
+
+TOLS = {1.0e-2: 0, 3.0e-3: 1, 1.0e-3: 2, 3.0e-4: 3, 1.0e-4: 4}   # row order of tol_list
+COLS = {'plate': (4, 5), 'beam': (4, 7)}   # err_W0 and err_Sz0 / err_Mmax columns
+
+
+def rows_of(path, cols):
+    fam = {}
+    for line in open(path):
+        if line.startswith('#') or not line.strip():
+            continue
+        f = line.split()
+        err = max(float(f[cols[0]]), float(f[cols[1]]))
+        fam.setdefault(f[0], []).append((int(f[1]), float(f[3]), err))
+    return fam
+
+
+def time_to_reach(rows, target):
+    """Time from which the family stays at or below target: after its last row above
+    target, log-log interpolated into the row before (a lucky dip of an erratic family
+    followed by larger errors does not count: a user could not know where it lies)."""
+    above = [k for k, (_, _, e) in enumerate(rows) if e > target]
+    if not above:
+        return rows[0][1]
+    k = above[-1] + 1
+    if k >= len(rows):
+        return extrapolated(rows, target)
+    (_, t0, e0), (_, t, e) = rows[k - 1], rows[k]
+    if e <= 0 or e0 == e:
+        return t
+    s = (math.log(target) - math.log(e0)) / (math.log(e) - math.log(e0))
+    return math.exp(math.log(t0) + s * (math.log(t) - math.log(t0)))
+
+
+def extrapolated(rows, target):
+    """Beyond the last row: error and time as powers of N_e from the last two rows (None
+    when the error did not fall between them); returned negative to mark it."""
+    (n0, t0, e0), (n1, t1, e1) = rows[-2], rows[-1]
+    if not (0 < e1 < e0 and t1 > 0 and t0 > 0):
+        return None
+    p = math.log(e0 / e1) / math.log(n1 / n0)
+    q = math.log(t1 / t0) / math.log(n1 / n0)
+    n = n1 * (e1 / target) ** (1.0 / p)
+    return -t1 * (n / n1) ** q
+
+
+def main():
+    out = sys.argv[1]
+    print('# Does ADAPT pay? (scripts/adapt_pays.py on one run of example/work_precision)')
+    print()
+    print('Error: plate max(err W(0), err Sigma_z(0)), beam max(err W(0), err max|M|), relative'
+          ' to the run\'s reference. "cheapest fixed": the fixed discretisation that reaches'
+          ' the same error in the least time and stays there (after its last row above the error,'
+          ' log-log interpolated into the row before); where none of its rows'
+          ' reaches it, each would need more than its last row\'s time, the least of which is'
+          ' given as a bound, unless it is extrapolated (error and time as powers of N_e from the'
+          ' family\'s last two rows). Fixed-mesh times are one solve without estimates; ADAPT\'s are'
+          ' the whole adaptation, its estimate solves included.')
+    print()
+    print('| case | ADAPT family | tol | N_e | error | time [s] | same interpolation, UNIFORM'
+          ' | its time [s] | ADAPT / it | cheapest UNIFORM | its time [s] | ADAPT / it'
+          ' | cheapest fixed | its time [s] | ADAPT / it |')
+    print('|---|---|---:|---:|---:|---:|---|---:|---:|---|---:|---:|---|---:|---:|')
+    for case in ('plate', 'beam'):
+        fam = rows_of(f'{out}/work_precision_{case}.txt', COLS[case])
+        fixed = {k: v for k, v in fam.items() if 'ADAPT' not in k}
+        for name in [k for k in fam if 'ADAPT' in k]:
+            for tol in (1.0e-3, 1.0e-4):
+                ne, t, e = fam[name][TOLS[tol]]
+                cells = []
+                same = name.replace('ADAPT', 'UNIFORM')
+                for pool in ({same: fixed[same]},
+                             {k: v for k, v in fixed.items() if 'UNIFORM' in k}, fixed):
+                    best, tbest = '-', None
+                    for fname, rows in pool.items():
+                        tf = time_to_reach(rows, e)
+                        if tf is not None and (tbest is None or abs(tf) < abs(tbest)):
+                            best, tbest = fname, tf
+                    if tbest is None:   # no row reaches e: each family needs more than its last
+                        tlast = min(rows[-1][1] for rows in pool.values())
+                        cells += ['none reached', f'> {tlast:.2e}', f'< {t / tlast:.1f}']
+                        continue
+                    mark = ' (extrapolated)' if tbest < 0 else ''
+                    cells += [best + mark, f'{abs(tbest):.2e}', f'{t / abs(tbest):.1f}']
+                print(f'| {case} | {name} | {tol:.0e} | {ne} | {e:.2e} | {t:.2e} | '
+                      + ' | '.join(cells) + ' |')
+
+
+main()
