@@ -18,7 +18,9 @@
 !!    load, i.e. C_zz = 1/(2m) at every wavenumber;
 !!  * the rigid frictionless punch on a layer: an independent Nystrom solution of the
 !!    Fredholm equation of the second kind of the dual integral equations (Lebedev & Ufliand
-!!    1958; Sneddon's method), built here from the compliance alone (no basis, no T).
+!!    1958; Sneddon's method), built here from the compliance alone (no basis, no T);
+!!  * the table of J0 and J1 of the plate's Hankel transforms (layered_bessel): Fortran's
+!!    intrinsic bessel_j0 / bessel_j1.
 module test_layered_ground
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, check, check_close, error_t
@@ -34,6 +36,7 @@ module test_layered_ground
                                   BASE_HALFSPACE
     use layered_influence, only: assemble_layered_flexibility, layered_correction, &
                                  layered_surface_displacement
+    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_values
     implicit none
     private
     public :: collect_layered_ground, punch_nystrom
@@ -57,7 +60,8 @@ contains
                  new_unittest('linear_modulus_sublayers', test_linear_modulus), &
                  new_unittest('displacements_consistent_with_t', test_displacement_vs_t), &
                  new_unittest('no_far_field_over_rock', test_no_far_field), &
-                 new_unittest('bad_grounds_refused', test_bad_grounds)]
+                 new_unittest('bad_grounds_refused', test_bad_grounds), &
+                 new_unittest('bessel_table', test_bessel_table)]
     end subroutine collect_layered_ground
 
     ! ------------------------------------------------------------------ helpers
@@ -786,4 +790,34 @@ contains
         if (allocated(err)) return
         call check(err, index(failure%message, 'too thin') > 0, 'thin-layer message')
     end subroutine test_bad_grounds
+
+    !> The piecewise Taylor polynomials of layered_bessel against the intrinsic bessel_j0 /
+    !! bessel_j1 (a different algorithm: rational approximations and the asymptotic form) at
+    !! 20000 points of [0, 200] (irrational steps, every part of a piece), to 1e-15 absolute
+    !! (|J| <= 1; the truncation bound is 7e-19, the rest is rounding of both), and at the
+    !! ends of the table.
+    subroutine test_bessel_table(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(bessel_table_t) :: table
+        integer, parameter :: n = 20000
+        real(dp) :: x(n), j0(n), j1(n)
+        integer :: i
+        call new_bessel_table(200.0_dp, table)
+        points: do i = 1, n
+            x(i) = min(200.0_dp, real(i, dp)*sqrt(2.0_dp)/141.4_dp)
+        end do points
+        call bessel_table_values(table, 0, x, j0)
+        call bessel_table_values(table, 1, x, j1)
+        call check(err, maxval(abs(j0 - bessel_j0(x))) <= 1.0e-15_dp, 'J0 from the table')
+        if (allocated(err)) return
+        call check(err, maxval(abs(j1 - bessel_j1(x))) <= 1.0e-15_dp, 'J1 from the table')
+        if (allocated(err)) return
+        call bessel_table_values(table, 0, [0.0_dp, 200.0_dp], j0(1:2))
+        call bessel_table_values(table, 1, [0.0_dp, 200.0_dp], j1(1:2))
+        call check_close(err, j0(1), 1.0_dp, 0.0_dp, 1.0e-15_dp, 'J0(0)')
+        if (allocated(err)) return
+        call check_close(err, j1(1), 0.0_dp, 0.0_dp, 1.0e-15_dp, 'J1(0)')
+        if (allocated(err)) return
+        call check_close(err, j0(2), bessel_j0(200.0_dp), 0.0_dp, 1.0e-15_dp, 'J0(200)')
+    end subroutine test_bessel_table
 end module test_layered_ground
