@@ -36,7 +36,7 @@ module test_layered_ground
                                   BASE_HALFSPACE
     use layered_influence, only: assemble_layered_flexibility, layered_correction, &
                                  layered_surface_displacement
-    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_values
+    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_pair
     implicit none
     private
     public :: collect_layered_ground, punch_nystrom
@@ -806,14 +806,12 @@ contains
         points: do i = 1, n
             x(i) = min(200.0_dp, real(i, dp)*sqrt(2.0_dp)/141.4_dp)
         end do points
-        call bessel_table_values(table, 0, x, j0)
-        call bessel_table_values(table, 1, x, j1)
+        call bessel_table_pair(table, x, j0, j1)
         call check(err, maxval(abs(j0 - bessel_j0(x))) <= 1.0e-15_dp, 'J0 from the table')
         if (allocated(err)) return
         call check(err, maxval(abs(j1 - bessel_j1(x))) <= 1.0e-15_dp, 'J1 from the table')
         if (allocated(err)) return
-        call bessel_table_values(table, 0, [0.0_dp, 200.0_dp], j0(1:2))
-        call bessel_table_values(table, 1, [0.0_dp, 200.0_dp], j1(1:2))
+        call bessel_table_pair(table, [0.0_dp, 200.0_dp], j0(1:2), j1(1:2))
         call check_close(err, j0(1), 1.0_dp, 0.0_dp, 1.0e-15_dp, 'J0(0)')
         if (allocated(err)) return
         call check_close(err, j1(1), 0.0_dp, 0.0_dp, 1.0e-15_dp, 'J1(0)')

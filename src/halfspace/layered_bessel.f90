@@ -1,7 +1,7 @@
 !> J0 and J1 on [0, x_max] for the Hankel transforms of the layered plate (layered_influence):
 !! a table of polynomials of degree table_degree, one per unit interval [i, i + 1], each the
 !! Taylor polynomial of J0 or J1 about the interval's centre c = i + 1/2 in t = 2 (x - c),
-!! summed by Horner's rule. The derivatives come from the intrinsic bessel_jn at c:
+!! summed by Estrin's scheme. The derivatives come from the intrinsic bessel_jn at c:
 !!     J_nu^(k) = 2^(-k) sum_(m=0..k) (-1)^m C(k, m) J_(nu-k+2m),   J_(-n) = (-1)^n J_n,
 !! a sum of terms below 2^k in all, so each coefficient a_k = J^(k)(c) 2^(-k)/k! carries an
 !! absolute error of a few 1e-16 2^(-k)/k! (a power series from interpolation would not: its
@@ -11,7 +11,7 @@
 !! degree 15 is below 2^(-16)/16! = 7e-19 for |t| <= 1, and the values are within a few
 !! 1e-16 of J (absolute) wherever the intrinsic is; test layered_ground/bessel_table measures
 !! them against the intrinsic at 20000 points. Building a table costs 17 bessel_jn per unit of
-!! x_max; a value then costs one Horner sum instead of the intrinsic's argument reduction,
+!! x_max; a value then costs one polynomial instead of the intrinsic's argument reduction,
 !! sine, cosine and rational approximations (output/bench/layered.md).
 module layered_bessel
     use kinds, only: dp
@@ -26,7 +26,7 @@ module layered_bessel
         real(dp), allocatable :: j1(:, :)   !! (0:table_degree, 0:n - 1)
     end type bessel_table_t
 
-    public :: new_bessel_table, bessel_table_values
+    public :: new_bessel_table, bessel_table_pair
 
 contains
 
@@ -71,34 +71,38 @@ contains
         end do derivatives
     end function taylor_coefficients
 
-    !> values(i) = J_order(x(i)), 0 <= x(i) <= the table's x_max, order 0 or 1.
-    pure subroutine bessel_table_values(table, order, x, values)
+    !> j0(i) = J0(x(i)), j1(i) = J1(x(i)), 0 <= x(i) <= the table's x_max.
+    pure subroutine bessel_table_pair(table, x, j0, j1)
         type(bessel_table_t), intent(in) :: table   !! the table (new_bessel_table)
-        integer, intent(in) :: order                !! 0 or 1
         real(dp), intent(in) :: x(:)                !! arguments
-        real(dp), intent(out) :: values(:)          !! J_order(x)
-        if (order == 0) then
-            call horner_values(table%j0, x, values)
-        else
-            call horner_values(table%j1, x, values)
-        end if
-    end subroutine bessel_table_values
-
-    pure subroutine horner_values(coef, x, values)
-        real(dp), intent(in) :: coef(0:, 0:)
-        real(dp), intent(in) :: x(:)
-        real(dp), intent(out) :: values(:)
-        real(dp) :: t, v
-        integer :: i, k, piece, last
-        last = ubound(coef, 2)
+        real(dp), intent(out) :: j0(:), j1(:)       !! J0(x), J1(x)
+        real(dp) :: t
+        integer :: i, piece, last
+        last = ubound(table%j0, 2)
         arguments: do i = 1, size(x)
             piece = min(int(x(i)), last)
             t = 2.0_dp*(x(i) - real(piece, dp)) - 1.0_dp   ! 2 (x - centre)
-            v = coef(table_degree, piece)
-            horner: do k = table_degree - 1, 0, -1
-                v = v*t + coef(k, piece)
-            end do horner
-            values(i) = v
+            j0(i) = estrin(table%j0(:, piece), t)
+            j1(i) = estrin(table%j1(:, piece), t)
         end do arguments
-    end subroutine horner_values
+    end subroutine bessel_table_pair
+
+    !> sum a_k t^k, k = 0 .. 15, by Estrin's scheme (pairs, then powers t^2, t^4, t^8: four
+    !! dependent steps instead of Horner's fifteen; the terms fall off like 4^(-k)/k!, so
+    !! either order of summation is exact to rounding).
+    pure real(dp) function estrin(a, t) result(v)
+        real(dp), intent(in) :: a(0:table_degree)
+        real(dp), intent(in) :: t
+        real(dp) :: t2, t4, p(0:7), q(0:3)
+        integer :: k
+        t2 = t*t
+        t4 = t2*t2
+        pairs: do k = 0, 7
+            p(k) = a(2*k) + a(2*k + 1)*t
+        end do pairs
+        quads: do k = 0, 3
+            q(k) = p(2*k) + p(2*k + 1)*t2
+        end do quads
+        v = (q(0) + q(1)*t4) + (q(2) + q(3)*t4)*(t4*t4)
+    end function estrin
 end module layered_bessel

@@ -47,7 +47,7 @@ module layered_influence
                                   halfspace_phi, BASE_SMOOTH
     use layered_wavenumbers, only: wavenumber_rule_t, graded_breaks, panel_rule, &
                                    log_product_rule, panel_phase, panel_points
-    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_values
+    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_pair
     implicit none
     private
 
@@ -204,8 +204,7 @@ contains
         n = size(rule%node)
         n_nodes = n
         call new_bessel_table(maxval(rule%node)*radius, table)
-        call hankel_transforms(bx, 1, rule%node, refine, table, hx)
-        call hankel_transforms(bz, 0, rule%node, refine, table, hz)
+        call hankel_transforms(bx, bz, rule%node, refine, table, hx, hz)
         nx = bx%n_dof
         ld = size(t_corr, 1)
         w = 2.0_dp*pi*rule%weight
@@ -297,7 +296,7 @@ contains
         type(wavenumber_rule_t) :: rule
         type(bessel_table_t) :: table
         real(dp), allocatable :: phi(:, :), hx(:, :), hz(:, :), p(:), q(:), a_z(:), a_r(:)
-        real(dp), allocatable :: bessel(:)
+        real(dp), allocatable :: j0(:), j1(:)
         real(dp) :: omega
         integer :: i, n
         omega = bx%x(bx%ne) + maxval(abs(x_eval)) + 2.0_dp*ground%thickness(1)
@@ -308,18 +307,16 @@ contains
         call drop_tail(ground, phi, rule)
         n = size(rule%node)
         call new_bessel_table(maxval(rule%node)*max(bx%x(bx%ne), maxval(abs(x_eval))), table)
-        call hankel_transforms(bx, 1, rule%node, 1.0_dp, table, hx)
-        call hankel_transforms(bz, 0, rule%node, 1.0_dp, table, hz)
+        call hankel_transforms(bx, bz, rule%node, 1.0_dp, table, hx, hz)
         q = matmul(hx, rx)
         p = matmul(hz, rz)
         a_z = rule%weight*(phi(1:n, 1)*p - phi(1:n, 2)*q)
         a_r = rule%weight*(-phi(1:n, 2)*p + phi(1:n, 3)*q)
-        allocate (du_r(size(x_eval)), du_z(size(x_eval)), bessel(n))
+        allocate (du_r(size(x_eval)), du_z(size(x_eval)), j0(n), j1(n))
         points: do i = 1, size(x_eval)
-            call bessel_table_values(table, 0, rule%node*abs(x_eval(i)), bessel)
-            du_z(i) = sum(a_z*bessel)
-            call bessel_table_values(table, 1, rule%node*abs(x_eval(i)), bessel)
-            du_r(i) = sign(1.0_dp, x_eval(i))*sum(a_r*bessel)   ! J1 is odd
+            call bessel_table_pair(table, rule%node*abs(x_eval(i)), j0, j1)
+            du_z(i) = sum(a_z*j0)
+            du_r(i) = sign(1.0_dp, x_eval(i))*sum(a_r*j1)   ! J1 is odd
         end do points
     end subroutine plate_displacement_correction
 
@@ -538,28 +535,32 @@ contains
         end if
     end function strip_sinc
 
-    !> ht(k, a) = int g_a(r) J_order(node(k) r) r dr (order 0 or 1), J from the table.
-    subroutine hankel_transforms(basis, order, node, refine, table, ht)
-        type(basis_t), intent(in) :: basis
-        integer, intent(in) :: order
+    !> hx(k, a) = int gx_a(r) J1(node(k) r) r dr and hz(k, a) = int gz_a(r) J0(node(k) r) r dr
+    !! for the bases bx, bz of one mesh: one pass, J0 and J1 from the table at each point.
+    subroutine hankel_transforms(bx, bz, node, refine, table, hx, hz)
+        type(basis_t), intent(in) :: bx, bz
         real(dp), intent(in) :: node(:)
         real(dp), intent(in) :: refine
         type(bessel_table_t), intent(in) :: table   !! J0, J1 up to maxval(node) r_max
-        real(dp), allocatable, intent(out) :: ht(:, :)
+        real(dp), allocatable, intent(out) :: hx(:, :), hz(:, :)
         real(dp), allocatable :: xi(:), w(:)
-        real(dp) :: x, val(max_local), der(max_local), bessel(size(node))
+        real(dp) :: x, val(max_local), der(max_local), j0(size(node)), j1(size(node)), half
         integer :: e, q, i, m, idx(max_local)
-        allocate (ht(size(node), basis%n_dof), source=0.0_dp)
-        elements: do e = 1, basis%ne
-            m = element_points(refine*maxval(node)*(basis%x(e) - basis%x(e - 1)))
+        allocate (hx(size(node), bx%n_dof), hz(size(node), bz%n_dof), source=0.0_dp)
+        elements: do e = 1, bx%ne
+            half = 0.5_dp*(bx%x(e) - bx%x(e - 1))
+            m = element_points(refine*maxval(node)*(bx%x(e) - bx%x(e - 1)))
             call element_rule(m, xi, w)
             points: do q = 1, m
-                call eval_basis(basis, e, xi(q), idx, val, der, x)
-                call bessel_table_values(table, order, node*x, bessel)
-                locals: do i = 1, basis%n_local
-                    ht(:, idx(i)) = ht(:, idx(i)) + (0.5_dp*(basis%x(e) - basis%x(e - 1))* &
-                                                     w(q)*val(i)*x)*bessel
-                end do locals
+                call eval_basis(bz, e, xi(q), idx, val, der, x)
+                call bessel_table_pair(table, node*x, j0, j1)
+                normal: do i = 1, bz%n_local
+                    hz(:, idx(i)) = hz(:, idx(i)) + (half*w(q)*val(i)*x)*j0
+                end do normal
+                call eval_basis(bx, e, xi(q), idx, val, der, x)
+                radial: do i = 1, bx%n_local
+                    hx(:, idx(i)) = hx(:, idx(i)) + (half*w(q)*val(i)*x)*j1
+                end do radial
             end do points
         end do elements
     end subroutine hankel_transforms
