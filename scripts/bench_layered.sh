@@ -10,8 +10,13 @@
 #   - bench/layered_sweep_1000.dat, 1000 cases over the layers' moduli and thicknesses (no
 #     two share T), the whole process with -j 2: target under 60 s on 2 cores.
 # Single cases run with one thread (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1), with and
-# without the error estimates (which re-solve each case on 2 N_e and N_e/2). Run from the
-# project root:  bash scripts/bench_layered.sh   (about 2 minutes on 2 shared cores)
+# without the error estimates (which re-solve each case on 2 N_e and N_e/2), 5 times each:
+# the table gives the median (the machine's 2 cores are shared; the load averages at the
+# start and the end are printed with it). With a BEFORE revision the same decks are also
+# run by the release build of that commit (checked out in a temporary worktree), the runs of
+# the two builds interleaved, and its medians are a column of the table. Run from the
+# project root:  bash scripts/bench_layered.sh [BEFORE_REV]   (about 3 minutes, 5 with a
+# BEFORE_REV, on 2 shared cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/bench_binaries.sh
@@ -20,10 +25,19 @@ release_executable bench_layered . || exit 2
 bin=$executable
 out=output/bench
 work=$(mktemp -d "${TMPDIR:-/tmp}/bench_layered.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+trap 'remove_reference_tree "$work/before"; rm -rf "$work"' EXIT
 mkdir -p "$out"
 # the commit measured (taken before the benchmark rewrites output/bench)
 commit="$(git rev-parse --short HEAD)$([ -n "$(git status --porcelain --untracked-files=no)" ] && echo ' + uncommitted changes')"
+before_rev=${1:-}
+before_bin=''
+if [ -n "$before_rev" ]; then
+    add_reference_tree bench_layered "$before_rev" "$work/before" || exit 2
+    release_executable bench_layered "$work/before" || exit 2
+    before_bin=$executable
+    before_rev=$(git rev-parse --short "$before_rev")
+fi
+load_start=$(cut -d' ' -f1-3 /proc/loadavg)
 
 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 fpm run --profile release --example bench_layered \
     >/dev/null
@@ -49,28 +63,34 @@ wall() {
     e=$(date +%s.%N)
     awk -v a="$s" -v b="$e" 'BEGIN { printf "%.3f", b - a }'
 }
-# least of 3 single-thread runs: best DECK [OPTION...]
-best() {
-    local deck=$1 t m=''
-    shift
-    for _ in 1 2 3; do
-        rm -rf "$work/out"
-        t=$(OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 wall "$bin" --no-figures -q "$@" \
-            -o "$work/out" "$deck")
-        m=$(awk -v a="$t" -v b="$m" 'BEGIN { print (b == "" || a < b) ? a : b }')
-    done
-    echo "$m"
+# one single-thread run: single BINARY DECK [OPTION...]
+single() {
+    local program=$1 deck=$2
+    shift 2
+    rm -rf "$work/out"
+    OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 wall "$program" --no-figures -q "$@" \
+        -o "$work/out" "$deck"
 }
+median() { printf '%s\n' "$@" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
 
-declare -A t
+# medians of 5 runs, this build's and the BEFORE build's interleaved
+declare -A t tb
 for est in yes no; do
     opt=()
     [ "$est" = no ] && opt=(--no-estimates)
     for f in homogeneous_200 layered_200 homogeneous_1000 layered_1000; do
-        t[$f,$est]=$(best "$work/$f.dat" "${opt[@]}")
+        runs=()
+        runs_before=()
+        for _ in 1 2 3 4 5; do
+            runs+=("$(single "$bin" "$work/$f.dat" "${opt[@]}")")
+            [ -n "$before_bin" ] && runs_before+=("$(single "$before_bin" "$work/$f.dat" "${opt[@]}")")
+        done
+        t[$f,$est]=$(median "${runs[@]}")
+        [ -n "$before_bin" ] && tb[$f,$est]=$(median "${runs_before[@]}")
     done
 done
+load_end=$(cut -d' ' -f1-3 /proc/loadavg)
 rm -rf "$work/sweep"
 sweep_est=$(wall "$bin" --no-figures -q -j 2 -o "$work/sweep" bench/layered_sweep_1000.dat)
 rows=$(($(wc -l <"$work/sweep/layered_sweep_1000_summary.csv") - 1))
@@ -84,14 +104,21 @@ sweep_no=$(wall "$bin" --no-figures -q --no-estimates -j 2 -o "$work/sweep" \
     echo
     echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'),"
     echo "$(free -g | awk '/Mem:/ { print $2 }') GB, $(uname -sr), shared with other jobs; commit"
-    echo "$commit, $(date -u +%Y-%m-%d). Release build; wall seconds of the whole"
-    echo "process (deck read, solve, every output but the PNG: --no-figures), least of 3 runs,"
+    echo "$commit, $(date -u +%Y-%m-%d). Load averages (1, 5, 15 min) $load_start at the start"
+    echo "of the single cases, $load_end at their end. Release build; wall seconds of the whole"
+    echo "process (deck read, solve, every output but the PNG: --no-figures), median of 5 runs,"
     echo "one thread (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1). The homogeneous case is"
     echo "bench/layered_plate.dat with SOIL 8000 kPa 0.45 (the top layer) in place of its three"
     echo "layers (h 4, 6, 10 m; E 8, 20, 60 MPa; nu 0.45, 0.35, 0.3) on a ROUGH base."
+    [ -n "$before_bin" ] && echo "\"before\": the release build of commit $before_rev, its runs interleaved with these."
     echo
-    echo "| case | N_e | estimates | homogeneous s | layered s | ratio | target |"
-    echo "|---|---:|---|---:|---:|---:|---|"
+    if [ -n "$before_bin" ]; then
+        echo "| case | N_e | estimates | homogeneous s | layered s | ratio | target | homogeneous s before | layered s before |"
+        echo "|---|---:|---|---:|---:|---:|---|---:|---:|"
+    else
+        echo "| case | N_e | estimates | homogeneous s | layered s | ratio | target |"
+        echo "|---|---:|---|---:|---:|---:|---|"
+    fi
     for est in yes no; do
         for ne in 200 1000; do
             h=${t[homogeneous_$ne,$est]}
@@ -101,7 +128,9 @@ sweep_no=$(wall "$bin" --no-figures -q --no-estimates -j 2 -o "$work/sweep" \
             else
                 target="layered < 2 s: $(awk -v a="$l" 'BEGIN { print (a < 2) ? "met" : "MISSED" }')"
             fi
-            echo "| frictional raft, 3 layers on rock | $ne | $est | $h | $l | $(ratio "$l" "$h") | $target |"
+            row="| frictional raft, 3 layers on rock | $ne | $est | $h | $l | $(ratio "$l" "$h") | $target |"
+            [ -n "$before_bin" ] && row="$row ${tb[homogeneous_$ne,$est]} | ${tb[layered_$ne,$est]} |"
+            echo "$row"
         done
     done
     echo
