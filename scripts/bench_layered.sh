@@ -28,7 +28,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/bench_layered.XXXXXX")
 trap 'remove_reference_tree "$work/before"; rm -rf "$work"' EXIT
 mkdir -p "$out"
 # the commit measured (taken before the benchmark rewrites output/bench)
-commit="$(git rev-parse --short HEAD)$([ -n "$(git status --porcelain --untracked-files=no)" ] && echo ' + uncommitted changes')"
+commit="$(git rev-parse --short HEAD)$([ -z "$(git status --porcelain --untracked-files=no)" ] || echo ' + uncommitted changes')"
 before_rev=${1:-}
 before_bin=''
 if [ -n "$before_rev" ]; then
