@@ -93,7 +93,7 @@ done
 load_end=$(cut -d' ' -f1-3 /proc/loadavg)
 rm -rf "$work/sweep"
 sweep_est=$(wall "$bin" --no-figures -q -j 2 -o "$work/sweep" bench/layered_sweep_1000.dat)
-rows=$(($(wc -l <"$work/sweep/layered_sweep_1000_summary.csv") - 1))
+rows=$(($(grep -vc '^#' "$work/sweep/layered_sweep_1000_summary.csv") - 1))   # header and # lines out
 rm -rf "$work/sweep"
 sweep_no=$(wall "$bin" --no-figures -q --no-estimates -j 2 -o "$work/sweep" \
     bench/layered_sweep_1000.dat)
