@@ -209,23 +209,32 @@ contains
         real(dp), intent(out) :: w
         type(error_t), allocatable, intent(out) :: err
         character(len=80), allocatable :: lines(:)
-        type(deck_t) :: deck
-        type(model_t) :: m
         type(case_t) :: c
-        character(len=:), allocatable :: label
         lines = [character(len=80) :: 'MODEL     PLATE', &
                  'NONDIM    1.0E4     0.1       0.3       '//nu, &
                  'FRICTION  0.0', 'LOAD      POINT     1.0', 'MESH      48        EDGES', 'END']
         if (layer) lines = [character(len=80) :: lines(1:2), 'LAYER     1.0', &
                             'BASE      ROUGH', lines(3:)]
-        call parse_deck('punch', lines, deck, err)
+        call solve_lines('punch', lines, c, err)
+        if (allocated(err)) return
+        w = c%sol%z(settlement_dof(c))
+    end subroutine punch_settlement
+
+    !> The first case of a deck given as lines, solved.
+    subroutine solve_lines(name, lines, c, err)
+        character(len=*), intent(in) :: name
+        character(len=80), intent(in) :: lines(:)
+        type(case_t), intent(out) :: c
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        character(len=:), allocatable :: label
+        call parse_deck(name, lines, deck, err)
         if (allocated(err)) return
         call case_model(deck, 1, m, label, err)
         if (allocated(err)) return
         call solve_case(m, c, err)
-        if (allocated(err)) return
-        w = c%sol%z(settlement_dof(c))
-    end subroutine punch_settlement
+    end subroutine solve_lines
 
     !> Index in z of the settlement w at the plate's centre (the first w coefficient).
     integer function settlement_dof(c) result(k)
@@ -397,20 +406,13 @@ contains
     subroutine test_flexible_circle(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=80), allocatable :: lines(:)
-        type(deck_t) :: deck
-        type(model_t) :: m
         type(case_t) :: c
-        character(len=:), allocatable :: label
         lines = [character(len=80) :: 'MODEL     PLATE', 'GEOMETRY  150.0     1.0', &
                  'STRUCTURE 1.0       0.3', 'LAYER     150.0     3000.0    0.30', &
                  'LAYER     600.0     200.0     0.35', 'BASE      HALFSPACE 40.0      0.40', &
                  'FRICTION  0.0', 'LOAD      PATCH     77754.4182          0.0       150.0', &
                  'MESH      100       EDGES', 'END']
-        call parse_deck('flexible_circle', lines, deck, err)
-        if (allocated(err)) return
-        call case_model(deck, 1, m, label, err)
-        if (allocated(err)) return
-        call solve_case(m, c, err)
+        call solve_lines('flexible_circle', lines, c, err)
         if (allocated(err)) return
         call check_close(err, c%summary%w_min%x, 150.0_dp, 0.0_dp, 1.0e-12_dp, &
                          'least settlement at the rim')
