@@ -18,7 +18,14 @@
 !!    load, i.e. C_zz = 1/(2m) at every wavenumber;
 !!  * the rigid frictionless punch on a layer: an independent Nystrom solution of the
 !!    Fredholm equation of the second kind of the dual integral equations (Lebedev & Ufliand
-!!    1958; Sneddon's method), built here from the compliance alone (no basis, no T).
+!!    1958; Sneddon's method), built here from the compliance alone (no basis, no T);
+!!  * the table of J0 and J1 of the plate's Hankel transforms (layered_bessel): Fortran's
+!!    intrinsic bessel_j0 / bessel_j1;
+!!  * surface displacements under two uniform circles on two layers over a half-space: the
+!!    program ELLEA1 (Levenberg 2016, "ELLEA1: Isotropic layered elasticity in Excel"), as
+!!    published in the validation data of ALVA (Skar, Andersen & Nielsen 2020, repository
+!!    github.com/asmusskar/ALVA, commit 258c6ad: validation/validation_let.m, table
+!!    'duallength', the case of examples/ALVA_let_validation3.m), printed to 1e-4 mm.
 module test_layered_ground
     use kinds, only: dp, pi
     use harness, only: unittest_t, new_unittest, check, check_close, error_t
@@ -34,6 +41,7 @@ module test_layered_ground
                                   BASE_HALFSPACE
     use layered_influence, only: assemble_layered_flexibility, layered_correction, &
                                  layered_surface_displacement
+    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_pair
     implicit none
     private
     public :: collect_layered_ground, punch_nystrom
@@ -57,7 +65,9 @@ contains
                  new_unittest('linear_modulus_sublayers', test_linear_modulus), &
                  new_unittest('displacements_consistent_with_t', test_displacement_vs_t), &
                  new_unittest('no_far_field_over_rock', test_no_far_field), &
-                 new_unittest('bad_grounds_refused', test_bad_grounds)]
+                 new_unittest('bad_grounds_refused', test_bad_grounds), &
+                 new_unittest('bessel_table', test_bessel_table), &
+                 new_unittest('ellea1_two_circles_surface_profile', test_ellea1_profile)]
     end subroutine collect_layered_ground
 
     ! ------------------------------------------------------------------ helpers
@@ -786,4 +796,79 @@ contains
         if (allocated(err)) return
         call check(err, index(failure%message, 'too thin') > 0, 'thin-layer message')
     end subroutine test_bad_grounds
+
+    !> The piecewise Taylor polynomials of layered_bessel against the intrinsic bessel_j0 /
+    !! bessel_j1 (a different algorithm: rational approximations and the asymptotic form) at
+    !! 20000 points of [0, 200] (irrational steps, every part of a piece), to 1e-15 absolute
+    !! (|J| <= 1; the truncation bound is 7e-19, the rest is rounding of both), and at the
+    !! ends of the table.
+    subroutine test_bessel_table(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(bessel_table_t) :: table
+        integer, parameter :: n = 20000
+        real(dp) :: x(n), j0(n), j1(n)
+        integer :: i
+        call new_bessel_table(200.0_dp, table)
+        points: do i = 1, n
+            x(i) = min(200.0_dp, real(i, dp)*sqrt(2.0_dp)/141.4_dp)
+        end do points
+        call bessel_table_pair(table, x, j0, j1)
+        call check(err, maxval(abs(j0 - bessel_j0(x))) <= 1.0e-15_dp, 'J0 from the table')
+        if (allocated(err)) return
+        call check(err, maxval(abs(j1 - bessel_j1(x))) <= 1.0e-15_dp, 'J1 from the table')
+        if (allocated(err)) return
+        call bessel_table_pair(table, [0.0_dp, 200.0_dp], j0(1:2), j1(1:2))
+        call check_close(err, j0(1), 1.0_dp, 0.0_dp, 1.0e-15_dp, 'J0(0)')
+        if (allocated(err)) return
+        call check_close(err, j1(1), 0.0_dp, 0.0_dp, 1.0e-15_dp, 'J1(0)')
+        if (allocated(err)) return
+        call check_close(err, j0(2), bessel_j0(200.0_dp), 0.0_dp, 1.0e-15_dp, 'J0(200)')
+    end subroutine test_bessel_table
+
+    !> ELLEA1's surface displacements (module header) under two uniform circles, q = 1.1 MPa,
+    !! a = 150 mm, centred at (0, -150) and (0, 150) mm, on 150 mm of E = 3000 MPa, nu = 0.30
+    !! over 600 mm of E = 200 MPa, nu = 0.35 over a half-space of E = 40 MPa, nu = 0.40, all
+    !! bonded; points (x, 0) on the surface. By superposition each is the sum of the two
+    !! circles' axisymmetric fields at r = sqrt(x^2 + 150^2): u_z = 2 w(r), u_x = 2 u_r(r) x/r.
+    !! The uniform traction is exact in P1, so the layered ground's surface displacement is
+    !! the only thing tested. Tolerance 1e-4 mm: one unit of the table's last printed digit
+    !! (its rounding, 5e-5, and ELLEA1's own quadrature, which scatters by about as much about
+    !! a smooth curve).
+    subroutine test_ellea1_profile(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), parameter :: x(16) = [0.0_dp, 50.0_dp, 100.0_dp, 150.0_dp, 200.0_dp, &
+            250.0_dp, 300.0_dp, 350.0_dp, 400.0_dp, 450.0_dp, 500.0_dp, 750.0_dp, 1000.0_dp, &
+            1500.0_dp, 2000.0_dp, 3000.0_dp]                                        ! [mm]
+        real(dp), parameter :: u_z(16) = [1.9174_dp, 1.8929_dp, 1.8416_dp, 1.7772_dp, &
+            1.7063_dp, 1.6333_dp, 1.5614_dp, 1.4923_dp, 1.4272_dp, 1.3665_dp, 1.3101_dp, &
+            1.0843_dp, 0.9232_dp, 0.6995_dp, 0.5484_dp, 0.3657_dp]                  ! [mm]
+        real(dp), parameter :: u_x(16) = [0.0_dp, -0.0365_dp, -0.0660_dp, -0.0866_dp, &
+            -0.0994_dp, -0.1060_dp, -0.1082_dp, -0.1073_dp, -0.1047_dp, -0.1011_dp, &
+            -0.0970_dp, -0.0782_dp, -0.0658_dp, -0.0506_dp, -0.0398_dp, -0.0254_dp]  ! [mm]
+        type(layered_ground_t) :: ground
+        type(basis_t) :: bx, bz
+        real(dp) :: r(16), u_r(16), w(16)
+        character(len=60) :: what
+        integer :: i
+        call new_layered_ground(ground, [150.0_dp, 600.0_dp], [3000.0_dp, 200.0_dp], &
+                                [3000.0_dp, 200.0_dp], [0.30_dp, 0.35_dp], BASE_HALFSPACE, &
+                                40.0_dp, 0.40_dp, err)
+        if (allocated(err)) return
+        call make_bases(0.0_dp, 150.0_dp, 20, 'UNIFORM', INTERP_P1, INTERP_P1, bx, bz, err)
+        if (allocated(err)) return
+        r = sqrt(x**2 + 150.0_dp**2)
+        call layered_surface_displacement(bx, bz, .false., 0.0_dp, ground, &
+                                          spread(0.0_dp, 1, bx%n_dof), &
+                                          spread(1.1_dp, 1, bz%n_dof), r, u_r, w, err)
+        if (allocated(err)) return
+        points: do i = 1, size(x)
+            write (what, '("u_z at x = ",f6.0," mm")') x(i)
+            call check_close(err, 2.0_dp*w(i), u_z(i), 0.0_dp, 1.0e-4_dp, trim(what))
+            if (allocated(err)) return
+            write (what, '("u_x at x = ",f6.0," mm")') x(i)
+            call check_close(err, 2.0_dp*u_r(i)*x(i)/r(i), u_x(i), 0.0_dp, 1.0e-4_dp, &
+                             trim(what))
+            if (allocated(err)) return
+        end do points
+    end subroutine test_ellea1_profile
 end module test_layered_ground

@@ -9,6 +9,10 @@
 !!    program (a NONDIM plate of rho = 1e4 under a central unit load, f = 0) against the
 !!    independent Nystrom solution of the punch's Fredholm equation (test_layered_ground's
 !!    punch_nystrom: the compliance alone, no basis, no T);
+!!  * a flexible uniform circle (a plate of rho = 1.6e-11 under a PATCH load over its whole
+!!    radius, f = 0) on two layers over a half-space through the program: its rim settlement
+!!    against the program ELLEA1 as published in ALVA's validation data (the case and the
+!!    source are in test_layered_ground's header, test ellea1_two_circles_surface_profile);
 !!  * the same, NONDIM moduli and thicknesses: a deck with layers in units of a and moduli
 !!    relative to the top layer equals the physical deck that it stands for;
 !!  * a layered SWEEP deck through the driver (run_analysis, files in build/): the run's one
@@ -42,7 +46,8 @@ contains
                  new_unittest('rigid_punch_on_layer_vs_nystrom', test_punch), &
                  new_unittest('nondim_layers_equal_physical', test_nondim_physical), &
                  new_unittest('layered_sweep_through_driver', test_sweep_driver), &
-                 new_unittest('depth_error_only_for_its_cases', test_depth_error)]
+                 new_unittest('depth_error_only_for_its_cases', test_depth_error), &
+                 new_unittest('flexible_circle_vs_ellea1', test_flexible_circle)]
     end subroutine collect_layered_program
 
     !> Every case of every deck of input/ (the layered example decks excepted: they have no
@@ -204,23 +209,32 @@ contains
         real(dp), intent(out) :: w
         type(error_t), allocatable, intent(out) :: err
         character(len=80), allocatable :: lines(:)
-        type(deck_t) :: deck
-        type(model_t) :: m
         type(case_t) :: c
-        character(len=:), allocatable :: label
         lines = [character(len=80) :: 'MODEL     PLATE', &
                  'NONDIM    1.0E4     0.1       0.3       '//nu, &
                  'FRICTION  0.0', 'LOAD      POINT     1.0', 'MESH      48        EDGES', 'END']
         if (layer) lines = [character(len=80) :: lines(1:2), 'LAYER     1.0', &
                             'BASE      ROUGH', lines(3:)]
-        call parse_deck('punch', lines, deck, err)
+        call solve_lines('punch', lines, c, err)
+        if (allocated(err)) return
+        w = c%sol%z(settlement_dof(c))
+    end subroutine punch_settlement
+
+    !> The first case of a deck given as lines, solved.
+    subroutine solve_lines(name, lines, c, err)
+        character(len=*), intent(in) :: name
+        character(len=80), intent(in) :: lines(:)
+        type(case_t), intent(out) :: c
+        type(error_t), allocatable, intent(out) :: err
+        type(deck_t) :: deck
+        type(model_t) :: m
+        character(len=:), allocatable :: label
+        call parse_deck(name, lines, deck, err)
         if (allocated(err)) return
         call case_model(deck, 1, m, label, err)
         if (allocated(err)) return
         call solve_case(m, c, err)
-        if (allocated(err)) return
-        w = c%sol%z(settlement_dof(c))
-    end subroutine punch_settlement
+    end subroutine solve_lines
 
     !> Index in z of the settlement w at the plate's centre (the first w coefficient).
     integer function settlement_dof(c) result(k)
@@ -381,4 +395,29 @@ contains
         inquire (file=dir//'/ldepth_001.json', exist=written)
         call check(err, .not. written, 'a case of a refused run wrote its files')
     end subroutine test_depth_error
+
+    !> ELLEA1's settlement at the origin under two touching circles (q = 1.1 MPa, a = 150 mm,
+    !! centres at y = +-150 mm; 150 mm of E = 3000 MPa, nu = 0.30 over 600 mm of E = 200 MPa,
+    !! nu = 0.35 over E = 40 MPa, nu = 0.40): 1.9174 mm, i.e. twice one circle's settlement at
+    !! its rim. Here the circle is a plate of E = 1 MPa, h = 1 mm (rho = 2 D (1 - nu_f^2) /
+    !! (E_f a^3) = 1.6e-11: it carries nothing) under PATCH F_z = 1.1 pi 150^2 N over its
+    !! radius, deck units N and mm, MESH 100 EDGES (rim settlement converged to 1e-6 mm:
+    !! 0.958722 at N_e = 100 and 200). Tolerance 1e-4 mm, one unit of the table's last digit.
+    subroutine test_flexible_circle(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=80), allocatable :: lines(:)
+        type(case_t) :: c
+        lines = [character(len=80) :: 'MODEL     PLATE', 'GEOMETRY  150.0     1.0', &
+                 'STRUCTURE 1.0       0.3', 'LAYER     150.0     3000.0    0.30', &
+                 'LAYER     600.0     200.0     0.35', 'BASE      HALFSPACE 40.0      0.40', &
+                 'FRICTION  0.0', 'LOAD      PATCH     77754.4182          0.0       150.0', &
+                 'MESH      100       EDGES', 'END']
+        call solve_lines('flexible_circle', lines, c, err)
+        if (allocated(err)) return
+        call check_close(err, c%summary%w_min%x, 150.0_dp, 0.0_dp, 1.0e-12_dp, &
+                         'least settlement at the rim')
+        if (allocated(err)) return
+        call check_close(err, 2.0_dp*c%summary%w_min%value, 1.9174_dp, 0.0_dp, 1.0e-4_dp, &
+                         'twice the rim settlement of the flexible circle [mm]')
+    end subroutine test_flexible_circle
 end module test_layered_program

@@ -30,9 +30,11 @@
 !! - s_x cos kx)] dk, u_x = (1/pi) int [K_xx (c_x cos kx + s_x sin kx) + K_q (s_z cos kx -
 !! c_z sin kx)] dk (c, s the transforms of sigma).
 !! Each is a sum over wavenumber nodes of rank-one terms, assembled as products
-!! B^T diag(w phi) B by dgemm, then symmetrised. The transforms of the basis functions come
-!! from Gauss–Legendre rules per element with enough points for the highest wavenumber
-!! (element_points); the Bessel functions are Fortran's intrinsic bessel_j0/j1.
+!! B^T diag(w phi) B by dgemm straight into T (the blocks on the diagonal by column tiles,
+!! lower triangle only; T_zx whole), then mirrored into the upper triangle. The transforms of
+!! the basis functions come from Gauss–Legendre rules per element with enough points for the
+!! highest wavenumber (element_points); the plate's Bessel functions from the table of
+!! layered_bessel (Taylor polynomials per unit interval of the argument).
 module layered_influence
     use kinds, only: dp, pi
     use errors, only: error_t, new_error, add_context, EXIT_INPUT
@@ -45,6 +47,7 @@ module layered_influence
                                   halfspace_phi, BASE_SMOOTH
     use layered_wavenumbers, only: wavenumber_rule_t, graded_breaks, panel_rule, &
                                    log_product_rule, panel_phase, panel_points
+    use layered_bessel, only: bessel_table_t, new_bessel_table, bessel_table_pair
     implicit none
     private
 
@@ -59,7 +62,8 @@ module layered_influence
 
 contains
 
-    !> T of the layered ground (module header): the entry point.
+    !> T of the layered ground (module header): the entry point. The correction's lower
+    !! triangle is added to the homogeneous T (exactly symmetric) in place, then mirrored.
     subroutine assemble_layered_flexibility(bx, bz, beam, width, ground, t_mat, err)
         type(basis_t), intent(in) :: bx                   !! basis of sigma_x
         type(basis_t), intent(in) :: bz                   !! basis of sigma_z, same mesh
@@ -68,9 +72,12 @@ contains
         type(layered_ground_t), intent(in) :: ground      !! resolved layers and base
         real(dp), allocatable, intent(out) :: t_mat(:, :) !! (nx+nz)^2
         type(error_t), allocatable, intent(out) :: err    !! allocated on failure
-        real(dp), allocatable :: t_corr(:, :)
-        call layered_correction(bx, bz, beam, width, ground, t_corr, err)
-        if (allocated(err)) return
+        integer :: nodes
+        call check_problem(bx, bz, beam, width, ground, err)
+        if (allocated(err)) then
+            call add_context(err, 'layered ground')
+            return
+        end if
         if (beam) then
             call assemble_beam_flexibility(bx, bz, ground%shear_modulus(1), ground%poisson(1), &
                                            width, t_mat, err)
@@ -79,7 +86,9 @@ contains
                                             t_mat, err)
         end if
         if (allocated(err)) return
-        t_mat = t_mat + t_corr
+        call add_correction(bx, bz, beam, width, ground, 1.0_dp, t_mat, nodes, err)
+        if (allocated(err)) return
+        call mirror_lower(t_mat)
     end subroutine assemble_layered_flexibility
 
     !> T_corr = T - T_hs(top layer) (module header).
@@ -104,18 +113,48 @@ contains
             return
         end if
         allocate (t_corr(bx%n_dof + bz%n_dof, bx%n_dof + bz%n_dof), source=0.0_dp)
-        if (beam) then
-            call beam_correction(bx, bz, width, ground, factor, t_corr, nodes, err)
-        else
-            call plate_correction(bx, bz, ground, factor, t_corr, nodes, err)
-        end if
+        call add_correction(bx, bz, beam, width, ground, factor, t_corr, nodes, err)
         if (present(n_nodes)) n_nodes = nodes
-        if (allocated(err)) then
-            call add_context(err, 'layered ground')
-            return
-        end if
-        t_corr = 0.5_dp*(t_corr + transpose(t_corr))
+        if (allocated(err)) return
+        call mirror_lower(t_corr)
     end subroutine layered_correction
+
+    !> t_mat's lower triangle (with its diagonal tiles) += T_corr (module header); the upper
+    !! triangle is left to mirror_lower.
+    subroutine add_correction(bx, bz, beam, width, ground, factor, t_mat, nodes, err)
+        type(basis_t), intent(in) :: bx, bz
+        logical, intent(in) :: beam
+        real(dp), intent(in) :: width
+        type(layered_ground_t), intent(in) :: ground
+        real(dp), intent(in) :: factor
+        real(dp), intent(inout) :: t_mat(:, :)
+        integer, intent(out) :: nodes
+        type(error_t), allocatable, intent(out) :: err
+        if (beam) then
+            call beam_correction(bx, bz, width, ground, factor, t_mat, nodes, err)
+        else
+            call plate_correction(bx, bz, ground, factor, t_mat, nodes, err)
+        end if
+        if (allocated(err)) call add_context(err, 'layered ground')
+    end subroutine add_correction
+
+    !> t(j, i) = t(i, j) for i > j, by tiles (the correction is assembled in the lower
+    !! triangle; a symmetric result by construction, as (T + T^T)/2 was).
+    subroutine mirror_lower(t)
+        real(dp), intent(inout) :: t(:, :)
+        integer, parameter :: tile = 64
+        integer :: n, ib, jb, i, j
+        n = size(t, 1)
+        column_tiles: do jb = 1, n, tile
+            row_tiles: do ib = jb, n, tile
+                columns: do j = jb, min(jb + tile - 1, n)
+                    rows: do i = max(ib, j + 1), min(ib + tile - 1, n)
+                        t(j, i) = t(i, j)
+                    end do rows
+                end do columns
+            end do row_tiles
+        end do column_tiles
+    end subroutine mirror_lower
 
     !> Grounds and structures the correction cannot take, with the reason.
     pure subroutine check_problem(bx, bz, beam, width, ground, err)
@@ -151,9 +190,10 @@ contains
         integer, intent(out) :: n_nodes
         type(error_t), allocatable, intent(out) :: err
         type(wavenumber_rule_t) :: rule
-        real(dp), allocatable :: phi(:, :), hx(:, :), hz(:, :)
+        type(bessel_table_t) :: table
+        real(dp), allocatable :: phi(:, :), hx(:, :), hz(:, :), w(:)
         real(dp) :: radius, omega
-        integer :: nx, n
+        integer :: nx, n, ld
         radius = bx%x(bx%ne)
         omega = 2.0_dp*radius + 2.0_dp*ground%thickness(1)
         call outer_rule(ground, refine*omega, .false., rule, err)
@@ -163,13 +203,14 @@ contains
         call drop_tail(ground, phi, rule)
         n = size(rule%node)
         n_nodes = n
-        call hankel_transforms(bx, 1, rule%node, refine, hx)
-        call hankel_transforms(bz, 0, rule%node, refine, hz)
+        call new_bessel_table(maxval(rule%node)*radius, table)
+        call hankel_transforms(bx, bz, rule%node, refine, table, hx, hz)
         nx = bx%n_dof
-        call add_products(t_corr, 1, 1, hx, 2.0_dp*pi*rule%weight*phi(1:n, 3), hx)
-        call add_products(t_corr, nx + 1, nx + 1, hz, 2.0_dp*pi*rule%weight*phi(1:n, 1), hz)
-        call add_products(t_corr, 1, nx + 1, hx, -2.0_dp*pi*rule%weight*phi(1:n, 2), hz)
-        t_corr(nx + 1:, 1:nx) = transpose(t_corr(1:nx, nx + 1:))
+        ld = size(t_corr, 1)
+        w = 2.0_dp*pi*rule%weight
+        call add_products(t_corr, ld, 1, 1, hx, w*phi(1:n, 3), hx, .true.)
+        call add_products(t_corr, ld, nx + 1, nx + 1, hz, w*phi(1:n, 1), hz, .true.)
+        call add_products(t_corr, ld, nx + 1, 1, hz, -w*phi(1:n, 2), hx, .false.)
     end subroutine plate_correction
 
     !> Beam: inner integrals K_zz, K_xx, K_q per wavenumber, Fourier transforms, the blocks.
@@ -184,7 +225,7 @@ contains
         type(wavenumber_rule_t) :: rule
         real(dp), allocatable :: kernel(:, :), cx(:, :), sx(:, :), cz(:, :), sz(:, :), w(:)
         real(dp) :: length, omega
-        integer :: nx
+        integer :: nx, ld
         length = bx%x(bx%ne) - bx%x(0)
         omega = length + 2.0_dp*ground%thickness(1)
         call outer_rule(ground, refine*omega, .true., rule, err)
@@ -196,13 +237,13 @@ contains
         call fourier_transforms(bz, rule%node, refine, cz, sz)
         nx = bx%n_dof
         w = rule%weight/pi
-        call add_products(t_corr, 1, 1, cx, w*kernel(:, 2), cx)
-        call add_products(t_corr, 1, 1, sx, w*kernel(:, 2), sx)
-        call add_products(t_corr, nx + 1, nx + 1, cz, w*kernel(:, 1), cz)
-        call add_products(t_corr, nx + 1, nx + 1, sz, w*kernel(:, 1), sz)
-        call add_products(t_corr, nx + 1, 1, sz, w*kernel(:, 3), cx)
-        call add_products(t_corr, nx + 1, 1, cz, -w*kernel(:, 3), sx)
-        t_corr(1:nx, nx + 1:) = transpose(t_corr(nx + 1:, 1:nx))
+        ld = size(t_corr, 1)
+        call add_products(t_corr, ld, 1, 1, cx, w*kernel(:, 2), cx, .true.)
+        call add_products(t_corr, ld, 1, 1, sx, w*kernel(:, 2), sx, .true.)
+        call add_products(t_corr, ld, nx + 1, nx + 1, cz, w*kernel(:, 1), cz, .true.)
+        call add_products(t_corr, ld, nx + 1, nx + 1, sz, w*kernel(:, 1), sz, .true.)
+        call add_products(t_corr, ld, nx + 1, 1, sz, w*kernel(:, 3), cx, .false.)
+        call add_products(t_corr, ld, nx + 1, 1, cz, -w*kernel(:, 3), sx, .false.)
     end subroutine beam_correction
 
     !> Surface displacements of the layered ground at x_eval under sigma_x = sum rx_b g_b,
@@ -253,7 +294,9 @@ contains
         real(dp), allocatable, intent(out) :: du_r(:), du_z(:)
         type(error_t), allocatable, intent(out) :: err
         type(wavenumber_rule_t) :: rule
+        type(bessel_table_t) :: table
         real(dp), allocatable :: phi(:, :), hx(:, :), hz(:, :), p(:), q(:), a_z(:), a_r(:)
+        real(dp), allocatable :: j0(:), j1(:)
         real(dp) :: omega
         integer :: i, n
         omega = bx%x(bx%ne) + maxval(abs(x_eval)) + 2.0_dp*ground%thickness(1)
@@ -263,16 +306,17 @@ contains
         call compliance_correction(ground, rule%node, phi)
         call drop_tail(ground, phi, rule)
         n = size(rule%node)
-        call hankel_transforms(bx, 1, rule%node, 1.0_dp, hx)
-        call hankel_transforms(bz, 0, rule%node, 1.0_dp, hz)
+        call new_bessel_table(maxval(rule%node)*max(bx%x(bx%ne), maxval(abs(x_eval))), table)
+        call hankel_transforms(bx, bz, rule%node, 1.0_dp, table, hx, hz)
         q = matmul(hx, rx)
         p = matmul(hz, rz)
         a_z = rule%weight*(phi(1:n, 1)*p - phi(1:n, 2)*q)
         a_r = rule%weight*(-phi(1:n, 2)*p + phi(1:n, 3)*q)
-        allocate (du_r(size(x_eval)), du_z(size(x_eval)))
+        allocate (du_r(size(x_eval)), du_z(size(x_eval)), j0(n), j1(n))
         points: do i = 1, size(x_eval)
-            du_z(i) = sum(a_z*bessel_j0(rule%node*x_eval(i)))
-            du_r(i) = sum(a_r*bessel_j1(rule%node*x_eval(i)))
+            call bessel_table_pair(table, rule%node*abs(x_eval(i)), j0, j1)
+            du_z(i) = sum(a_z*j0)
+            du_r(i) = sign(1.0_dp, x_eval(i))*sum(a_r*j1)   ! J1 is odd
         end do points
     end subroutine plate_displacement_correction
 
@@ -491,31 +535,32 @@ contains
         end if
     end function strip_sinc
 
-    !> ht(k, a) = int g_a(r) J_order(node(k) r) r dr (order 0 or 1).
-    subroutine hankel_transforms(basis, order, node, refine, ht)
-        type(basis_t), intent(in) :: basis
-        integer, intent(in) :: order
+    !> hx(k, a) = int gx_a(r) J1(node(k) r) r dr and hz(k, a) = int gz_a(r) J0(node(k) r) r dr
+    !! for the bases bx, bz of one mesh: one pass, J0 and J1 from the table at each point.
+    subroutine hankel_transforms(bx, bz, node, refine, table, hx, hz)
+        type(basis_t), intent(in) :: bx, bz
         real(dp), intent(in) :: node(:)
         real(dp), intent(in) :: refine
-        real(dp), allocatable, intent(out) :: ht(:, :)
+        type(bessel_table_t), intent(in) :: table   !! J0, J1 up to maxval(node) r_max
+        real(dp), allocatable, intent(out) :: hx(:, :), hz(:, :)
         real(dp), allocatable :: xi(:), w(:)
-        real(dp) :: x, val(max_local), der(max_local), bessel(size(node))
+        real(dp) :: x, val(max_local), der(max_local), j0(size(node)), j1(size(node)), half
         integer :: e, q, i, m, idx(max_local)
-        allocate (ht(size(node), basis%n_dof), source=0.0_dp)
-        elements: do e = 1, basis%ne
-            m = element_points(refine*maxval(node)*(basis%x(e) - basis%x(e - 1)))
+        allocate (hx(size(node), bx%n_dof), hz(size(node), bz%n_dof), source=0.0_dp)
+        elements: do e = 1, bx%ne
+            half = 0.5_dp*(bx%x(e) - bx%x(e - 1))
+            m = element_points(refine*maxval(node)*(bx%x(e) - bx%x(e - 1)))
             call element_rule(m, xi, w)
             points: do q = 1, m
-                call eval_basis(basis, e, xi(q), idx, val, der, x)
-                if (order == 0) then
-                    bessel = bessel_j0(node*x)
-                else
-                    bessel = bessel_j1(node*x)
-                end if
-                locals: do i = 1, basis%n_local
-                    ht(:, idx(i)) = ht(:, idx(i)) + (0.5_dp*(basis%x(e) - basis%x(e - 1))* &
-                                                     w(q)*val(i)*x)*bessel
-                end do locals
+                call eval_basis(bz, e, xi(q), idx, val, der, x)
+                call bessel_table_pair(table, node*x, j0, j1)
+                normal: do i = 1, bz%n_local
+                    hz(:, idx(i)) = hz(:, idx(i)) + (half*w(q)*val(i)*x)*j0
+                end do normal
+                call eval_basis(bx, e, xi(q), idx, val, der, x)
+                radial: do i = 1, bx%n_local
+                    hx(:, idx(i)) = hx(:, idx(i)) + (half*w(q)*val(i)*x)*j1
+                end do radial
             end do points
         end do elements
     end subroutine hankel_transforms
@@ -574,20 +619,32 @@ contains
         call gauss_legendre(m, xi, w)
     end subroutine element_rule
 
-    !> t(row0:, col0:) += a^T diag(d) b (dgemm), a (n, na), b (n, nb).
-    subroutine add_products(t_mat, row0, col0, a, d, b)
-        real(dp), intent(inout) :: t_mat(:, :)
+    !> t(row0:, col0:) += a^T diag(d) b (dgemm into t in place), a (n, na), b (n, nb); for a
+    !! block on the diagonal (lower, a = b) only the lower triangle, by column tiles, with the
+    !! tiles on the diagonal whole (mirror_lower overwrites the upper triangle).
+    subroutine add_products(t_mat, ld, row0, col0, a, d, b, lower)
+        integer, intent(in) :: ld                   !! rows of t_mat
+        real(dp), intent(inout) :: t_mat(ld, ld)    !! explicit shape: dgemm writes into it
         integer, intent(in) :: row0, col0
         real(dp), intent(in) :: a(:, :), d(:), b(:, :)
-        real(dp), allocatable :: ad(:, :), block(:, :)
-        integer :: j
-        allocate (ad(size(a, 1), size(a, 2)), block(size(a, 2), size(b, 2)))
+        logical, intent(in) :: lower
+        integer, parameter :: tile = 128
+        real(dp), allocatable :: ad(:, :)
+        integer :: j, n, k
+        allocate (ad(size(a, 1), size(a, 2)))
         columns: do j = 1, size(a, 2)
             ad(:, j) = a(:, j)*d
         end do columns
-        call dgemm('T', 'N', size(a, 2), size(b, 2), size(a, 1), 1.0_dp, ad, size(a, 1), &
-                   b, size(b, 1), 0.0_dp, block, size(a, 2))
-        t_mat(row0:row0 + size(a, 2) - 1, col0:col0 + size(b, 2) - 1) = &
-            t_mat(row0:row0 + size(a, 2) - 1, col0:col0 + size(b, 2) - 1) + block
+        n = size(a, 1)
+        if (.not. lower) then
+            call dgemm('T', 'N', size(a, 2), size(b, 2), n, 1.0_dp, ad, n, b, size(b, 1), &
+                       1.0_dp, t_mat(row0, col0), ld)
+            return
+        end if
+        column_tiles: do j = 1, size(b, 2), tile
+            k = min(tile, size(b, 2) - j + 1)
+            call dgemm('T', 'N', size(a, 2) - j + 1, k, n, 1.0_dp, ad(1, j), n, b(:, j:), &
+                       size(b, 1), 1.0_dp, t_mat(row0 + j - 1, col0 + j - 1), ld)
+        end do column_tiles
     end subroutine add_products
 end module layered_influence
