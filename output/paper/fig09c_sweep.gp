@@ -163,7 +163,7 @@ unset key
 set title p_cut ? sprintf('Contact pressure (clipped at %.4g %s; red triangles: clipped)', p_clip, p_unit) : 'Contact pressure'
 set ylabel lab_p
 plot for [i=1:n] word(files, i) skip skip_rows u c_x:(clip_p(column(c_p))) w l lw 2 lc rgb colour(i) dt dash(i) notitle, \
-     for [i=1:n] word(files, i) skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.5 lc rgb colour(i) notitle, \
+     for [i=1:n] word(files, i) skip skip_rows u c_x:((column(c_p) > p_clip*1.0001) ? p_clip : 1/0) w p pt 9 ps 1.5 lc rgb '#c00000' notitle, \
      @zero_line
 
 set title 'Shear traction on the soil'
