@@ -14,7 +14,10 @@
 # one (e.g. release builds of two commits copied out of build/). REPS (default 20) is the
 # number of runs of each small measurement; the sweeps run 3 times without figures and once
 # with (about 90 s a run before they used both cores; SWEEPS=no leaves the sweeps out, for a
-# quick look). Writes output/bench/fixed_cost.md.
+# quick look). Where valgrind is installed, the instructions of --version, the input error and
+# the N_e = 10, 20, 40 cases are counted too (callgrind; INSTRUCTIONS=no leaves them out):
+# unlike the times, they do not depend on what else the machine runs. Writes
+# output/bench/fixed_cost.md.
 set -euo pipefail
 # one run time for the runs compared, so that their outputs can be the same bytes (the
 # run's date and time are stamped on the outputs: src/run_identity.f90)
@@ -57,10 +60,13 @@ nb=${#bins[@]}
 # --- the programs and decks measured --------------------------------------------------------
 printf 'int main(void) { return 0; }\n' >"$work/empty.c"
 gcc -O2 -o "$work/empty" "$work/empty.c"
-# the libraries fricon links, each loaded even though nothing calls it (ldd lists the same)
+# the libraries fricon links (fpm.toml's link list, in its order), each loaded even though
+# nothing calls it
+libs=$(sed -n 's/^link *= *\[\(.*\)\]/\1/p' fpm.toml | tr ',' '\n' | tr -d '" ' | sed 's/^/-l/')
+[ -n "$libs" ] || { echo "bench_fixed_cost: no link list in fpm.toml" >&2; exit 1; }
 printf 'program noop\nend program noop\n' >"$work/noop.f90"
-gfortran -O2 -fopenmp -o "$work/noop" "$work/noop.f90" -Wl,--no-as-needed -lgsl -lgslcblas \
-    -llapack -lopenblas
+# shellcheck disable=SC2086
+gfortran -O2 -fopenmp -o "$work/noop" "$work/noop.f90" -Wl,--no-as-needed $libs
 for ne in 10 20 40; do
     sed "s/^MESH      20 /MESH      $(printf '%-3s' "$ne")/" input/plate_nondim.dat \
         >"$work/plate$ne.dat"
@@ -152,6 +158,37 @@ row 'N_e = 10 with error estimates' '' 0 0 "$reps" @BIN@ -q --no-figures -o @OUT
     "$work/plate10.dat"
 row 'N_e = 10 with its figure' '' 0 0 "$reps" @BIN@ -q --no-estimates -o @OUT@ \
     "$work/plate10.dat"
+# --- instructions: the same count on a busy machine as on an idle one --------------------
+# valgrind's callgrind counts the instructions of the whole process (the loader, the
+# libraries' start, the run, the exit); the same build, deck and environment give the same
+# count to a few hundred in millions (OpenBLAS's idle worker thread), whatever else runs
+count_rows=()    # "label|count of each build"
+count_row() {    # count_row LABEL EXPECTED_STATUS COMMAND...
+    local label=$1 expected=$2 line=$1 k status words
+    shift 2
+    for ((k = 0; k < nb; k++)); do
+        words=("${@//@BIN@/${bins[$k]}}")
+        words=("${words[@]//@OUT@/$work/out_${tags[$k]}}")
+        status=0
+        valgrind --tool=callgrind --callgrind-out-file=/dev/null "${words[@]}" >/dev/null \
+            2>"$work/callgrind.txt" || status=$?
+        if [ "$status" -ne "$expected" ]; then
+            echo "bench_fixed_cost: exit status $status under valgrind (expected $expected)" >&2
+            exit 1
+        fi
+        line="$line|$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$work/callgrind.txt")"
+    done
+    count_rows+=("$line")
+    echo "  $line (instructions)" >&2
+}
+if [ "${INSTRUCTIONS:-yes}" != no ] && command -v valgrind >/dev/null; then
+    count_row '`fricon --version`' 0 @BIN@ --version
+    count_row 'a deck with an input error' 1 @BIN@ "${lean[@]}" "$work/bad.dat"
+    for ne in 10 20 40; do
+        count_row "N_e = $ne without figure and estimates" 0 @BIN@ "${lean[@]}" \
+            "$work/plate$ne.dat"
+    done
+fi
 sweep_rows=()
 summaries_differ=()
 sweep_kinds=(no yes)
@@ -215,40 +252,62 @@ done
         echo "$line"
     done
     echo
-    [ ${#sweep_rows[@]} -eq 4 ] || exit 0
-    echo "The sweep bench/sweep_1000.dat (1000 NONDIM plates, N_e = 10, with error estimates):"
-    echo
-    echo "(wall time: the median of the runs; processor time: user + system of all threads and"
-    echo "gnuplots, mean of the runs; load: the 1-minute load average when the measurement began)"
-    echo
-    header="| figures | -j | load |"
-    rule="|---|---|---:|"
-    for t in "${tags[@]}"; do
-        header="$header $t wall [s] | $t [cases/s] | $t processor [s] |"
-        rule="$rule---:|---:|---:|"
-    done
-    echo "$header"
-    echo "$rule"
-    for r in "${sweep_rows[@]}"; do
-        IFS='|' read -r -a f <<<"$r"
-        line="| ${f[0]} | ${f[1]} | ${f[2]} |"
-        for ((k = 0; k < nb; k++)); do
-            read -r med least cpu <<<"${f[$((k + 3))]}"
-            line="$line $(awk -v ms="$med" -v c="$cpu" 'BEGIN { printf "%.2f | %.0f | %.2f", ms / 1000, 1e6 / ms, c / 1000 }') |"
-        done
-        echo "$line"
-    done
-    echo
-    for ((k = 0; k < nb; k++)); do
-        wall() { echo "${sweep_rows[$1]}" | cut -d'|' -f$((k + 4)) | cut -d' ' -f1; }
-        awk -v t="${tags[$k]}" -v a="$(wall 2)" -v b="$(wall 3)" -v c="$(wall 1)" \
-            'BEGIN { printf "%s: with figures, 2 threads %.2f times as fast as 1 (target: at least 1.8); without figures on 2 threads %.0f cases/s (target: at least 1000).\n", t, a / b, 1e6 / c }'
+    if [ ${#count_rows[@]} -gt 0 ]; then
+        echo "Instructions of the whole process, counted by valgrind's callgrind (millions; the"
+        echo "same on a busy machine as on an idle one, so that builds compare whatever the load):"
         echo
-    done
-    if [ ${#summaries_differ[@]} -gt 0 ]; then
-        echo "The two builds' sweep summaries DIFFER (${summaries_differ[*]}): output/bench/fixed_cost_summary_diff_*.txt."
-    elif [ "$nb" -eq 2 ]; then
-        echo "The two builds' sweep summaries are identical in each sweep."
+        header="| |"
+        rule="|---|"
+        for t in "${tags[@]}"; do header="$header $t [M] |"; rule="$rule---:|"; done
+        [ "$nb" -eq 2 ] && { header="$header after / before |"; rule="$rule---:|"; }
+        echo "$header"
+        echo "$rule"
+        for r in "${count_rows[@]}"; do
+            IFS='|' read -r -a f <<<"$r"
+            line="| ${f[0]} |"
+            for ((k = 0; k < nb; k++)); do
+                line="$line $(awk -v n="${f[$((k + 1))]}" 'BEGIN { printf "%.2f", n / 1e6 }') |"
+            done
+            [ "$nb" -eq 2 ] && line="$line $(awk -v a="${f[1]}" -v b="${f[2]}" 'BEGIN { printf "%.3f", b / a }') |"
+            echo "$line"
+        done
+        echo
+    fi
+    if [ ${#sweep_rows[@]} -eq 4 ]; then
+        echo "The sweep bench/sweep_1000.dat (1000 NONDIM plates, N_e = 10, with error estimates):"
+        echo
+        echo "(wall time: the median of the runs; processor time: user + system of all threads and"
+        echo "gnuplots, mean of the runs; load: the 1-minute load average when the measurement began)"
+        echo
+        header="| figures | -j | load |"
+        rule="|---|---|---:|"
+        for t in "${tags[@]}"; do
+            header="$header $t wall [s] | $t [cases/s] | $t processor [s] |"
+            rule="$rule---:|---:|---:|"
+        done
+        echo "$header"
+        echo "$rule"
+        for r in "${sweep_rows[@]}"; do
+            IFS='|' read -r -a f <<<"$r"
+            line="| ${f[0]} | ${f[1]} | ${f[2]} |"
+            for ((k = 0; k < nb; k++)); do
+                read -r med least cpu <<<"${f[$((k + 3))]}"
+                line="$line $(awk -v ms="$med" -v c="$cpu" 'BEGIN { printf "%.2f | %.0f | %.2f", ms / 1000, 1e6 / ms, c / 1000 }') |"
+            done
+            echo "$line"
+        done
+        echo
+        for ((k = 0; k < nb; k++)); do
+            wall() { echo "${sweep_rows[$1]}" | cut -d'|' -f$((k + 4)) | cut -d' ' -f1; }
+            awk -v t="${tags[$k]}" -v a="$(wall 2)" -v b="$(wall 3)" -v c="$(wall 1)" \
+                'BEGIN { printf "%s: with figures, 2 threads %.2f times as fast as 1 (target: at least 1.8); without figures on 2 threads %.0f cases/s (target: at least 1000).\n", t, a / b, 1e6 / c }'
+            echo
+        done
+        if [ ${#summaries_differ[@]} -gt 0 ]; then
+            echo "The two builds' sweep summaries DIFFER (${summaries_differ[*]}): output/bench/fixed_cost_summary_diff_*.txt."
+        elif [ "$nb" -eq 2 ]; then
+            echo "The two builds' sweep summaries are identical in each sweep."
+        fi
     fi
 } >"$work/fixed_cost.md"
 mv "$work/fixed_cost.md" "$out/fixed_cost.md"

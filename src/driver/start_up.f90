@@ -1,10 +1,9 @@
 !> What every program of the project does once before any work, while it runs one thread:
 !! GSL's error handler off (its default aborts the process; every GSL status is checked
-!! instead), the process's quadrature tables written (afterwards only read) and the run's
-!! date and time recorded (run_identity).
+!! instead) and the run's date and time recorded (run_identity). The quadrature tables are
+!! tabulated by the first case that needs them (singular_quadrature::shared_gauss_tables).
 module start_up
     use gsl_wrappers, only: gsl_start
-    use singular_quadrature, only: start_gauss_tables
     use run_identity, only: record_run_time
     implicit none
     private
@@ -16,7 +15,6 @@ contains
     !> Once, first thing in a program.
     subroutine start_program()
         call gsl_start()
-        call start_gauss_tables()
         call record_run_time()
     end subroutine start_program
 end module start_up

@@ -27,7 +27,10 @@ module flexibility_cache
     private
     public :: flexibility_of, new_flexibility_cache, flexibility_cache_hits
 
-    integer, parameter :: max_entries = 4      !! a mesh and its estimate's N_e/2 and N_e/4
+    !> a case's mesh and its estimate's two meshes (N_e/2 with N_e/4 or 2 N_e), for up to
+    !! four grounds (or beam widths) of a sweep: a sweep over two grounds, such as the
+    !! 1000-case benchmark, needs six, and four entries evicted each before its next use
+    integer, parameter :: max_entries = 12
     integer, parameter :: max_unknowns = 600   !! tractions (nr); T of nr^2 numbers
 
     !> What T depends on.

@@ -43,7 +43,7 @@ module singular_quadrature
     private
 
     public :: split_kernel_t, gauss_tables_t, point_rule_t, line_rule_t
-    public :: shared_gauss_tables, start_gauss_tables, build_pair_rule, build_line_rule
+    public :: shared_gauss_tables, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
     public :: check_bases, near_ratio, n_max, points_for_ratio
@@ -143,9 +143,9 @@ module singular_quadrature
         end subroutine displacement_split_kernel
     end interface
 
-    !> The process's GL tables, written once by start_gauss_tables (start-up), then only read.
-    type(gauss_tables_t), protected, save :: process_tables
-    logical, protected, save :: tables_ready = .false.
+    !> The process's GL tables, written once by the first shared_gauss_tables, then only read.
+    type(gauss_tables_t), save :: process_tables
+    logical, save :: tables_ready = .false.
 
 contains
 
@@ -159,25 +159,21 @@ contains
         end do rules
     end subroutine new_gauss_tables
 
-    !> Tabulate the process's copy of the GL rules and product-log weights, once, at start-up
-    !! (start_up, before any thread): afterwards the tables are only read.
-    subroutine start_gauss_tables()
-        if (tables_ready) return
-        call new_gauss_tables(process_tables)
-        tables_ready = .true.
-    end subroutine start_gauss_tables
-
-    !> A copy of all GL rules and product-log weights: the process's, tabulated once at
-    !! start-up (the same numbers at every assembly and tabulation; computing the rules took
+    !> A copy of all GL rules and product-log weights: the process's, tabulated once, by the
+    !! first call (the same numbers at every assembly and tabulation; computing the rules took
     !! 2 % of an assembly at N_e = 50 and, rule by rule on demand, 2 % of a 1000-case sweep's
-    !! stations), or tabulated here for a caller that did not start up.
+    !! stations). A process that solves nothing (an input error, --version) never tabulates.
     subroutine shared_gauss_tables(tab)
         type(gauss_tables_t), intent(out) :: tab   !! the rules
-        if (tables_ready) then
-            tab = process_tables
-        else
-            call new_gauss_tables(tab)
+        ! one thread at a time looks: the threads of a sweep never see half-written tables
+        !$omp critical (fricon_gauss_tables)
+        if (.not. tables_ready) then
+            call new_gauss_tables(process_tables)
+            tables_ready = .true.
         end if
+        !$omp end critical (fricon_gauss_tables)
+        ! written once above, only read from here on
+        tab = process_tables
     end subroutine shared_gauss_tables
 
     !> Tabulate the n-point rule (and, for n <= n_log, its product-log weights).
