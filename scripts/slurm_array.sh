@@ -2,15 +2,17 @@
 # README's Slurm job-array example run on a real single-node Slurm: starts munge (if it is not
 # running), slurmctld and slurmd on this machine with a throw-away configuration, submits the
 # sweep DECK as a job array of TASKS shards (fricon --shard I/TASKS in each task), waits,
-# merges the shards (fricon --merge: the summary and the response figure), checks that every
-# file is byte-identical to a serial run of the same deck (the sweep overlay aside: shards
-# draw none), and stops the daemons it started. Debian: run as root after
+# merges the shards (fricon --merge: the summary, the response figure of a SWEEP deck and the
+# envelope of a deck with load combinations), checks that every file is byte-identical to a
+# serial run of the same deck (the sweep overlay aside: shards draw none), and stops the
+# daemons it started. Debian: run as root after
 # `apt-get install slurm-wlm munge` (slurmctld, slurmd, the client commands and munged):
 #
 #   bash scripts/slurm_array.sh [DECK [TASKS]]      (default input/sweep.dat, 3 tasks)
 #
-# Writes output/slurm/: STEM_summary.csv (merged), STEM_response.png and slurm_run.md (what
-# ran, the comparison, the machine). The daemons' files live in a temporary folder, removed at
+# Writes output/slurm/: STEM_summary.csv (merged), STEM_response.png (a SWEEP deck),
+# STEM_envelope.txt (a deck with COMBINE cards) and slurm_run.md (what ran, the comparison,
+# the machine). The daemons' files live in a temporary folder, removed at
 # the end (kept, and named, when something fails).
 set -euo pipefail
 # one run time for the runs compared, so that their outputs can be the same bytes (the
@@ -138,7 +140,14 @@ done
 # --- the merged summary and the response figure fricon --merge drew from it -----------------
 out=output/slurm
 mkdir -p "$out"
-cp "$work/results/${stem}_summary.csv" "$work/results/${stem}_response.png" "$out/"
+cp "$work/results/${stem}_summary.csv" "$out/"
+merged_files="[${stem}_summary.csv](${stem}_summary.csv) (merged)"
+for extra in "${stem}_response.png" "${stem}_envelope.txt"; do
+    if [ -f "$work/results/$extra" ]; then
+        cp "$work/results/$extra" "$out/"
+        merged_files="$merged_files, [$extra]($extra)"
+    fi
+done
 {
     echo "# The Slurm job array on a real single-node Slurm"
     echo
@@ -149,10 +158,10 @@ cp "$work/results/${stem}_summary.csv" "$work/results/${stem}_response.png" "$ou
     echo "(its cases with their figures); the tasks ran from the first start to the last end in"
     echo "$(cat "$work"/task_*.start "$work"/task_*.end | sort -n | awk 'NR == 1 { a = $1 } { b = $1 } END { printf "%.2f", b - a }') s;"
     echo "\`sbatch --wait\` returned $(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }') s after submission (it polls the job's state)."
-    echo "Merged by \`fricon --merge\` (summary and response figure); $compared files compared with a serial run of the deck:"
+    echo "Merged by \`fricon --merge\` (summary, response figure of a sweep, envelope of combinations); $compared files compared with a serial run of the deck:"
     echo "all byte-identical (the serial run's overlay ${stem}_sweep.* aside: shards draw none)."
     echo
-    echo "Files: [${stem}_summary.csv](${stem}_summary.csv) (merged), [${stem}_response.png](${stem}_response.png)."
+    echo "Files: $merged_files."
 } >"$out/slurm_run.md"
 ok=yes
 cat "$out/slurm_run.md"

@@ -29,6 +29,7 @@ program tester
     use test_load_combinations, only: collect_load_combinations
     use test_design_checks, only: collect_design_checks
     use test_records, only: collect_records
+    use test_shard_envelope, only: collect_shard_envelope
     use test_html_record, only: collect_html_record
     implicit none
     type(unittest_t), allocatable :: tests(:)
@@ -38,7 +39,8 @@ program tester
         'halfspace_beam station_displacement structure deck_reader contact_solver '// &
         'report_writer convergence design_values paper malformed_decks newton properties '// &
         'simplifications adaptive nested_spaces architecture layered_ground layered_program '// &
-        'foundation_springs unit_checks design_checks records html_record load_combinations '
+        'foundation_springs unit_checks design_checks records html_record load_combinations '// &
+        'shard_envelope '
 
     want_suite = ''
     want_test = ''
@@ -153,6 +155,10 @@ program tester
     if (wanted('records')) then
         call collect_records(tests)
         call run_suite('records', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('shard_envelope')) then
+        call collect_shard_envelope(tests)
+        call run_suite('shard_envelope', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('html_record')) then
         call collect_html_record(tests)

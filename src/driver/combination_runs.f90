@@ -1,6 +1,7 @@
 !> The run-level part of a deck with load combinations: after every case (each combination
 !! at each sweep point) is solved and written, the envelope over all of them and its console
-!! line. A sharded run (--shard I/N) solves part of the cases and writes no envelope.
+!! line. A sharded run (--shard I/N) solves part of the cases and writes no envelope, and
+!! says so: fricon --merge of the shards writes it (shard_envelope).
 module combination_runs
     use errors, only: error_t, EXIT_OK, EXIT_INPUT
     use deck_reader, only: deck_t
@@ -30,6 +31,9 @@ contains
         character(len=:), allocatable :: deck_id
         if (shard_count > 1) then
             call remove_envelope_files(out_dir, deck%stem)
+            write (log_unit, '(a)') deck%stem//'_envelope: none from a shard; fricon '// &
+                '--merge '//out_dir//'/'//deck%stem//'_summary.shard-*-of-'// &
+                int_text(shard_count)//'.csv writes it when every shard has finished'
             return
         end if
         deck_id = ''

@@ -168,8 +168,9 @@ contains
             '      --shard I/N   solve cases I, I+N, I+2N, ... of each sweep only (a job array:', &
             '                    fricon --merge joins the shard summaries)', &
             '      --merge SHARD...  join the shard summaries STEM_summary.shard-I-of-N.csv of', &
-            '                    a sweep into STEM_summary.csv and its response figure (in -o DIR', &
-            '                    or the first shard''s folder); every shard, no case twice', &
+            '                    a sweep into STEM_summary.csv and its response figure, and a', &
+            '                    deck with load combinations into STEM_envelope.* too (in -o', &
+            '                    DIR or the first shard''s folder); every shard, no case twice', &
             '  -q, --quiet       no progress on standard error', &
             '      --progress    progress even when standard error is not a terminal', &
             '  -h, --help        this text', &

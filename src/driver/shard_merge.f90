@@ -4,8 +4,9 @@
 !! is the first shard's stamp line and header, then every case's row in case order, so it
 !! is byte for byte the single run's when the runs share their run time (SOURCE_DATE_EPOCH).
 !! The deck comes from the cases' JSON summaries beside each shard ("deck_sha256" must agree,
-!! "deck_text" gives the titles and units of the figure). Every check runs before anything
-!! is written: a refusal leaves the output folder as it was.
+!! "deck_text" gives the titles and units of the figure). For a deck with load combinations
+!! the merge also writes the envelope a single run writes (shard_envelope). Every check runs
+!! before anything is written: a refusal leaves the output folder as it was.
 module shard_merge
     use kinds, only: dp
     use iso_fortran_env, only: error_unit, output_unit
@@ -20,6 +21,8 @@ module shard_merge
     use atomic_files, only: open_temporary, commit_file
     use output_paths, only: base_name, prepare_output_dir, remove_output
     use text_files, only: read_lines, text_lines
+    use case_json_reader, only: json_field
+    use shard_envelope, only: shard_envelope_t, read_shard_envelope, write_shard_envelope
     implicit none
     private
 
@@ -51,8 +54,8 @@ contains
         logical, intent(in) :: quiet               !! no line on standard output
         integer, intent(out) :: status             !! 0 merged, 1 refused
         type(error_t), allocatable :: err
-        character(len=:), allocatable :: merged
-        call merge_shards(paths, out_dir, figures, merged, err)
+        character(len=:), allocatable :: merged, envelope
+        call merge_shards(paths, out_dir, figures, merged, err, envelope)
         if (allocated(err)) then
             write (error_unit, '(a)') 'ERROR: fricon --merge: '//err%message// &
                 ' (nothing written)'
@@ -60,30 +63,40 @@ contains
             return
         end if
         status = EXIT_OK
+        if (len(envelope) > 0) merged = merged//' and '//envelope
         if (.not. quiet) write (output_unit, '(a)') 'fricon --merge: '// &
             int_text(size(paths))//' shards -> '//merged
     end subroutine run_merge
 
     !> Merge the shard summaries `paths` into out_dir (''; the first shard's folder):
-    !! STEM_summary.csv, STEM_response.gp and (figures) STEM_response.png. `merged` names the
-    !! summary written.
-    subroutine merge_shards(paths, out_dir, figures, merged, err)
+    !! STEM_summary.csv, STEM_response.gp and (figures) STEM_response.png, and for a deck with
+    !! load combinations STEM_envelope.txt, .json and .csv. `merged` names the summary
+    !! written.
+    subroutine merge_shards(paths, out_dir, figures, merged, err, envelope)
         character(len=*), intent(in) :: paths(:)     !! the shard summaries, any order
         character(len=*), intent(in) :: out_dir      !! -o DIR, or '' (the first shard's folder)
         logical, intent(in) :: figures               !! draw the response figure
         character(len=:), allocatable, intent(out) :: merged   !! the summary written
         type(error_t), allocatable, intent(out) :: err   !! a refusal (nothing written)
+        !> the envelope's report written ('' for a deck without load combinations)
+        character(len=:), allocatable, intent(out), optional :: envelope
         type(shard_t), allocatable :: shards(:)
-        character(len=:), allocatable :: stem, folder, rows(:), deck_lines(:)
+        character(len=:), allocatable :: stem, folder, rows(:), deck_lines(:), jsons(:)
         type(case_result_t), allocatable :: results(:)
+        type(deck_t) :: deck
         type(model_t) :: m
+        type(shard_envelope_t) :: env
+        if (present(envelope)) envelope = ''
         call read_shards(paths, shards, stem, err)
         if (allocated(err)) return
         call ordered_rows(shards, rows, err)
         if (allocated(err)) return
-        call shard_deck(shards, rows, deck_lines, err)
+        call case_jsons(shards, rows, jsons)
+        call shard_deck(jsons, deck_lines, err)
         if (allocated(err)) return
-        call rebuilt_results(stem, deck_lines, shards(1)%header, rows, m, results, err)
+        call rebuilt_results(stem, deck_lines, shards(1)%header, rows, deck, m, results, err)
+        if (allocated(err)) return
+        call read_shard_envelope(deck, m, jsons, shards(1)%stamp, results, env, err)
         if (allocated(err)) return
         folder = out_dir
         if (len(folder) == 0) folder = shards(1)%folder
@@ -93,7 +106,14 @@ contains
         call write_merged(merged, shards(1), rows, err)
         if (allocated(err)) return
         call write_response_plot(folder, stem, m, results, figures, err)
-        if (allocated(err)) call remove_output(merged)
+        if (.not. allocated(err)) call write_shard_envelope(folder, stem, env, results, err)
+        if (allocated(err)) then
+            call remove_output(merged)
+            call remove_output(folder//'/'//stem//'_response.gp')
+            call remove_output(folder//'/'//stem//'_response.png')
+            return
+        end if
+        if (present(envelope) .and. env%wanted) envelope = folder//'/'//stem//'_envelope.txt'
     end subroutine merge_shards
 
     !> Read every shard, after checking their names: one stem, one N, each I from 1 to N
@@ -297,93 +317,65 @@ contains
         if (ios /= 0) n = 0
     end subroutine case_of_row
 
-    !> The deck of the shards: every case's JSON beside its shard must carry the same
-    !! "deck_sha256"; its "deck_text" as lines.
-    subroutine shard_deck(shards, rows, lines, err)
+    !> Each case's JSON summary: CASE.json beside the shard summary holding its row.
+    subroutine case_jsons(shards, rows, jsons)
         type(shard_t), intent(in) :: shards(:)
         character(len=*), intent(in) :: rows(:)
-        character(len=:), allocatable, intent(out) :: lines(:)
-        type(error_t), allocatable, intent(out) :: err
-        character(len=:), allocatable :: json, hash, first_hash, text, first_json
+        character(len=:), allocatable, intent(out) :: jsons(:)
         integer :: k, r, i, n
-        first_hash = ''
+        allocate (character(len=maxval([(len(shards(k)%folder), k=1, size(shards))]) + &
+                  len(rows) + 6) :: jsons(size(rows)))
         do k = 1, size(shards)
             do r = 1, size(shards(k)%rows)
                 call case_of_row(shards(k)%rows(r)%text, i, n)
-                json = shards(k)%folder//'/'//rows(i)(1:index(rows(i), ',') - 1)//'.json'
-                call json_field(json, 'deck_sha256', hash)
-                if (len(hash) == 0) then
-                    call new_error(err, EXIT_INPUT, 'no deck_sha256 in '//json//' (beside '// &
-                        shards(k)%path//'): the deck of the shard cannot be told')
-                    return
-                end if
-                if (len(first_hash) == 0) then
-                    first_hash = hash
-                    first_json = json
-                end if
-                if (hash /= first_hash) then
-                    call new_error(err, EXIT_INPUT, json//' and '//first_json//' are cases '// &
-                        'of different decks (deck_sha256): shards of different decks')
-                    return
-                end if
+                jsons(i) = shards(k)%folder//'/'//rows(i)(1:index(rows(i), ',') - 1)//'.json'
             end do
         end do
-        call json_field(first_json, 'deck_text', text)
+    end subroutine case_jsons
+
+    !> The deck of the shards: every case's JSON summary must carry the same "deck_sha256";
+    !! its "deck_text" as lines.
+    subroutine shard_deck(jsons, lines, err)
+        character(len=*), intent(in) :: jsons(:)
+        character(len=:), allocatable, intent(out) :: lines(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: hash, first_hash, text
+        integer :: i
+        logical :: there
+        do i = 1, size(jsons)
+            call json_field(trim(jsons(i)), 'deck_sha256', hash)
+            if (len(hash) == 0) then
+                inquire (file=trim(jsons(i)), exist=there)
+                if (.not. there) then
+                    call new_error(err, EXIT_INPUT, 'the case''s JSON summary '// &
+                        trim(jsons(i))//' is missing (it lies beside its shard summary)')
+                else
+                    call new_error(err, EXIT_INPUT, 'no deck_sha256 in '//trim(jsons(i))// &
+                        ': the deck of the shard cannot be told')
+                end if
+                return
+            end if
+            if (i == 1) first_hash = hash
+            if (hash /= first_hash) then
+                call new_error(err, EXIT_INPUT, trim(jsons(i))//' and '//trim(jsons(1))// &
+                    ' are cases of different decks (deck_sha256): shards of different decks')
+                return
+            end if
+        end do
+        call json_field(trim(jsons(1)), 'deck_text', text)
         call text_lines(text, lines)
     end subroutine shard_deck
-
-    !> The value of '  "key": "...",' in a JSON summary, its escapes undone ('' if none).
-    subroutine json_field(path, key, value)
-        character(len=*), intent(in) :: path, key
-        character(len=:), allocatable, intent(out) :: value
-        character(len=:), allocatable :: lines(:)
-        integer :: k, at, last
-        logical :: ok
-        value = ''
-        call read_lines(path, lines, ok)
-        if (.not. ok) return
-        do k = 1, size(lines)
-            if (index(lines(k), '  "'//key//'": "') /= 1) cycle
-            at = len(key) + 7
-            last = len_trim(lines(k))
-            if (lines(k)(last:last) == ',') last = last - 1
-            value = unescaped(lines(k)(at + 1:last - 1))
-            return
-        end do
-    end subroutine json_field
-
-    !> A JSON string's content with \n, \", \\ and \/ undone.
-    pure function unescaped(text) result(plain)
-        character(len=*), intent(in) :: text
-        character(len=:), allocatable :: plain
-        integer :: i, k
-        allocate (character(len=len(text)) :: plain)
-        i = 1
-        k = 0
-        do while (i <= len(text))
-            k = k + 1
-            if (text(i:i) == '\' .and. i < len(text)) then
-                i = i + 1
-                plain(k:k) = text(i:i)
-                if (text(i:i) == 'n') plain(k:k) = achar(10)
-            else
-                plain(k:k) = text(i:i)
-            end if
-            i = i + 1
-        end do
-        plain = plain(1:k)
-    end function unescaped
 
     !> The cases as the response figure needs them (name, label, status, key results) from
     !! the merged rows, with the key results' labels and units of the deck: the summary's
     !! key columns must be the deck's.
-    subroutine rebuilt_results(stem, deck_lines, header, rows, m, results, err)
+    subroutine rebuilt_results(stem, deck_lines, header, rows, deck, m, results, err)
         character(len=*), intent(in) :: stem, header
         character(len=*), intent(in) :: deck_lines(:), rows(:)
+        type(deck_t), intent(out) :: deck
         type(model_t), intent(out) :: m
         type(case_result_t), allocatable, intent(out) :: results(:)
         type(error_t), allocatable, intent(out) :: err
-        type(deck_t) :: deck
         type(summary_t) :: empty
         type(entry_t), allocatable :: template(:)
         character(len=:), allocatable :: label, fields(:), names(:)

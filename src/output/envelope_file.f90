@@ -2,15 +2,19 @@
 !! combinations' own: STEM_envelope.txt (the report's table), STEM_envelope.json and
 !! STEM_envelope.csv (doc/OUTPUT.md). Written only when every combination solved: an
 !! envelope without one of them would not be the envelope; otherwise, and when a file
-!! cannot be written, none of the three is left (an earlier run's included).
+!! cannot be written, none of the three is left (an earlier run's included). The envelope is
+!! of the design values as the cases' JSON summaries hold them (json_number's 16 significant
+!! digits), so that fricon --merge, which reads them there (case_json_reader), writes the
+!! same bytes as a single run.
 module envelope_file
     use errors, only: error_t, new_error, EXIT_OK, EXIT_INPUT, EXIT_INTERNAL
     use design_envelope, only: design_value_t, envelope_t, envelope_of
     use case_files, only: case_result_t
     use atomic_files, only: open_temporary, commit_file
-    use output_paths, only: remove_output
+    use output_paths, only: remove_output, base_name
+    use case_json_reader, only: read_json_number
     use json_text, only: json_string, json_number
-    use run_identity, only: program_name, program_version, run_time, run_stamp
+    use run_identity, only: program_name, program_version, run_time
     use deck_fields, only: int_text
     implicit none
     private
@@ -23,28 +27,35 @@ contains
 
     !> STEM_envelope.txt, .json and .csv of the run's cases (results, in case order; their
     !! names STEM_TAG, the governing case named by TAG). No file when a case failed (err
-    !! says which) or when a file cannot be written.
-    subroutine write_envelope_files(out_dir, stem, title, deck_path, deck_id, results, err)
+    !! says which) or when a file cannot be written. The files name the deck by its file
+    !! name, as the cases' files do.
+    subroutine write_envelope_files(out_dir, stem, title, deck_path, deck_id, results, err, &
+                                    time)
         character(len=*), intent(in) :: out_dir, stem     !! output folder; the deck's stem
         character(len=*), intent(in) :: title             !! the deck's TITLE
         character(len=*), intent(in) :: deck_path         !! the deck as given
         character(len=*), intent(in) :: deck_id           !! its identity ('' if no file)
         type(case_result_t), intent(in) :: results(:)     !! every case of the run
         type(error_t), allocatable, intent(out) :: err    !! a case failed, or a write
+        !> the run time stamped on the files (default: this run's, run_identity)
+        character(len=*), intent(in), optional :: time
         type(envelope_t) :: env
-        character(len=:), allocatable :: base, tags(:)
+        character(len=:), allocatable :: base, tags(:), stamp_time
         base = out_dir//'/'//stem//'_envelope'
+        stamp_time = trim(run_time)
+        if (present(time)) stamp_time = trim(time)
         call envelope_of_results(results, env, err)
         if (allocated(err)) then
             call remove_envelope_files(out_dir, stem)
             return
         end if
         tags = case_tags(stem, results)
-        call write_envelope_csv(base//'.csv', env, tags, err)
-        if (.not. allocated(err)) call write_envelope_json(base//'.json', stem, deck_path, &
-                                                           deck_id, title, results, env, &
-                                                           tags, err)
-        if (.not. allocated(err)) call write_envelope_report(base//'.txt', deck_path, title, &
+        call write_envelope_csv(base//'.csv', stamp_time, env, tags, err)
+        if (.not. allocated(err)) call write_envelope_json(base//'.json', stamp_time, stem, &
+                                                           base_name(deck_path), deck_id, &
+                                                           title, results, env, tags, err)
+        if (.not. allocated(err)) call write_envelope_report(base//'.txt', stamp_time, &
+                                                             base_name(deck_path), title, &
                                                              results, env, tags, err)
         if (allocated(err)) call remove_envelope_files(out_dir, stem)
     end subroutine write_envelope_files
@@ -59,7 +70,8 @@ contains
         end do
     end subroutine remove_envelope_files
 
-    !> The envelope of the cases' design values; an error if a case did not solve.
+    !> The envelope of the cases' design values as their JSON summaries hold them; an error
+    !! if a case did not solve.
     subroutine envelope_of_results(results, env, err)
         type(case_result_t), intent(in) :: results(:)
         type(envelope_t), intent(out) :: env
@@ -80,10 +92,26 @@ contains
                                'lists of design values')
                 return
             end if
-            values(:, k) = results(k)%values
+            values(:, k) = as_written(results(k)%values)
         end do
         env = envelope_of(values)
     end subroutine envelope_of_results
+
+    !> A design value as the case's JSON summary holds it (read back from json_number's
+    !! text: null, a value not finite, is not defined).
+    elemental function as_written(v) result(w)
+        type(design_value_t), intent(in) :: v
+        type(design_value_t) :: w
+        w = v
+        if (v%defined) call read_json_number(json_number(v%value, .true.), w%value, w%defined)
+    end function as_written
+
+    !> The stamp line's text: 'fricon 0.2.0, run TIME'.
+    pure function stamp_of(time) result(text)
+        character(len=*), intent(in) :: time
+        character(len=:), allocatable :: text
+        text = program_name//' '//program_version//', run '//time
+    end function stamp_of
 
     !> The part of each case's name after STEM_: the combination ('ULS1'), after the sweep
     !! point's number in a sweep ('002_ULS1').
@@ -104,15 +132,15 @@ contains
 
     !> STEM_envelope.csv: a `#` line, then a column per design value ('key [unit]') and
     !! four rows: max, max_case, min, min_case (blank where not defined in any case).
-    subroutine write_envelope_csv(path, env, tags, err)
-        character(len=*), intent(in) :: path
+    subroutine write_envelope_csv(path, time, env, tags, err)
+        character(len=*), intent(in) :: path, time
         type(envelope_t), intent(in) :: env
         character(len=*), intent(in) :: tags(:)
         type(error_t), allocatable, intent(out) :: err
         integer :: u, r
         call open_temporary(path, u, err)
         if (allocated(err)) return
-        write (u, '(a)') '# '//run_stamp()//'; envelope of '//int_text(env%cases)//' cases'
+        write (u, '(a)') '# '//stamp_of(time)//'; envelope of '//int_text(env%cases)//' cases'
         write (u, '(a)', advance='no') 'envelope'
         do r = 1, size(env%rows)
             write (u, '(a)', advance='no') ','//trim(env%rows(r)%name)//unit_text(env%rows(r)%unit)
@@ -170,9 +198,9 @@ contains
     end function governing
 
     !> STEM_envelope.json (doc/OUTPUT.md).
-    subroutine write_envelope_json(path, stem, deck_path, deck_id, title, results, env, &
-                                   tags, err)
-        character(len=*), intent(in) :: path, stem, deck_path, deck_id, title
+    subroutine write_envelope_json(path, time, stem, deck_name, deck_id, title, results, &
+                                   env, tags, err)
+        character(len=*), intent(in) :: path, time, stem, deck_name, deck_id, title
         type(case_result_t), intent(in) :: results(:)
         type(envelope_t), intent(in) :: env
         character(len=*), intent(in) :: tags(:)
@@ -183,9 +211,9 @@ contains
         write (u, '(a)') '{'
         write (u, '(a)') '  "program": '//json_string(program_name)//','
         write (u, '(a)') '  "version": '//json_string(program_version)//','
-        write (u, '(a)') '  "run_time": '//json_string(trim(run_time))//','
+        write (u, '(a)') '  "run_time": '//json_string(time)//','
         write (u, '(a)') '  "envelope_of": '//json_string(stem)//','
-        write (u, '(a)') '  "deck": '//json_string(deck_path)//','
+        write (u, '(a)') '  "deck": '//json_string(deck_name)//','
         ! (how a later run of the deck knows this file for its own: output_paths)
         write (u, '(a)') '  "deck_identity": '//json_string(deck_id)//','
         write (u, '(a)') '  "title": '//json_string(trim(title))//','
@@ -224,8 +252,8 @@ contains
     end function json_tag
 
     !> STEM_envelope.txt: the cases and the envelope table.
-    subroutine write_envelope_report(path, deck_path, title, results, env, tags, err)
-        character(len=*), intent(in) :: path, deck_path, title
+    subroutine write_envelope_report(path, time, deck_name, title, results, env, tags, err)
+        character(len=*), intent(in) :: path, time, deck_name, title
         type(case_result_t), intent(in) :: results(:)
         type(envelope_t), intent(in) :: env
         character(len=*), intent(in) :: tags(:)
@@ -239,9 +267,9 @@ contains
         if (allocated(err)) return
         write (u, '(a)') repeat('=', 100)
         write (u, '(a)') ' fricon - envelope of the load combinations'
-        write (u, '(a)') ' deck: '//deck_path
+        write (u, '(a)') ' deck: '//deck_name
         write (u, '(a)') ' title: '//trim(title)
-        write (u, '(a)') ' '//run_stamp()
+        write (u, '(a)') ' '//stamp_of(time)
         write (u, '(a)') repeat('=', 100)
         write (u, '(/,a)') ' 1. CASES (each solved as its own nonlinear problem; files '// &
             'NAME.txt, .csv, .json, ...)'

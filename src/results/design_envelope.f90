@@ -38,7 +38,7 @@ module design_envelope
         integer :: cases = 0                           !! cases enveloped
     end type envelope_t
 
-    public :: design_values, envelope_of
+    public :: design_values, values_of_entries, envelope_of
 
 contains
 
@@ -53,9 +53,9 @@ contains
                                                                                c%summary))])
     end function design_values
 
-    !> design_values' selection from a case's key results.
+    !> design_values' selection from a case's key results (and its checks' entries).
     pure function values_of_entries(e) result(v)
-        type(entry_t), intent(in) :: e(:)   !! key results (summary_table)
+        type(entry_t), intent(in) :: e(:)   !! key results (summary_table), check entries
         type(design_value_t), allocatable :: v(:)
         integer :: i, n
         allocate (v(0))
