@@ -38,6 +38,7 @@ contains
                  new_unittest('loaded_points', test_loaded_points), &
                  new_unittest('relative_rotation_columns', test_relative_rotation), &
                  new_unittest('contact_ratio_liftoff', test_contact_ratio), &
+                 new_unittest('governing_check_has_a_margin', test_governing_with_margin), &
                  new_unittest('failed_check_is_a_result', test_failed_check), &
                  new_unittest('limits_in_wrong_units_warned', test_limit_warnings)]
     end subroutine collect_design_checks
@@ -313,6 +314,42 @@ contains
         ratio = (10.0_dp - c%summary%liftoff(1) - c%summary%liftoff(2))/10.0_dp
         call check_one(checks, 'CONTACT_RATIO', ratio, 1.0e-12_dp, 1.0_dp/ratio, .false., err)
     end subroutine test_contact_ratio
+
+    !> The governing check of a base in full contact under CONTACT 1.0 (no gapping): the
+    !! contact ratio is 1 = its limit, utilisation exactly 1 by construction (it cannot be
+    !! larger than 1 and pass), so the governing check is the one with a margin, the mean
+    !! bearing pressure: 200 kN/m over a 10 m x 2 m beam, V/(b l) = 100 kPa against 400 kPa,
+    !! utilisation 0.25. A gap makes the contact check fail and govern (utilisation 1/ratio).
+    subroutine test_governing_with_margin(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(case_t) :: c
+        type(design_check_t), allocatable :: checks(:)
+        integer :: g
+        call solve_lines(beam_deck('0.5', [card('LOAD', 'PRESSURE', '200.0', '', '-5.0', &
+            '5.0')], [card('CHECK', 'BEARING', '400.0', '1.0E4', '1.0E4'), &
+            card('CHECK', 'CONTACT', '1.0')]), c, checks, err)
+        if (allocated(err)) return
+        call check_one(checks, 'CONTACT_RATIO', 1.0_dp, 1.0e-12_dp, 1.0_dp, .true., err)
+        if (allocated(err)) return
+        g = governing_check(checks)
+        call check(err, g > 0, 'a governing check')
+        if (allocated(err)) return
+        call check(err, trim(checks(g)%name) == 'BEARING_MEAN', 'BEARING_MEAN governs, not '// &
+                   'the met no-gapping check: '//trim(checks(g)%name))
+        if (allocated(err)) return
+        call check_close(err, checks(g)%utilisation, 0.25_dp, 1.0e-12_dp, 0.0_dp, &
+                         'governing utilisation 100/400')
+        if (allocated(err)) return
+        call solve_lines(beam_deck('0.3', [card('LOAD', 'POINT', '1000.0', '', '3.0')], &
+            [card('CHECK', 'BEARING', '1.0E4'), card('CHECK', 'CONTACT', '1.0')]), c, checks, &
+            err)
+        if (allocated(err)) return
+        g = governing_check(checks)
+        call check(err, g > 0, 'a governing check with a gap')
+        if (allocated(err)) return
+        call check(err, trim(checks(g)%name) == 'CONTACT_RATIO' .and. .not. checks(g)%pass, &
+                   'a gap: the failed no-gapping check governs')
+    end subroutine test_governing_with_margin
 
     !> A deck whose bearing check fails (the 12 m strip footing's mean pressure 3300 kN /
     !! (1.5 x 12 m^2) = 183.3 kPa against 150) solves with exit status 0: the report's table

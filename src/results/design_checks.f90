@@ -178,7 +178,10 @@ contains
         c%pass = c%utilisation <= 1.0_dp
     end function new_check
 
-    !> The defined check of largest utilisation (0: none defined).
+    !> The defined check of largest utilisation (0: none defined). A met check without
+    !! margin (without_margin) governs only when no other check is defined: CONTACT 1.0 on a
+    !! base in full contact sits at utilisation 1 by construction and would otherwise hide
+    !! the bearing or settlement utilisation that does tell the margin.
     pure integer function governing_check(checks) result(i)
         type(design_check_t), intent(in) :: checks(:)   !! the case's checks
         integer :: k
@@ -187,11 +190,30 @@ contains
             if (.not. checks(k)%defined) cycle
             if (i == 0) then
                 i = k
-            else if (checks(k)%utilisation > checks(i)%utilisation) then
+            else if (ranks_above(checks(k), checks(i))) then
                 i = k
             end if
         end do
     end function governing_check
+
+    !> a governs before b: a met check without margin ranks below any other; otherwise the
+    !! larger utilisation.
+    pure logical function ranks_above(a, b)
+        type(design_check_t), intent(in) :: a, b
+        if (without_margin(a) .neqv. without_margin(b)) then
+            ranks_above = without_margin(b)
+        else
+            ranks_above = a%utilisation > b%utilisation
+        end if
+    end function ranks_above
+
+    !> A met check whose limit is the largest value its quantity can take: a contact ratio
+    !! is at most 1, so CONTACT 1.0 (no gapping) is met or not, and a met one has no margin
+    !! to report.
+    pure logical function without_margin(c)
+        type(design_check_t), intent(in) :: c
+        without_margin = c%pass .and. trim(c%name) == 'CONTACT_RATIO' .and. c%limit >= 1.0_dp
+    end function without_margin
 
     !> The checks as named design values (summary_table's entry_t), two per check: its value
     !! (key `<name>_value`, lower case) and its utilisation (`<name>_utilisation`); undefined
