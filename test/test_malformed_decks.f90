@@ -41,7 +41,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 110
+    integer, parameter :: n_decks = 112
 
 contains
 
@@ -400,7 +400,16 @@ contains
                  'duplicate load case name ''G'' (first given at line 10)')
         ! f5 (51-60) of the COMBINE card of line 14 reads 1.5x
         call add('combinations', 'combine_factor_not_number.dat', ':14:51-60:', &
-                 'COMBINE factor f5 of load case Q must be a number, got ''1.5x''')
+                 'COMBINE factor f5 of load case Q: expected a finite number such as 0.3, '// &
+                 '30.0E6 or 1.0D-6, got ''1.5x''')
+        ! f3 (31-40) of the COMBINE card of line 14 reads 1.0E308: a number, beyond 1E+30
+        call add('combinations', 'combine_factor_range.dat', ':14:31-40:', &
+                 'COMBINE factor f3 of load case G: a deck number is 0 or has a magnitude of '// &
+                 'at least 1E-30 and below 1E+30, got ''1.0E308''')
+        ! f2 (21-30) of the LOADCASE card of line 10 reads 1.0E300: beyond 1E+30
+        call add('combinations', 'loadcase_gamma_range.dat', ':10:21-30:', &
+                 'positive or blank: a deck number is 0 or has a magnitude of at least 1E-30 '// &
+                 'and below 1E+30, got ''1.0E300''')
         ! LOADCASE Q of line 12 is followed by COMBINE, not LOAD
         call add('combinations', 'loadcase_empty.dat', ':12:1-10:', &
                  'load case ''Q'' is empty')

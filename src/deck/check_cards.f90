@@ -21,7 +21,7 @@ module check_cards
     use deck_fields, only: name_width, field_width, max_fields, FIELD_BLANK, FIELD_OK, &
                            FIELD_BAD, FIELD_RANGE, diagnostics_t, field_first_column, &
                            field_text, read_real_field, read_word_field, int_text, &
-                           add_diagnostic
+                           add_diagnostic, number_problem
     implicit none
     private
 
@@ -119,13 +119,8 @@ contains
         got = trim(adjustl(field_text(text, j + 1)))
         call read_real_field(field_text(text, j + 1), value, status)
         select case (status)
-        case (FIELD_BAD)
-            call field_problem(text, line, j + 1, what//': expected a finite number such as '// &
-                               '0.3, 30.0E6 or 1.0D-6, got '''//got//'''', diag)
-        case (FIELD_RANGE)
-            call field_problem(text, line, j + 1, what//': a deck number is 0 or has a '// &
-                               'magnitude of at least 1E-30 and below 1E+30, got '''//got//'''', &
-                               diag)
+        case (FIELD_BAD, FIELD_RANGE)
+            call field_problem(text, line, j + 1, what//': '//number_problem(status, got), diag)
             status = FIELD_BAD
         case (FIELD_BLANK)
             if (j > 1) return

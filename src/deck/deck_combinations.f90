@@ -24,7 +24,7 @@ module deck_combinations
     use load_combinations, only: load_set_t, load_case_t, combination_t, name_length
     use deck_fields, only: field_width, field_first_column, field_text, read_real_field, &
                            read_word_field, FIELD_BLANK, FIELD_OK, add_diagnostic, diagnostics_t, &
-                           int_text, max_fields, name_width
+                           int_text, max_fields, name_width, number_problem
     implicit none
     private
 
@@ -81,7 +81,12 @@ contains
         call read_real_field(field_text(text, 2), lc%unit_weight, s)
         if (s == FIELD_BLANK) then
             lc%unit_weight = 0.0_dp
-        else if (s /= FIELD_OK .or. lc%unit_weight <= 0.0_dp) then
+        else if (s /= FIELD_OK) then
+            call error_at(diag, line, text, 2, 'LOADCASE gamma (unit weight of the '// &
+                'structure, force/length^3), positive or blank: '// &
+                number_problem(s, trim(adjustl(field_text(text, 2)))))
+            lc%unit_weight = 0.0_dp
+        else if (lc%unit_weight <= 0.0_dp) then
             call error_at(diag, line, text, 2, 'LOADCASE gamma (unit weight of the '// &
                 'structure, force/length^3) must be a positive number or blank, got '''// &
                 trim(adjustl(field_text(text, 2)))//'''')
@@ -165,11 +170,14 @@ contains
                 trim(adjustl(field_text(text, j)))//'''')
             return
         end if
-        if (s_factor /= FIELD_OK) then
+        if (s_factor == FIELD_BLANK) then
             call error_at(diag, line, text, j + 1, 'COMBINE factor f'//int_text(j + 1)// &
-                ' of load case '//trim(word)//' must be a number, got '''// &
-                trim(adjustl(field_text(text, j + 1)))//''''//trim(merge(' (blank)', &
-                '        ', s_factor == FIELD_BLANK)))
+                ' of load case '//trim(word)//' must be a number, got a blank field')
+            return
+        else if (s_factor /= FIELD_OK) then
+            call error_at(diag, line, text, j + 1, 'COMBINE factor f'//int_text(j + 1)// &
+                ' of load case '//trim(word)//': '// &
+                number_problem(s_factor, trim(adjustl(field_text(text, j + 1)))))
             return
         end if
         ref%combination = k

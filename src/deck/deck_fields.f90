@@ -61,9 +61,23 @@ module deck_fields
 
     public :: field_first_column, field_text, read_real_field, read_word_field
     public :: rule_ok, rule_text, to_upper, format_real, int_text
-    public :: add_diagnostic, render_diagnostics
+    public :: add_diagnostic, render_diagnostics, number_problem
 
 contains
+
+    !> What is wrong with a number field read with status FIELD_BAD or FIELD_RANGE (the one
+    !! wording of every card), quoting the field's text got.
+    pure function number_problem(status, got) result(text)
+        integer, intent(in) :: status          !! FIELD_BAD or FIELD_RANGE from read_real_field
+        character(len=*), intent(in) :: got    !! the field as written
+        character(len=:), allocatable :: text
+        if (status == FIELD_RANGE) then
+            text = 'a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, '// &
+                   'got '''//got//''''
+        else
+            text = 'expected a finite number such as 0.3, 30.0E6 or 1.0D-6, got '''//got//''''
+        end if
+    end function number_problem
 
     !> First column of field j (f1 = 11, f2 = 21, ..., f7 = 71).
     pure integer function field_first_column(j)

@@ -56,6 +56,7 @@ module deck_reader
                                  note_load_card, accept_load_card, finish_load_set
     use check_cards, only: read_check_card
     use deck_fields, only: card_width, name_width, field_width, max_fields, FIELD_BLANK, &
+                           number_problem, &
                            FIELD_OK, FIELD_BAD, FIELD_RANGE, RULE_POSITIVE, RULE_NONNEGATIVE, &
                            RULE_NU_STRUCTURE, RULE_NU_SOIL, RULE_OPEN_UNIT, RULE_COUNT, &
                            RULE_ELEMENTS, RULE_STATIONS, diagnostics_t, field_first_column, &
@@ -1713,12 +1714,8 @@ contains
         if (s == FIELD_BAD .and. index(field_value(cd, j), ' ') > 0) then
             call field_error(st, cd, j, what//': expected one number, got '''// &
                              field_value(cd, j)//'''; '//field_hint)
-        else if (s == FIELD_BAD) then
-            call field_error(st, cd, j, what//': expected a finite number such as 0.3, '// &
-                             '30.0E6 or 1.0D-6, got '''//field_value(cd, j)//'''')
-        else if (s == FIELD_RANGE) then
-            call field_error(st, cd, j, what//': a deck number is 0 or has a magnitude of '// &
-                             'at least 1E-30 and below 1E+30, got '''//field_value(cd, j)//'''')
+        else if (s == FIELD_BAD .or. s == FIELD_RANGE) then
+            call field_error(st, cd, j, what//': '//number_problem(s, field_value(cd, j)))
             s = FIELD_BAD
         else if (s == FIELD_BLANK .and. required) then
             call field_error(st, cd, j, what//' is required but the field is blank '// &
