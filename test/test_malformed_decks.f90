@@ -22,7 +22,7 @@ module test_malformed_decks
     use analysis_driver, only: run_analysis
     implicit none
     private
-    public :: collect_malformed_decks
+    public :: collect_malformed_decks, write_lines
 
     character(len=*), parameter :: dir = 'test/data/malformed/'   !! the deck files
     character(len=*), parameter :: out_root = 'build/malformed_out'   !! fresh output folders

@@ -10,6 +10,7 @@ module test_shard_envelope
     use shard_merge, only: merge_shards, run_merge
     use output_paths, only: canonical_path
     use text_files, only: read_lines
+    use test_malformed_decks, only: write_lines
     implicit none
     private
 
@@ -71,7 +72,7 @@ contains
         character(len=:), allocatable :: merged, envelope, deck
         integer :: k, code
         call fresh(dir//'/equal')
-        call write_deck(dir//'/equal/ce.dat', good_deck())
+        call write_lines(dir//'/equal/ce.dat', good_deck())
         deck = canonical_path(dir//'/equal/ce.dat')
         call run_serial_and_shards(deck, dir//'/equal', err)
         if (allocated(err)) return
@@ -114,7 +115,7 @@ contains
         integer :: u, status
         logical :: ok
         call fresh(dir//'/line')
-        call write_deck(dir//'/line/ce.dat', good_deck())
+        call write_lines(dir//'/line/ce.dat', good_deck())
         call read_deck(dir//'/line/ce.dat', deck, err)
         if (allocated(err)) return
         opt = quick(1)
@@ -141,7 +142,7 @@ contains
         character(len=*), parameter :: out = dir//'/stamp/shards'
         integer :: code
         call fresh(dir//'/stamp')
-        call write_deck(dir//'/stamp/ce.dat', good_deck())
+        call write_lines(dir//'/stamp/ce.dat', good_deck())
         call run_shards(dir//'/stamp/ce.dat', out, err)
         if (allocated(err)) return
         call execute_command_line('sed -i "1s/, run .*/, run '//time//'/" '//out// &
@@ -168,7 +169,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         integer :: status
         call fresh(dir//'/failed')
-        call write_deck(dir//'/failed/ce.dat', failing_deck())
+        call write_lines(dir//'/failed/ce.dat', failing_deck())
         call run_deck(dir//'/failed/ce.dat', dir//'/failed/shards', quick(1), status, err)
         if (allocated(err)) return
         call check(err, status == 2 .and. exists(dir//'/failed/shards/ce_001_UP.json'), &
@@ -185,7 +186,7 @@ contains
     subroutine test_missing(err)
         type(error_t), allocatable, intent(out) :: err
         call fresh(dir//'/missing')
-        call write_deck(dir//'/missing/ce.dat', good_deck())
+        call write_lines(dir//'/missing/ce.dat', good_deck())
         call run_shards(dir//'/missing/ce.dat', dir//'/missing/shards', err)
         if (allocated(err)) return
         call execute_command_line('rm '//dir//'/missing/shards/ce_002_ULS.json')
@@ -298,17 +299,6 @@ contains
         character(len=*), intent(in) :: folder
         call execute_command_line('rm -rf '//folder//' && mkdir -p '//folder)
     end subroutine fresh
-
-    subroutine write_deck(path, lines)
-        character(len=*), intent(in) :: path
-        character(len=*), intent(in) :: lines(:)
-        integer :: u, k
-        open (newunit=u, file=path, status='replace', action='write')
-        do k = 1, size(lines)
-            write (u, '(a)') trim(lines(k))
-        end do
-        close (u)
-    end subroutine write_deck
 
     function first_line(path) result(text)
         character(len=*), intent(in) :: path
