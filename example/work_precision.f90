@@ -1,7 +1,7 @@
 !> Work-precision benchmark (doc/OUTPUT.md, Error estimates): for a PLATE and a BEAM case with
 !! lift-off and friction, each discretisation (interpolation x mesh family) over N_e = 10 ... 160
-!! (uniform P1 on to 1280), and the two ADAPT families (P1, and S2 displacements with P1 tractions,
-!! from 16 elements, tol 1e-2 ... 1e-4), the error of W(0), the centre and peak pressure, max |M|
+!! (uniform P1 on to 1280), and the three ADAPT families (P1, S2 everywhere, and S2 displacements
+!! with P1 tractions, from 16 elements, tol 1e-2 ... 1e-4), the error of W(0), the centre and peak pressure, max |M|
 !! and the contact extent against a reference, versus processor time and versus unknowns.
 !!
 !! Reference (subroutine reference): per quantity the better of two Richardson extrapolations,
@@ -9,7 +9,8 @@
 !! (the extrapolation's change to the finest value) is printed with it. Errors are relative
 !! to the reference value (the contact extent: absolute, in t).
 !!
-!! Usage: fpm run --profile release --example work_precision [-- OUTDIR]   (default output/bench)
+!! Usage: fpm run --profile release --example work_precision [-- OUTDIR [GRADING]]
+!! (default output/bench; GRADING of the ADAPT families' 16-element first mesh, default UNIFORM)
 !! Writes OUTDIR/work_precision_{plate,beam}.txt and .png (gnuplot: log error against log time,
 !! one curve per discretisation, one panel per quantity).
 program work_precision
@@ -33,11 +34,11 @@ program work_precision
     integer, parameter :: n_q = 5               !! W(0), Sigma_z(0), max Sigma_z, max |M|, extent
     character(len=*), parameter :: q_names(n_q) = [character(len=12) :: 'W(0)', 'Sigma_z(0)', &
                                                    'max_Sigma_z', 'max|M|', 'extent']
-    integer, parameter :: n_disc = 9
+    integer, parameter :: n_disc = 10
     character(len=*), parameter :: disc_names(n_disc) = [character(len=16) :: 'P1-UNIFORM', &
         'P1-EDGES', 'P1-LOADS', 'P2-UNIFORM', 'S2-UNIFORM', 'S2w-P1tr-LOADS', &
-        'S2w-P1tr-UNIFORM', 'P1-ADAPT', 'S2w-P1tr-ADAPT']
-    integer, parameter :: adapt_families(2) = [8, 9]   !! the ADAPT discretisations
+        'S2w-P1tr-UNIFORM', 'P1-ADAPT', 'S2w-P1tr-ADAPT', 'S2-ADAPT']
+    integer, parameter :: adapt_families(3) = [8, 9, 10]   !! the ADAPT discretisations
     integer, parameter :: long_families(2) = [1, 7]    !! continued over ne_long
     !> the error level of the work-precision target, in both W(0) and Sigma_z(0)
     real(dp), parameter :: target_error = 1.0e-4_dp
@@ -53,10 +54,14 @@ program work_precision
     integer, parameter :: ne_long(3) = [320, 640, 1280]
     integer, parameter :: all_ne(size(ne_list) + size(ne_long)) = [ne_list, ne_long]
     character(len=256) :: out_dir
+    !> the grading of the ADAPT families' first mesh (second argument; output/bench/adapt_start.md)
+    character(len=16) :: adapt_grading
     integer :: k
 
     out_dir = 'output/bench'
     if (command_argument_count() >= 1) call get_command_argument(1, out_dir)
+    adapt_grading = 'UNIFORM'
+    if (command_argument_count() >= 2) call get_command_argument(2, adapt_grading)
     call start_program()
     call execute_command_line('mkdir -p '//trim(out_dir))
     do k = 1, 2
@@ -106,11 +111,13 @@ contains
             m%mesh%interp(2:3) = INTERP_S2
         case (7)
             m%mesh%interp(2:3) = INTERP_S2
-        case (8, 9)
+        case (8, 9, 10)
             m%mesh%ne = adapt_start
             m%mesh%adapt_tol = tol_list(ne)      ! ne: the index into tol_list
             m%mesh%adapt_max_ne = adapt_max
+            m%mesh%grading = trim(adapt_grading)
             if (k == 9) m%mesh%interp(2:3) = INTERP_S2
+            if (k == 10) m%mesh%interp = INTERP_S2
         end select
         call complete_model(m)
     end function discretised
@@ -177,6 +184,7 @@ contains
         logical, intent(in) :: plate
         real(dp), intent(out) :: q_ref(n_q), uncertainty(n_q)
         character(len=1), intent(out) :: source(n_q)     !! 'a' or 'b'
+        character(len=len(adapt_grading)) :: start
         real(dp) :: q(n_q, 3), seconds, ref_b(n_q), unc_b(n_q)
         type(mesh_t) :: msh
         type(model_t) :: m
@@ -188,7 +196,11 @@ contains
         end do
         call extrapolate(q, q_ref, uncertainty)
         source = 'a'
+        ! reference (b) starts from the uniform mesh whatever the ADAPT families' start
+        start = adapt_grading
+        adapt_grading = 'UNIFORM'
         m = discretised(plate, 8, size(tol_list))
+        adapt_grading = start
         m%mesh%adapt_max_ne = reference_max
         call measure(m, q(:, 1), seconds, unknowns, ok, final_mesh=msh)
         if (.not. ok) return

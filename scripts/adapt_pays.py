@@ -96,4 +96,5 @@ def main():
                       + ' | '.join(cells) + ' |')
 
 
-main()
+if __name__ == '__main__':
+    main()
