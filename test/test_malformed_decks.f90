@@ -41,7 +41,7 @@ module test_malformed_decks
         character(len=110) :: what = ''   !! fragment of the explanation
     end type expect_t
 
-    integer, parameter :: n_decks = 112
+    integer, parameter :: n_decks = 113
 
 contains
 
@@ -406,6 +406,9 @@ contains
         call add('combinations', 'combine_factor_range.dat', ':14:31-40:', &
                  'COMBINE factor f3 of load case G: a deck number is 0 or has a magnitude of '// &
                  'at least 1E-30 and below 1E+30, got ''1.0E308''')
+        ! both factors of COMBINE ULS (line 14) are 0: the name in f1 (11-20) is marked
+        call add('combinations', 'combine_all_zero.dat', ':14:11-20:', &
+                 'combination ''ULS'' has every factor 0: it carries no load')
         ! f2 (21-30) of the LOADCASE card of line 10 reads 1.0E300: beyond 1E+30
         call add('combinations', 'loadcase_gamma_range.dat', ':10:21-30:', &
                  'positive or blank: a deck number is 0 or has a magnitude of at least 1E-30 '// &

@@ -297,7 +297,8 @@ contains
         call check_coverage(cc, used, diag)
     end subroutine resolve_references
 
-    !> Every combination names a case; every case is in a combination.
+    !> Every combination names a case and has a factor other than 0; every case is in a
+    !! combination.
     subroutine check_coverage(cc, used, diag)
         type(combination_cards_t), intent(in) :: cc
         logical, intent(in) :: used(:)
@@ -310,6 +311,14 @@ contains
                 field_width - 1, 'combination '''//trim(cc%set%combinations(k)%name)// &
                 ''' names no load case: give pairs of a case name and its factor in f2 '// &
                 'and f3, f4 and f5, f6 and f7', trim(cc%combination_echoes(k)))
+            if (any(cc%references%combination == k) .and. .not. cc%pair_error) then
+                if (all(cc%set%combinations(k)%factors == 0.0_dp)) call add_diagnostic(diag, &
+                    cc%set%combinations(k)%line, field_first_column(1), &
+                    field_first_column(1) + field_width - 1, 'combination '''// &
+                    trim(cc%set%combinations(k)%name)//''' has every factor 0: it carries '// &
+                    'no load (give at least one case a factor other than 0)', &
+                    trim(cc%combination_echoes(k)))
+            end if
         end do
         ! (a pair that could not be read has its error: the case it names is not reported)
         if (cc%pair_error) return
