@@ -6,6 +6,9 @@ module applied_loads
     private
 
     integer, parameter, public :: LOAD_POINT = 1, LOAD_PATCH = 2, LOAD_MOMENT = 3, LOAD_RING = 4
+    !> The LOAD card's word of each kind, indexed by LOAD_* (PRESSURE and RADIAL become PATCH).
+    character(len=6), parameter, public :: load_kind_words(4) = ['POINT ', 'PATCH ', 'MOMENT', &
+                                                                 'RING  ']
 
     !> One LOAD card.
     type, public :: load_t

@@ -15,6 +15,7 @@ module model
                             layer_count, layer_profile, ground_depth, base_name
     use interface_properties, only: interface_t
     use applied_loads, only: load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, &
+                             load_kind_words, &
                              total_vertical_load, has_concentrated_load, load_positions
     use mesh_request, only: mesh_request_t, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     use solver_controls, only: solver_controls_t, METHOD_NEWTON, METHOD_TWOLOOP
@@ -30,6 +31,7 @@ module model
     public :: layer_count, layer_profile, ground_depth, base_name
     public :: interface_t
     public :: load_t, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, total_vertical_load
+    public :: load_kind_words
     public :: has_concentrated_load, load_positions
     public :: mesh_request_t, FIELD_U, FIELD_W, FIELD_PSI, FIELD_SX, FIELD_SZ
     public :: solver_controls_t, METHOD_NEWTON, METHOD_TWOLOOP

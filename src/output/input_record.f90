@@ -14,7 +14,7 @@ module input_record
     use deck_fields, only: int_text
     use shape_functions, only: interp_name
     use case_scales, only: units_t, case_units, pressure_unit
-    use model, only: model_t, MODEL_BEAM, GROUND_LAYERED, GROUND_BASE_HALFSPACE, &
+    use model, only: model_t, MODEL_BEAM, GROUND_LAYERED, GROUND_BASE_HALFSPACE, load_kind_words, &
                      LOAD_PATCH, LOAD_MOMENT, METHOD_NEWTON, &
                      base_name, layer_profile
     implicit none
@@ -153,7 +153,6 @@ contains
     subroutine write_loads(u, m)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
-        character(len=*), parameter :: kinds(4) = ['POINT ', 'PATCH ', 'MOMENT', 'RING  ']
         character(len=:), allocatable :: f, l, fz_unit
         integer :: k
         f = trim(m%units%force)
@@ -163,7 +162,8 @@ contains
             associate (ld => m%loads(k))
             fz_unit = f
             if (ld%kind == LOAD_MOMENT) fz_unit = f//'.'//l
-            write (u, '(a)', advance='no') '      {"kind": '//json_string(trim(kinds(ld%kind)))// &
+            write (u, '(a)', advance='no') '      {"kind": '// &
+                json_string(trim(load_kind_words(ld%kind)))// &
                 ', "deck_line": '//int_text(ld%line)//', "f_z": '//num(ld%fz)// &
                 ', "f_x": '//num(ld%fx)//', "x1": '//num(ld%x1)//', "x2": '// &
                 json_number(ld%x2, ld%kind == LOAD_PATCH)//', "units": {"f_z": '// &

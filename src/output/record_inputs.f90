@@ -5,7 +5,8 @@
 module record_inputs
     use kinds, only: dp
     use deck_fields, only: int_text
-    use model, only: model_t, MODEL_BEAM, LOAD_POINT, LOAD_PATCH, LOAD_MOMENT, LOAD_RING, &
+    use model, only: model_t, MODEL_BEAM, LOAD_PATCH, &
+                     load_kind_words, &
                      METHOD_NEWTON, FIELD_U, FIELD_SZ, total_vertical_load, relative_stiffness, &
                      soil_shear_modulus, layer_profile, base_name, GROUND_BASE_HALFSPACE
     use shape_functions, only: interp_name
@@ -165,7 +166,7 @@ contains
         write (u, '(a)') '<tbody>'
         do k = 1, size(m%loads)
             associate (ld => m%loads(k))
-            write (u, '(a)') table_row(cell(int_text(k))//cell(kind_word(ld%kind))// &
+            write (u, '(a)') table_row(cell(int_text(k))//cell(trim(load_kind_words(ld%kind)))// &
                 cell(html_exact(ld%fz), 'num')//cell(html_exact(ld%fx), 'num')// &
                 cell(html_exact(ld%x1), 'num')//cell(second_position(ld%kind, ld%x2), 'num'))
             end associate
@@ -176,23 +177,6 @@ contains
         write (u, '(a)') '</tbody>'
         write (u, '(a)') '</table>'
     end subroutine write_loads
-
-    pure function kind_word(kind) result(word)
-        integer, intent(in) :: kind
-        character(len=:), allocatable :: word
-        select case (kind)
-        case (LOAD_POINT)
-            word = 'POINT'
-        case (LOAD_PATCH)
-            word = 'PATCH'
-        case (LOAD_MOMENT)
-            word = 'MOMENT'
-        case (LOAD_RING)
-            word = 'RING'
-        case default
-            word = '?'
-        end select
-    end function kind_word
 
     pure function second_position(kind, x2) result(html)
         integer, intent(in) :: kind
