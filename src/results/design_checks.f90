@@ -48,6 +48,8 @@ module design_checks
         logical :: defined = .true.        !! the value exists (n/a: passes, utilisation 0)
         logical :: minimum = .false.       !! the limit is a least value
         logical :: pass = .true.           !! utilisation <= 1
+        real(dp) :: largest = huge(1.0_dp) !! the largest value the quantity can take (a
+                                           !! contact ratio: 1)
     end type design_check_t
 
     public :: evaluate_design_checks, check_entries, governing_check
@@ -84,7 +86,7 @@ contains
                 lim%limit(1, CHECK_SLIDING))]
             if (has_check(lim, CHECK_CONTACT)) checks = [checks, new_check('CONTACT_RATIO', &
                 'contact area / base area', '', s%contact_area/base_area(m%structure), &
-                lim%limit(1, CHECK_CONTACT), .true., .true.)]
+                lim%limit(1, CHECK_CONTACT), .true., .true., largest=1.0_dp)]
         end associate
     end function evaluate_design_checks
 
@@ -164,13 +166,16 @@ contains
 
     !> One check: utilisation value / limit, or limit / value when the limit is a least
     !! value (`minimum`; a least value of 0, no contact or no friction, cannot pass); an
-    !! undefined value passes with utilisation 0.
-    pure function new_check(name, label, unit, value, limit, defined, minimum) result(c)
+    !! undefined value passes with utilisation 0. largest: the largest value the quantity can
+    !! take, where it has one (a contact ratio: 1).
+    pure function new_check(name, label, unit, value, limit, defined, minimum, largest) result(c)
         character(len=*), intent(in) :: name, label, unit
         real(dp), intent(in) :: value, limit
         logical, intent(in) :: defined, minimum
+        real(dp), intent(in), optional :: largest
         type(design_check_t) :: c
         c = design_check_t(name, label, unit, 0.0_dp, limit, 0.0_dp, defined, minimum, .true.)
+        if (present(largest)) c%largest = largest
         if (defined) c%value = value
         if (defined .and. .not. minimum) c%utilisation = value/limit
         if (defined .and. minimum .and. value > 0.0_dp) c%utilisation = limit/value
@@ -207,12 +212,12 @@ contains
         end if
     end function ranks_above
 
-    !> A met check whose limit is the largest value its quantity can take: a contact ratio
-    !! is at most 1, so CONTACT 1.0 (no gapping) is met or not, and a met one has no margin
-    !! to report.
+    !> A met least-value check whose limit is the largest value its quantity can take: a
+    !! contact ratio is at most 1, so CONTACT 1.0 (no gapping) is met or not, and a met one
+    !! has no margin to report.
     pure logical function without_margin(c)
         type(design_check_t), intent(in) :: c
-        without_margin = c%pass .and. trim(c%name) == 'CONTACT_RATIO' .and. c%limit >= 1.0_dp
+        without_margin = c%pass .and. c%minimum .and. c%limit >= c%largest
     end function without_margin
 
     !> The checks as named design values (summary_table's entry_t), two per check: its value
