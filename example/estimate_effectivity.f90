@@ -288,7 +288,8 @@ contains
             call twice_coarsened_values(c%model, c%d%msh, q4)
         end if
         if (estimate) call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
-                                           c%summary%edge_in_contact, solution=c%sol)
+                                           c%summary%edge_in_contact, solution=c%sol, &
+                                           design=c%design)
         do i = 1, size(c%entries)
             do k = 1, n_keys
                 if (trim(c%entries(i)%key) /= trim(keys(k))) cycle

@@ -23,6 +23,11 @@ module test_adaptive
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
     use error_estimate, only: formal_order, extent_floors
+    use extreme_estimates, only: parabola_excess, add_sampling_errors, &
+                                 widen_unresolved_moments
+    use station_results, only: station_table_t
+    use station_columns, only: Q_X, Q_W, Q_M, n_quantities
+    use case_scales, only: scales_t, case_scale_factors
     use summary_table, only: entry_t
     use shape_functions, only: INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck, case_model
@@ -46,6 +51,9 @@ contains
                  new_unittest('adapt_card_read', test_card), &
                  new_unittest('formal_orders', test_formal_orders), &
                  new_unittest('extent_floors_half_element', test_extent_floors), &
+                 new_unittest('parabola_excess_closed_form', test_parabola_excess), &
+                 new_unittest('peak_between_stations', test_sampling_errors), &
+                 new_unittest('unresolved_moment_widened', test_unresolved_moments), &
                  new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
@@ -332,6 +340,91 @@ contains
         call check(err, formal_order(m, 'settlement_max', .true.) == 4.0_dp, &
                    'P1 beam, point load on a node')
     end subroutine test_formal_orders
+
+    !> The vertex of the parabola through three points above the middle one (extreme_estimates):
+    !! y = 2 - 3 (x - 1/4)^2 at x = 0, 0.2, 0.6 is 1.8125, 1.9925, 1.6325 and its vertex 2,
+    !! an excess of 3 (0.05)^2 = 0.0075; y = 1 - (x - 0.3)^2 at x = 0, 0.5, 1 has the excess
+    !! (0.2)^2 = 0.04; three points on a line, or a middle point that is not the largest,
+    !! have none (algebra).
+    subroutine test_parabola_excess(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check(err, abs(parabola_excess([0.0_dp, 0.2_dp, 0.6_dp], &
+                   [1.8125_dp, 1.9925_dp, 1.6325_dp]) - 0.0075_dp) <= 1.0e-14_dp, &
+                   'unequal spacing: 0.0075')
+        if (allocated(err)) return
+        call check(err, abs(parabola_excess([0.0_dp, 0.5_dp, 1.0_dp], &
+                   [0.91_dp, 0.96_dp, 0.51_dp]) - 0.04_dp) <= 1.0e-14_dp, 'equal spacing: 0.04')
+        if (allocated(err)) return
+        call check(err, parabola_excess([0.0_dp, 1.0_dp, 2.0_dp], [1.0_dp, 1.0_dp, 1.0_dp]) &
+                   == 0.0_dp .and. parabola_excess([0.0_dp, 1.0_dp, 2.0_dp], &
+                   [1.0_dp, 2.0_dp, 3.0_dp]) == 0.0_dp, 'a line, a middle point not the largest')
+    end subroutine test_parabola_excess
+
+    !> The shortfall of a station extreme is added to its estimate (extreme_estimates): W = 1 -
+    !! (x - 0.1)^2 on the stations -0.5, -0.25, 0, 0.25, 0.5 is largest at 0 (0.99), and the
+    !! parabola through -0.25, 0, 0.25 is W itself, whose vertex is 1: 0.01 is added to the
+    !! estimate 0.001 of settlement_max (times the unit factor of the settlements). Nothing
+    !! is added where the other mesh has its largest W elsewhere (its estimate holds that
+    !! difference), nor at a POINT load on the station (a kink: the extreme is the station's).
+    subroutine test_sampling_errors(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(station_table_t) :: tab
+        type(entry_t) :: e(2), ef(2)
+        type(scales_t) :: k
+        real(dp), parameter :: x(5) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.25_dp, 0.5_dp]
+        m%structure%kind = MODEL_BEAM
+        m%structure%length = 1.0_dp
+        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, x2=0.5_dp)]
+        k = case_scale_factors(m)
+        tab%n = 5
+        allocate (tab%val(n_quantities, 5), source=0.0_dp)
+        allocate (tab%side(5), tab%state(5), tab%flag(5), source=0)
+        tab%val(Q_X, :) = x
+        tab%val(Q_W, :) = 1.0_dp - (x - 0.1_dp)**2
+        e = [entry_t(key='settlement_max', value=0.99_dp*k%disp, has_error=.true., &
+                     error=0.001_dp), entry_t(key='settlement_max_x', value=0.0_dp)]
+        ef = e
+        call add_sampling_errors(m, tab, e, ef)
+        call check(err, abs(e(1)%error - (0.001_dp + 0.01_dp*k%disp)) <= 1.0e-14_dp, &
+                   'parabola excess 0.01 added')
+        if (allocated(err)) return
+        e(1)%error = 0.001_dp
+        ef(2)%value = 0.125_dp
+        call add_sampling_errors(m, tab, e, ef)
+        call check(err, e(1)%error == 0.001_dp, 'extreme moved on the other mesh: nothing added')
+        if (allocated(err)) return
+        ef(2)%value = 0.0_dp
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+        call add_sampling_errors(m, tab, e, ef)
+        call check(err, e(1)%error == 0.001_dp, 'point load at the station: nothing added')
+    end subroutine test_sampling_errors
+
+    !> An extreme moment that is not established (estimate >= its size), smaller than the
+    !! opposite extreme whose estimate is at least half that extreme, is estimated as at least
+    !! |M_opposite| + E_opposite (extreme_estimates): sagging -1 +- 0.6 and hogging 0.1 +- 0.2
+    !! give hogging +- 1.6 and leave the sagging estimate alone; with the sagging estimate
+    !! 0.4 (< 1/2), or the hogging estimate 0.05 (< 0.1), nothing changes (arithmetic).
+    subroutine test_unresolved_moments(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(entry_t) :: e(2), e0(2)
+        e0 = [entry_t(key='moment_sagging', value=-1.0_dp, has_error=.true., error=0.6_dp), &
+              entry_t(key='moment_hogging', value=0.1_dp, has_error=.true., error=0.2_dp)]
+        e = e0
+        call widen_unresolved_moments(e)
+        call check(err, abs(e(2)%error - 1.6_dp) <= 1.0e-14_dp .and. e(1)%error == 0.6_dp, &
+                   'hogging widened to 1.6, sagging kept')
+        if (allocated(err)) return
+        e = e0
+        e(1)%error = 0.4_dp
+        call widen_unresolved_moments(e)
+        call check(err, e(2)%error == 0.2_dp, 'sagging known to better than half: kept')
+        if (allocated(err)) return
+        e = e0
+        e(2)%error = 0.05_dp
+        call widen_unresolved_moments(e)
+        call check(err, e(2)%error == 0.05_dp, 'hogging known to better than itself: kept')
+    end subroutine test_unresolved_moments
 
     !> The least estimate of a contact extent (error_estimate, extent_floors) is half the
     !! element its boundary may lie in: beyond the last node in contact, before the first,

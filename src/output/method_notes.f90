@@ -77,9 +77,12 @@ contains
                '2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, in [1, 2] '// &
                'and at most the formal order (1 on a uniform mesh with an edge in contact), '// &
                'p* where p = 1 is assumed; contact extent at least half the element beyond '// &
-               'it (at an end of the base, the end element). Where the refined case does not '// &
+               'it (at an end of the base, the end element); an extreme between two stations '// &
+               'adds the excess of the parabola through its station and their neighbours, '// &
+               'an extreme moment that is not established at least |M_opposite| + '// &
+               'E_opposite. Where the refined case does not '// &
                'fit in memory: the coarse meshes N_e/2, N_e/4 with Roache''s GCI. Measured: '// &
-               '0.5 to 5 times the true error for 93 % of 2824 results (doc/OUTPUT.md)'
+               '0.5 to 5 times the true error for 92 % of 3864 results (doc/OUTPUT.md)'
     end function error_method_text
 
     !> The report's lines on the adaptation.

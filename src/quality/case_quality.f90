@@ -67,7 +67,8 @@ contains
                         '(so do their error estimates); MESH grading LOADS puts '// &
                         'a node at every load']
         if (estimates) call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
-                                            c%summary%edge_in_contact, cache, c%sol)
+                                            c%summary%edge_in_contact, cache, c%sol, &
+                                            c%design)
     end subroutine solve_to_quality
 
     !> The ADAPT policy: adaptive refinement from the MESH card's mesh, then the case's

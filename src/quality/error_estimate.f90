@@ -13,7 +13,10 @@
 !! safety 1.25; the second keeps the
 !! estimate from collapsing where the fine pair happens to agree (a boundary that stays in one
 !! element). The contact extent moves by whole nodes: its estimate is at least half the
-!! element beyond the last node in contact (at an end of the base, the end element).
+!! element beyond the last node in contact (at an end of the base, the end element). The
+!! keys that are extremes of a station field then get two additions (extreme_estimates,
+!! both estimates): the shortfall of an extreme lying between two stations, and a wider
+!! estimate for an extreme moment the meshes do not resolve.
 !! Measured on a reference set of 1665 results
 !! (output/bench/estimate_effectivity.md), against the estimates from coarser meshes only:
 !! the coarse meshes of N_e = 20 to 80 are short of the asymptotic range and gave estimates
@@ -42,6 +45,8 @@ module error_estimate
     use solved_case, only: case_t, solve_on, finish_case
     use flexibility_cache, only: flexibility_cache_t
     use resource_limits, only: check_memory, memory_available
+    use station_results, only: station_table_t
+    use extreme_estimates, only: add_sampling_errors, widen_unresolved_moments
     implicit none
     private
 
@@ -79,7 +84,7 @@ contains
     !! (solution_t%coarse); one whose mesh is the coarse mesh is not solved again.
     !! edge_in_contact: an end of the base is in contact (summary_t), which limits a
     !! uniform mesh to first order (formal_order).
-    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution)
+    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution, design)
         type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         type(entry_t), intent(inout) :: e(:)      !! the key results, updated
@@ -90,6 +95,9 @@ contains
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         !> the case's solution on d: the refined solve's Newton start is predicted from it
         type(solution_t), intent(in), optional :: solution
+        !> the case's design table: the shortfall of its station extremes is added
+        !! (extreme_estimates)
+        type(station_table_t), intent(in), optional :: design
         type(estimate_family_t) :: fam
         logical :: edge
         edge = .false.
@@ -103,6 +111,8 @@ contains
             call attach_estimates(m, e, fam%ec, fam%ef, 2.0_dp, extent_floors(m, d%msh, e), &
                                   fam%on_nodes, fam%edge)
         end if
+        if (present(design)) call add_sampling_errors(m, design, e, fam%ef)
+        call widen_unresolved_moments(e)
     end subroutine estimate_errors
 
     !> The key results of the case on the meshes its estimate compares (module header): the
