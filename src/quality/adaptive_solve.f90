@@ -22,10 +22,6 @@
 !!  4. The node nearest each located boundary is moved onto it (snap), the marked elements
 !!     are bisected and neighbours kept within a size ratio of 2 (a geometric grading
 !!     towards singular ends and boundaries).
-!!  5. When the cycle's estimate predicts a larger mesh (predicted_ne: every key's estimate
-!!     falling like N_e^-p to tol, contact extents left to the marks next to them), the
-!!     bisected mesh is marked again on its halves' indicators and bisected once more
-!!     without a solve, up to the predicted N_e and at most max_growth times the cycle's.
 !!
 !! It stops at the tolerance, or when the next mesh would exceed max_elements, or would have
 !! to stay below it with fewer than a tenth more elements than the last (the report
@@ -99,17 +95,8 @@ module adaptive_solve
     !> a cycle whose marks max_elements cuts to fewer than this fraction of the elements is
     !! not made (the adaptation stops: max_elements reached)
     real(dp), parameter :: min_growth = 0.1_dp
-    !> the largest growth of the mesh in one cycle (two bisection rounds, no solve between
-    !! them): how far a prediction from an estimate far above tol is followed before the
-    !! next solve and estimate (doc/CHOICES.md, "ADAPT predicts its mesh")
-    real(dp), parameter :: max_growth = 1.8_dp
-    !> the order a prediction assumes for a key whose estimate observed none (regular
-    !! convergence not yet seen): the order of the P1 tractions' interpolation error. A
-    !! lower order would grow the mesh further: an over-shot mesh costs more than one more
-    !! cycle (doc/CHOICES.md, "ADAPT predicts its mesh")
-    real(dp), parameter :: p_assumed = 2.0_dp
 
-    public :: solve_adaptive, relative_errors, predicted_ne, prediction_orders, estimate_due
+    public :: solve_adaptive, relative_errors
 
 contains
 
@@ -132,13 +119,12 @@ contains
         type(station_table_t) :: prev_nodes
         character(len=200) :: text
         integer :: k, ne_estimated
-        real(dp) :: last_estimate, goal
+        real(dp) :: last_estimate
         logical :: short
         call start_record(m%mesh, info)
         d_try = d
         ne_estimated = 0
         last_estimate = huge(1.0_dp)
-        goal = 0.0_dp
         cycles: do k = 1, max_cycles
             if (k == 1) then
                 call solve_contact(m, d_try, sol_try, err_try, cache=cache)
@@ -162,16 +148,13 @@ contains
                 call assess(m, d, sol, a, prev_nodes, cache=cache)
                 ne_estimated = d%msh%ne
                 last_estimate = a%estimate
-                goal = 0.0_dp
-                if (a%estimate < huge(1.0_dp)) goal = &
-                    predicted_ne(d%msh%ne, a%rel, prediction_orders(a%e), m%mesh%adapt_tol)
             else
                 a_prev = a
                 call assess(m, d, sol, a, prev_nodes, a_prev, cache)
             end if
             call record_cycle(info, d%msh%ne, a)
             if (info%reached) exit cycles
-            call next_mesh(m, d, a, goal, next, short)
+            call next_mesh(m, d, a, next, short)
             if (same_mesh(next, d%msh)) then
                 if (short) then
                     info%note = 'max_elements reached (the next refinement would exceed it)'
@@ -197,9 +180,8 @@ contains
     !! indicators from the difference to the previous cycle's solution and cost one solve.
     pure logical function estimate_due(mesh, ne, ne_last, est_last)
         type(mesh_request_t), intent(in) :: mesh   !! the mesh part of the model
-        integer, intent(in) :: ne                  !! elements of this cycle's mesh
-        integer, intent(in) :: ne_last             !! of the last estimated one (0: none)
-        real(dp), intent(in) :: est_last           !! its estimate (huge: undefined)
+        integer, intent(in) :: ne, ne_last
+        real(dp), intent(in) :: est_last
         real(dp) :: predicted
         estimate_due = .true.
         if (ne_last <= 0 .or. ne >= 2*ne_last .or. est_last >= huge(1.0_dp)) return
@@ -585,23 +567,19 @@ contains
     end function feature_elements
 
     !> The next mesh: nodes snapped onto the located boundaries, then the marked elements
-    !! bisected, and when the goal (the predicted N_e, 0: none) asks for more elements than
-    !! that gives, a second round without a solve (growth_target, second_round; within the
-    !! max_elements budget; the unchanged mesh when none is left).
-    subroutine next_mesh(m, d, a, goal, next, short)
+    !! bisected (within the max_elements budget; the unchanged mesh when none is left).
+    subroutine next_mesh(m, d, a, next, short)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
         type(assessment_t), intent(in) :: a
-        real(dp), intent(in) :: goal         !! predicted elements (predicted_ne; 0: none)
         type(mesh_t), intent(out) :: next
         logical, intent(out) :: short        !! max_elements left no room for the marks
         logical, allocatable :: marked(:), pinned(:)
-        integer :: k, node, budget, wanted, target
+        integer :: k, node, budget, wanted
         next = d%msh
         budget = m%mesh%adapt_max_ne - d%msh%ne
         short = .true.
         if (budget <= 0) return
-        target = growth_target(d%msh%ne, goal)
         marked = element_marks(d, a)
         short = .not. any(marked)
         wanted = count(marked)
@@ -619,108 +597,7 @@ contains
             if (node >= 0) pinned(node) = .true.
         end do
         next = bisected(next, marked)
-        if (target > next%ne) call second_round(m%mesh%adapt_max_ne, target, &
-                                                halves_indicators(a%eta, marked), next)
     end subroutine next_mesh
-
-    !> Elements of the next mesh the prediction asks for: the goal within (1 + min_fraction)
-    !! and max_growth times ne (ne when there is no goal: element_marks alone decide).
-    pure integer function growth_target(ne, goal) result(target)
-        integer, intent(in) :: ne
-        real(dp), intent(in) :: goal   !! predicted elements (0: none)
-        target = ne
-        if (goal <= 0.0_dp) return
-        target = nint(min(max(goal, (1.0_dp + min_fraction)*ne), max_growth*ne))
-    end function growth_target
-
-    !> A second bisection round on fine, without a solve: marks as a cycle does (eta_e >=
-    !! theta max eta, at least the min_fraction largest) on the indicators its halves carry
-    !! (halves_indicators), at most the elements still wanted (target; within max_ne).
-    pure subroutine second_round(max_ne, target, eta, fine)
-        integer, intent(in) :: max_ne, target
-        real(dp), intent(in) :: eta(:)       !! (fine%ne) indicators
-        type(mesh_t), intent(inout) :: fine
-        logical :: marked(fine%ne), allowed(fine%ne)
-        integer :: n
-        marked = .false.
-        allowed = cuttable(fine)
-        if (.not. any(allowed)) return
-        n = max(ceiling(min_fraction*fine%ne), &
-                count(allowed .and. eta >= theta*maxval(eta, mask=allowed)))
-        call add_largest(eta, allowed, min(n, min(target, max_ne) - fine%ne), marked)
-        call fit_budget(fine, eta, max_ne - fine%ne, marked)
-        if (any(marked)) fine = bisected(fine, marked)
-    end subroutine second_round
-
-    !> The indicators of a bisected mesh: a cut element's two halves carry a quarter of its
-    !! indicator each (eta_e is h_e times the solution's change there, taken to fall like
-    !! h_e), the others their own.
-    pure function halves_indicators(eta, marked) result(eta_fine)
-        real(dp), intent(in) :: eta(:)
-        logical, intent(in) :: marked(:)    !! the elements that were bisected
-        real(dp) :: eta_fine(size(eta) + count(marked))
-        integer :: e, k
-        k = 0
-        do e = 1, size(eta)
-            if (marked(e)) then
-                eta_fine(k + 1:k + 2) = 0.25_dp*eta(e)
-                k = k + 2
-            else
-                eta_fine(k + 1) = eta(e)
-                k = k + 1
-            end if
-        end do
-    end function halves_indicators
-
-    !> Mark, in addition, the n largest indicators among the allowed unmarked elements.
-    pure subroutine add_largest(eta, allowed, n, marked)
-        real(dp), intent(in) :: eta(:)
-        logical, intent(in) :: allowed(:)
-        integer, intent(in) :: n            !! how many more (none when n <= 0)
-        logical, intent(inout) :: marked(:)
-        logical :: free(size(eta))
-        integer :: k, e
-        free = allowed .and. .not. marked
-        do k = 1, min(n, count(free))
-            e = maxloc(eta, dim=1, mask=free)
-            marked(e) = .true.
-            free(e) = .false.
-        end do
-    end subroutine add_largest
-
-    !> Elements long enough to be bisected (at least 2 h_min).
-    pure function cuttable(msh) result(allowed)
-        type(mesh_t), intent(in) :: msh
-        logical :: allowed(msh%ne)
-        allowed = (msh%x(1:) - msh%x(:msh%ne - 1)) >= 2.0_dp*h_min*(msh%x(msh%ne) - msh%x(0))
-    end function cuttable
-
-    !> The mesh size at which the relative estimates rel, each falling like N_e^-p from ne,
-    !! are all at most tol: ne times the largest (rel/tol)^(1/p) over the keys above tol
-    !! (ne when none is).
-    pure real(dp) function predicted_ne(ne, rel, p, tol) result(n)
-        integer, intent(in) :: ne          !! elements of the estimated mesh
-        real(dp), intent(in) :: rel(:)     !! relative estimates (-1: none)
-        real(dp), intent(in) :: p(:)       !! their orders (prediction_orders)
-        real(dp), intent(in) :: tol        !! the ADAPT tolerance
-        integer :: i
-        n = real(ne, dp)
-        do i = 1, size(rel)
-            if (rel(i) > tol .and. p(i) > 0.0_dp) n = max(n, ne*(rel(i)/tol)**(1.0_dp/p(i)))
-        end do
-    end function predicted_ne
-
-    !> Per key, the order a prediction assumes: the observed order of its estimate within
-    !! [p_assumed, 4], p_assumed where none was observed (the larger order: a prediction errs
-    !! towards the smaller mesh); 0 (no prediction) for a contact extent, whose error is the
-    !! distance of a node from the located boundary, made small by the marks next to it, not by
-    !! the size of the mesh.
-    pure elemental real(dp) function prediction_orders(e) result(p)
-        type(entry_t), intent(in) :: e     !! a key result with its estimate
-        p = p_assumed
-        if (e%order > 0.0_dp) p = min(max(e%order, p_assumed), 4.0_dp)
-        if (is_extent(e%key)) p = 0.0_dp
-    end function prediction_orders
 
     !> Marks: large indicators, the targets of results above tol, the features; never an
     !! element shorter than 2 h_min (the indicators compared among the others).
@@ -731,7 +608,8 @@ contains
         logical :: allowed(d%msh%ne)
         real(dp) :: eta_max
         integer :: k, e
-        allowed = cuttable(d%msh)
+        allowed = (d%msh%x(1:) - d%msh%x(:d%msh%ne - 1)) >= &
+                  2.0_dp*h_min*(d%msh%x(d%msh%ne) - d%msh%x(0))
         eta_max = maxval(a%eta, mask=allowed)
         marked = a%eta >= min(theta*eta_max, &
                               kth_largest(pack(a%eta, allowed), ceiling(min_fraction*d%msh%ne)))
