@@ -289,30 +289,34 @@ contains
         if (allocated(err)) return
         ! no interpolation on the MESH card: with ADAPT, w and psi S2 (README, ADAPT); the
         ! interpolations the card gives are kept; without ADAPT, P1 everywhere
-        do k = 1, size(lines)
-            if (lines(k)(1:4) == 'MESH') lines(k) = 'MESH      16'
-        end do
+        call set_mesh_line(lines, 'MESH      16')
         call parse_deck('adapt_no_interp.dat', lines, deck, err)
         if (allocated(err)) return
         call check(err, all(deck%base%mesh%interp == [INTERP_P1, INTERP_S2, INTERP_S2, &
                                                       INTERP_P1, INTERP_P1]), &
                    'ADAPT, MESH without interpolation: S2 w and psi')
         if (allocated(err)) return
-        do k = 1, size(lines)
-            if (lines(k)(1:4) == 'MESH') lines(k) = 'MESH      16        UNIFORM   P1        P1'
-        end do
+        call set_mesh_line(lines, 'MESH      16        UNIFORM   P1        P1')
         call parse_deck('adapt_p1.dat', lines, deck, err)
         if (allocated(err)) return
         call check(err, all(deck%base%mesh%interp == INTERP_P1), 'ADAPT, MESH with P1 given')
         if (allocated(err)) return
         lines = pack(lines, lines(:)(1:5) /= 'ADAPT')
-        do k = 1, size(lines)
-            if (lines(k)(1:4) == 'MESH') lines(k) = 'MESH      16'
-        end do
+        call set_mesh_line(lines, 'MESH      16')
         call parse_deck('no_adapt.dat', lines, deck, err)
         if (allocated(err)) return
         call check(err, all(deck%base%mesh%interp == INTERP_P1), 'no ADAPT: P1 everywhere')
     end subroutine test_card
+
+    !> The deck's MESH card replaced by text.
+    pure subroutine set_mesh_line(lines, text)
+        character(len=*), intent(inout) :: lines(:)
+        character(len=*), intent(in) :: text
+        integer :: k
+        do k = 1, size(lines)
+            if (lines(k)(1:4) == 'MESH') lines(k) = text
+        end do
+    end subroutine set_mesh_line
 
     !> A tolerance out of reach with max_elements 40: solved on at most 40 elements, the
     !! tolerance reported as not reached, with an estimate and the reason.
