@@ -29,7 +29,7 @@ module test_adaptive
     use station_columns, only: Q_X, Q_W, Q_M, n_quantities
     use case_scales, only: scales_t, case_scale_factors
     use summary_table, only: entry_t
-    use shape_functions, only: INTERP_S2
+    use shape_functions, only: INTERP_P1, INTERP_S2
     use deck_reader, only: deck_t, read_deck, parse_deck, case_model
     use analysis_driver, only: case_result_t, run_case
     use errors, only: EXIT_OK
@@ -271,7 +271,8 @@ contains
     end subroutine print_estimates
 
     !> The shipped deck input/plate_adapt.dat gives ADAPT 1.0E-3 400; with f2 blank the
-    !! default max_elements is 1000 (README, ADAPT).
+    !! default max_elements is 1000 (README, ADAPT); the interpolation ADAPT takes when the
+    !! MESH card gives none.
     subroutine test_card(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck
@@ -293,7 +294,37 @@ contains
         call check(err, &
             deck%base%mesh%adapt_tol == 5.0e-3_dp .and. deck%base%mesh%adapt_max_ne == 1000, &
                    'ADAPT with f2 blank: max_elements 1000')
+        if (allocated(err)) return
+        ! no interpolation on the MESH card: with ADAPT, w and psi S2 (README, ADAPT); the
+        ! interpolations the card gives are kept; without ADAPT, P1 everywhere
+        call set_mesh_line(lines, 'MESH      16')
+        call parse_deck('adapt_no_interp.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, all(deck%base%mesh%interp == [INTERP_P1, INTERP_S2, INTERP_S2, &
+                                                      INTERP_P1, INTERP_P1]), &
+                   'ADAPT, MESH without interpolation: S2 w and psi')
+        if (allocated(err)) return
+        call set_mesh_line(lines, 'MESH      16        UNIFORM   P1        P1')
+        call parse_deck('adapt_p1.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, all(deck%base%mesh%interp == INTERP_P1), 'ADAPT, MESH with P1 given')
+        if (allocated(err)) return
+        lines = pack(lines, lines(:)(1:5) /= 'ADAPT')
+        call set_mesh_line(lines, 'MESH      16')
+        call parse_deck('no_adapt.dat', lines, deck, err)
+        if (allocated(err)) return
+        call check(err, all(deck%base%mesh%interp == INTERP_P1), 'no ADAPT: P1 everywhere')
     end subroutine test_card
+
+    !> The deck's MESH card replaced by text.
+    pure subroutine set_mesh_line(lines, text)
+        character(len=*), intent(inout) :: lines(:)
+        character(len=*), intent(in) :: text
+        integer :: k
+        do k = 1, size(lines)
+            if (lines(k)(1:4) == 'MESH') lines(k) = text
+        end do
+    end subroutine set_mesh_line
 
     !> A tolerance out of reach with max_elements 40: solved on at most 40 elements, the
     !! tolerance reported as not reached, with an estimate and the reason.

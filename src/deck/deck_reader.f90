@@ -44,11 +44,12 @@ module deck_reader
     use model, only: model_t, load_t, complete_model, MODEL_BEAM, MODEL_PLATE, LOAD_POINT, &
                      GROUND_LAYERED, GROUND_BASE_ROUGH, GROUND_BASE_SMOOTH, &
                      GROUND_BASE_HALFSPACE, layer_count, ground_t, &
-                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP
+                     LOAD_PATCH, LOAD_MOMENT, LOAD_RING, METHOD_NEWTON, METHOD_TWOLOOP, &
+                     FIELD_W, FIELD_PSI
     use physical_units, only: force_in_newtons, length_in_metres, disp_in_metres, &
                               pressure_in_pascals, force_words, length_words, disp_words, &
                               pressure_words
-    use shape_functions, only: interp_code
+    use shape_functions, only: interp_code, INTERP_S2
     use discretization, only: fewest_elements
     use load_combinations, only: load_set_t, combination_count, combination_loads, &
                                  combination_text
@@ -1156,6 +1157,7 @@ contains
             call take_word(st, cd, j + 2, 'MESH interpolation of '//trim(field_label(j)), &
                            'P1 P2 S2', .false., word, s)
             if (s == FIELD_OK) st%m%mesh%interp(j) = interp_code(word)
+            if (s == FIELD_OK) st%m%mesh%interp_given = .true.
         end do
     end subroutine read_mesh
 
@@ -1179,6 +1181,9 @@ contains
         integer :: k
         k = first_card(st, C_ADAPT)
         if (k == 0 .or. st%m%mesh%adapt_tol <= 0.0_dp) return
+        ! no interpolation on the MESH card: S2 w and psi, whose uniform family is the
+        ! cheapest to a tolerance (README, ADAPT)
+        if (.not. st%m%mesh%interp_given) st%m%mesh%interp([FIELD_W, FIELD_PSI]) = INTERP_S2
         if (st%m%mesh%adapt_max_ne >= st%m%mesh%ne) return
         call field_error(st, st%cards(k), 2, 'ADAPT max_elements must be at least the MESH '// &
             'N_e = '//int_text(st%m%mesh%ne)//' it starts from, got '// &

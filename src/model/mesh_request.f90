@@ -16,6 +16,7 @@ module mesh_request
         integer :: ne = 20                      !! number of elements N_e
         character(len=10) :: grading = 'UNIFORM' !! UNIFORM, EDGES or LOADS
         integer :: interp(5) = 1                !! per field (FIELD_*): INTERP_P1/P2/S2
+        logical :: interp_given = .false.       !! the MESH card gives an interpolation
         real(dp) :: adapt_tol = 0.0_dp          !! ADAPT tol; 0: the MESH card's mesh as it is
         integer :: adapt_max_ne = 0             !! largest number of elements of an adapted mesh
     end type mesh_request_t
