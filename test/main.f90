@@ -31,6 +31,7 @@ program tester
     use test_records, only: collect_records
     use test_shard_envelope, only: collect_shard_envelope
     use test_html_record, only: collect_html_record
+    use test_number_text, only: collect_number_text
     implicit none
     type(unittest_t), allocatable :: tests(:)
     character(len=64) :: want_suite, want_test
@@ -40,7 +41,7 @@ program tester
         'report_writer convergence design_values paper malformed_decks newton properties '// &
         'simplifications adaptive nested_spaces architecture layered_ground layered_program '// &
         'foundation_springs unit_checks design_checks records html_record load_combinations '// &
-        'shard_envelope '
+        'shard_envelope number_text '
 
     want_suite = ''
     want_test = ''
@@ -58,6 +59,10 @@ program tester
     if (wanted('architecture')) then
         call collect_architecture(tests)
         call run_suite('architecture', tests, want_test, n_pass, n_fail)
+    end if
+    if (wanted('number_text')) then
+        call collect_number_text(tests)
+        call run_suite('number_text', tests, want_test, n_pass, n_fail)
     end if
     if (wanted('shape_functions')) then
         call collect_shape_functions(tests)

@@ -12,7 +12,9 @@ contains
     subroutine collect_architecture(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('no_back_edges', test_no_back_edges), &
-                 new_unittest('back_edge_found', test_back_edge_found)]
+                 new_unittest('back_edge_found', test_back_edge_found), &
+                 new_unittest('threads_call_no_deferred_length_text', test_thread_safety), &
+                 new_unittest('deferred_length_call_on_threads_found', test_thread_unsafe_found)]
     end subroutine collect_architecture
 
     !> The project's own src/: exit status 0 (no back-edge).
@@ -42,4 +44,35 @@ contains
         call check(err, status == 1, 'results using output was not reported as a back-edge')
         call execute_command_line('rm -rf '//dir)
     end subroutine test_back_edge_found
+
+    !> The project's own src/: no function with a deferred-length character result is called
+    !! from the code that runs on a sweep's threads (gfortran keeps such a result's length in a
+    !! static variable: two threads at one call site got an empty JSON key).
+    subroutine test_thread_safety(err)
+        type(error_t), allocatable, intent(out) :: err
+        integer :: status
+        call execute_command_line('python3 scripts/check_thread_safety.py > '// &
+                                  'build/check_thread_safety.txt', exitstat=status)
+        call check(err, status == 0, 'code on threads calls a deferred-length character '// &
+                   'function: see build/check_thread_safety.txt')
+    end subroutine test_thread_safety
+
+    !> A tree where a results module calls such a function: exit status 1.
+    subroutine test_thread_unsafe_found(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = 'build/test_threads'
+        integer :: status, u
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/results')
+        open (newunit=u, file=dir//'/results/table.f90', status='replace', action='write')
+        write (u, '(a)') 'module table', 'contains', '    function word() result(t)', &
+            '        character(len=:), allocatable :: t', '        t = ''x''', &
+            '    end function word', '    subroutine key(k)', &
+            '        character(len=8), intent(out) :: k', '        k = word()', &
+            '    end subroutine key', 'end module table'
+        close (u)
+        call execute_command_line('python3 scripts/check_thread_safety.py '//dir// &
+                                  ' > /dev/null', exitstat=status)
+        call check(err, status == 1, 'a call of word() in results/ was not reported')
+        call execute_command_line('rm -rf '//dir)
+    end subroutine test_thread_unsafe_found
 end module test_architecture

@@ -21,6 +21,8 @@
 module deck_fields
     use kinds, only: dp
     use sorting, only: ascending_order
+    ! decimal text of an integer (number_text's rule) under the name the deck's users know
+    use number_text, only: int_text => integer_text
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -303,15 +305,6 @@ contains
             if (c >= iachar('a') .and. c <= iachar('z')) u(i:i) = achar(c - 32)
         end do
     end function to_upper
-
-    !> Decimal text of an integer.
-    pure function int_text(i) result(text)
-        integer, intent(in) :: i   !! the integer
-        character(len=:), allocatable :: text
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        text = trim(buf)
-    end function int_text
 
     !> Short text of a real with up to 10 significant digits: 0.0025, 6, -1.5E-12, 3.0E7.
     pure function format_real(x) result(text)

@@ -126,23 +126,25 @@ contains
         real(dp), intent(in) :: range(2)           !! plausible range [SI]
         character(len=warning_length) :: text
         if (value*to_si >= range(1) .and. value*to_si <= range(2)) return
-        text = trim(field)//' = '//sci(value, 3)//' '//deck_unit
-        if (deck_unit /= si_unit) text = trim(text)//' is '//sci(value*to_si, 3)//' '//si_unit
-        text = trim(text)//', outside the plausible '//sci(range(1), 2)//' to '// &
-               sci(range(2), 2)//' '//si_unit//': check its units against the UNITS card'
+        text = trim(field)//' = '//trim(sci(value, 3))//' '//deck_unit
+        if (deck_unit /= si_unit) text = trim(text)//' is '//trim(sci(value*to_si, 3))//' '// &
+                                         si_unit
+        text = trim(text)//', outside the plausible '//trim(sci(range(1), 2))//' to '// &
+               trim(sci(range(2), 2))//' '//si_unit//': check its units against the UNITS card'
         w = [character(len=warning_length) :: w, text]
     end subroutine check_range
 
     !> x in scientific notation with digits significant digits, no leading blank.
+    !! (24 characters, blank-padded: a deferred-length result would not be thread-safe,
+    !! scripts/check_thread_safety.py)
     pure function sci(x, digits) result(text)
         real(dp), intent(in) :: x         !! the value
         integer, intent(in) :: digits     !! significant digits (1 to 9)
-        character(len=:), allocatable :: text
-        character(len=24) :: buffer
+        character(len=24) :: text
         character(len=16) :: form
         write (form, '(a,i0,a,i0,a)') '(es', digits + 8, '.', digits - 1, ')'
-        write (buffer, form) x
-        text = trim(adjustl(buffer))
+        write (text, form) x
+        text = adjustl(text)
     end function sci
 
     !> Warnings about a solved case: a settlement larger than the thickness or l/10.

@@ -61,6 +61,10 @@ contains
         integer(int64) :: clock_start
         type(model_t), allocatable :: cases(:)
         character(len=200), allocatable :: labels(:)
+        !> the cases' file name stems, made before the parallel loop: case_name's result has a
+        !! deferred length, which gfortran keeps in a static variable of the caller
+        !! (scripts/check_thread_safety.py)
+        character(len=:), allocatable :: names(:)
         type(case_result_t), allocatable :: results(:)
         logical, allocatable :: selected(:)
         type(error_t), allocatable :: err
@@ -116,6 +120,11 @@ contains
         call system_clock(clock_start)
         done = 0
         allocate (renderers(threads))
+        ! (a stem, a case number and a combination name of at most 10 characters)
+        allocate (character(len=len(deck%stem) + 32) :: names(n))
+        do i = 1, n
+            names(i) = case_name(deck%stem, i, n, tags)
+        end do
         !$omp parallel do schedule(dynamic, 1) num_threads(threads) default(shared) &
         !$omp private(i, thread)
         cases_loop: do i = 1, n
@@ -123,7 +132,7 @@ contains
             thread = 1
             !$ thread = omp_get_thread_num() + 1
             call run_case(deck, cases(i), trim(labels(i)), out_dir, &
-                            case_name(deck%stem, i, n, tags), &
+                            trim(names(i)), &
                             opt%figures, opt%estimates, big_case_unit, results(i), cache, &
                             renderers(thread), opt%record)
             !$omp critical (fricon_progress)

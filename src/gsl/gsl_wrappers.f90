@@ -85,7 +85,7 @@ contains
             1.0_c_double, real(m1, c_double), GSL_PREC_DOUBLE, rd_swap)
         if (status /= GSL_SUCCESS) then
             call new_error(err, EXIT_INTERNAL, 'GSL Carlson elliptic integral failed: '// &
-                           gsl_status_text(status))
+                           trim(gsl_status_text(status)))
             return
         end if
         k_val = rf%val
@@ -129,7 +129,7 @@ contains
         result = res
         abserr = abs_err
         if (status /= GSL_SUCCESS) call new_error(err, EXIT_INTERNAL, 'GSL QAGS failed: '// &
-                                                  gsl_status_text(status))
+                                                  trim(gsl_status_text(status)))
     end subroutine integrate_qags
 
     !> double (* function) (double x, void * params) for QAGS.
@@ -145,7 +145,9 @@ contains
     !> gsl_strerror copied into a Fortran string.
     function gsl_status_text(status) result(text)
         integer(c_int), intent(in) :: status   !! a GSL status code
-        character(len=:), allocatable :: text
+        ! blank-padded, not deferred-length: it runs on the sweep's threads
+        ! (scripts/check_thread_safety.py)
+        character(len=200) :: text
         character(kind=c_char), pointer :: chars(:)
         type(c_ptr) :: p
         integer :: n

@@ -7,6 +7,7 @@ module check_report
     use deck_fields, only: int_text
     use design_checks, only: design_check_t, governing_check
     use json_text, only: json_string, json_number
+    use report_folding, only: write_wrapped
     implicit none
     private
 
@@ -35,8 +36,8 @@ contains
                     value_text, c%limit, c%unit, use_text, trim(verdict(c))
             end associate
         end do
-        write (u, '(3x,a)') 'utilisation = value / limit; for a least value (>= limit: '// &
-            'SLIDING_FS, CONTACT_RATIO) limit / value. A check passes at utilisation <= 1.'
+        call write_wrapped(u, '   utilisation = value / limit; for a least value (>= limit: '// &
+            'SLIDING_FS, CONTACT_RATIO) limit / value. A check passes at utilisation <= 1.')
         write (u, '(3x,a)') trim(checks_line(checks))
     end subroutine write_check_table
 

@@ -4,6 +4,7 @@
 module html_text
     use kinds, only: dp
     use deck_fields, only: int_text, format_real
+    use number_text, only: es_text, f_text
     implicit none
     private
 
@@ -72,11 +73,13 @@ contains
             html = '0'
             return
         end if
-        write (buf, '(es30.'//int_text(digits - 1)//'e3)') x
-        read (buf(len_trim(buf) - 3:len_trim(buf)), '(i4)') e
+        buf = es_text(x, 30, digits - 1, 3)
+        ! the exponent's three digits (es_text's text always ends in E+ddd or E-ddd)
+        e = 100*digit(28) + 10*digit(29) + digit(30)
+        if (buf(27:27) == '-') e = -e
         if (e >= -3 .and. e <= 5) then
             decimals = max(0, digits - 1 - e)
-            write (buf, '(f30.'//int_text(decimals)//')') x
+            buf = f_text(x, 30, decimals)
             html = trim(adjustl(buf))
             if (html(len(html):len(html)) == '.') html = html(1:len(html) - 1)
             if (html(1:1) == '.') html = '0'//html
@@ -88,6 +91,11 @@ contains
             html = buf(1:index(buf, 'E') - 1)//'&#215;10<sup>'//int_text(e)//'</sup>'
         end if
         if (html(1:1) == '-') html = '&#8722;'//html(2:)
+    contains
+        pure integer function digit(k)
+            integer, intent(in) :: k
+            digit = iachar(buf(k:k)) - iachar('0')
+        end function digit
     end function html_number
 
     !> x as the deck would give it, up to 10 significant digits and no trailing zeros (0.8,

@@ -1,6 +1,7 @@
 !> JSON text of fricon's summaries: string literals and numbers.
 module json_text
     use kinds, only: dp
+    use number_text, only: es_text
     implicit none
     private
 
@@ -55,7 +56,7 @@ contains
             text = 'null'
             return
         end if
-        write (buf, '(es23.15e3)') x
+        buf = es_text(x, 23, 15, 3)
         text = trim(adjustl(buf))
     end function json_number
 end module json_text

@@ -12,7 +12,7 @@ module report_folding
 
     integer, parameter, public :: report_width = 132   !! widest line of the report
 
-    public :: fold_table, fold_report_lines
+    public :: fold_table, fold_report_lines, write_wrapped
 
 contains
 
@@ -80,10 +80,11 @@ contains
         call commit_file(path, u, err)
     end subroutine fold_report_lines
 
-    !> One line, wrapped to report_width at blanks (cut where a word is longer than a line).
+    !> One line, wrapped to report_width at blanks (cut where a word is longer than a line):
+    !! the report's writers call it for every line whose length the text decides.
     subroutine write_wrapped(u, line)
-        integer, intent(in) :: u
-        character(len=*), intent(in) :: line
+        integer, intent(in) :: u                 !! the open report
+        character(len=*), intent(in) :: line     !! the line, any length
         character(len=:), allocatable :: rest, indent
         integer :: cut
         if (len(line) <= report_width) then

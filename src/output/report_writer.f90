@@ -1,6 +1,7 @@
 !> The tabulated report, the whitespace data file and the gnuplot script of one case (SPEC §9).
 module report_writer
     use deck_fields, only: int_text
+    use number_text, only: es_text, f_text, integer_text
     use kinds, only: dp, pi
     use errors, only: error_t
     use atomic_files, only: open_temporary, commit_file
@@ -34,7 +35,7 @@ module report_writer
     use json_text, only: json_string, json_number
     use design_checks, only: evaluate_design_checks
     use check_report, only: write_check_table, write_check_json
-    use report_folding, only: fold_table, fold_report_lines
+    use report_folding, only: fold_table, fold_report_lines, write_wrapped
     implicit none
     private
 
@@ -114,19 +115,35 @@ contains
         type(column_t), intent(in) :: cols(:)
         type(station_table_t), intent(in) :: tab
         character(len=1), intent(in) :: sep
-        integer :: i, c
+        integer :: i, c, k
+        character(len=17*size(cols)) :: line
         rows: do i = 1, tab%n
+            k = 0
             do c = 1, size(cols)
-                if (c > 1 .and. sep /= ' ') write (u, '(a)', advance='no') sep
+                if (c > 1 .and. sep /= ' ') call put(sep)
                 if (cols(c)%integer_valued) then
-                    write (u, '(i3)', advance='no') nint(tab%val(cols(c)%quantity, i))
+                    call put(state_field(nint(tab%val(cols(c)%quantity, i))))
                 else
-                    write (u, '(es16.7e3)', advance='no') tab%val(cols(c)%quantity, i)*cols(c)%scale
+                    call put(es_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, 16, 7, 3))
                 end if
             end do
-            write (u, '(a)') ''
+            write (u, '(a)') line(1:k)
         end do rows
+    contains
+        subroutine put(text)
+            character(len=*), intent(in) :: text
+            line(k + 1:k + len(text)) = text
+            k = k + len(text)
+        end subroutine put
     end subroutine write_rows
+
+    !> A state number as '(i3)' writes it (the states are 0 to 3).
+    pure function state_field(state) result(text)
+        integer, intent(in) :: state     !! the station's state
+        character(len=3) :: text
+        text = integer_text(state)
+        text = adjustr(text)
+    end function state_field
 
     !> `key [unit]`, or `key` for a pure number.
     pure function column_heading(c) result(text)
@@ -760,12 +777,14 @@ contains
         write (u, '(a)') ' '//run_stamp()
         write (u, '(a)') repeat('=', 100)
         if (len_trim(failure) > 0) then
-            write (u, '(/,a,/,a,/)') ' *** ANALYSIS FAILED ***', ' '//failure
+            write (u, '(/,a)') ' *** ANALYSIS FAILED ***'
+            call write_wrapped(u, ' '//trim(failure))
+            write (u, '(a)') ''
         end if
         call write_echo(u, lines)
         call write_groups(u, m, d, sol)
         do i = 1, size(adapt_text)
-            write (u, '(3x,a)') trim(adapt_text(i))
+            call write_wrapped(u, '   '//trim(adapt_text(i)))
         end do
         call write_conventions(u, m)
         call write_log(u, sol)
@@ -782,7 +801,7 @@ contains
         end if
         if (any(len_trim(notes) > 0)) write (u, '(a)') ''
         do i = 1, size(notes)
-            if (len_trim(notes(i)) > 0) write (u, '(a)') ' '//trim(notes(i))
+            if (len_trim(notes(i)) > 0) call write_wrapped(u, ' '//trim(notes(i)))
         end do
         call commit_file(path, u, err)
         if (.not. allocated(err)) call fold_report_lines(path, err)
@@ -810,8 +829,8 @@ contains
         integer :: field
         write (u, '(/,a)') ' 2. MODEL, NONDIMENSIONAL GROUPS AND PHYSICAL DATA'
         if (m%structure%kind == MODEL_BEAM .and. layered(m)) then
-            write (u, '(3x,a)') 'model: BEAM (Timoshenko) on '//ground_model_words(m)// &
-                ', tractions uniform across the width, compatibility on the centre line'
+            call write_wrapped(u, '   model: BEAM (Timoshenko) on '//ground_model_words(m)// &
+                ', tractions uniform across the width, compatibility on the centre line')
             write (u, fmt) 'rho = 32 EI (1-nu_f^2)/(pi E_f l^4)', relative_stiffness(m%structure, &
                 m%ground)
             write (u, fmt) 'beta = b/l', m%structure%b/m%structure%length
@@ -873,7 +892,7 @@ contains
             write (u, '(1x,a)', advance='no') interp_name(m%mesh%interp(field))
         end do
         write (u, '(a,i0,a,i0)') ', unknowns: displacements ', d%nv, ', tractions ', d%nr
-        write (u, '(3x,a)') simplification_text(m, d, sol%decoupled)
+        call write_wrapped(u, '   '//simplification_text(m, d, sol%decoupled))
         write (u, '(3x,a,es9.2,a,es9.2,a,i0,a,i0)') 'solver: tol outer ', m%solver%tol_outer, &
             ', tol inner ', m%solver%tol_inner, ', max outer ', m%solver%max_outer, &
                 ', max inner ', m%solver%max_inner
@@ -910,8 +929,8 @@ contains
         write (u, '(a)') '   the structure receives -sigma. gap = w_f - w_b >= 0; slip = u_b - u_f, '// &
             'u_b = u_s - (h/2) psi.'
         if (m%structure%kind == MODEL_BEAM) then
-            write (u, '(a)') '   BEAM: sigma are line loads (force/length) over the width b; '// &
-                'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh (w''-psi).'
+            call write_wrapped(u, '   BEAM: sigma are line loads (force/length) over the width b; '// &
+                'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh (w''-psi).')
             write (u, '(a)') '   M is the moment about the mid-plane. A MOMENT load M0 > 0 turns '// &
                 'the beam clockwise as the figure draws it'
             write (u, '(a)') '   (x to the right, w down: the +x side settles more); M drops by '// &
@@ -921,22 +940,22 @@ contains
             write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F l^2), '// &
                 'Sigma = l sigma/F, N/F, M/(F l), Q/F.'
         else
-            write (u, '(a)') '   PLATE: sigma are stresses; resultants per unit length: '// &
+            call write_wrapped(u, '   PLATE: sigma are stresses; resultants per unit length: '// &
                 'N_r, N_theta, M_r = D(psi''+nu psi/r), M_theta = D(psi/r+nu psi'') '// &
-                '(> 0: top in tension), Q_r = kGh(w''-psi).'
+                '(> 0: top in tension), Q_r = kGh(w''-psi).')
             write (u, '(a)') '   Nondimensional: t = r/a, U,W = D u/(F a^2), Psi = D psi/(F a), '// &
                 'Sigma = pi a^2 sigma/F, N a/F, M/F, Q a/F.'
         end if
         write (u, '(a)') '   Physical units: force '//trim(m%units%force)//', length '// &
-            trim(m%units%length)//(merge(' (labels of the NONDIM set)', &
-                '                           ', &
-                                        m%nondim))
+            trim(m%units%length)//trim(merge(' (labels of the NONDIM set)', &
+                                             '                           ', m%nondim))
     end subroutine write_conventions
 
     subroutine write_log(u, sol)
         integer, intent(in) :: u
         type(solution_t), intent(in) :: sol
         integer :: i
+        character(len=200) :: line    ! a row, written without its trailing blanks
         write (u, '(/,a)') ' 4. SOLVER LOG (outer: friction threshold tau0 <- f sigma_z; inner: '// &
             'slip / tension sets)'
         if (.not. allocated(sol%history)) then
@@ -948,12 +967,13 @@ contains
         do i = 1, size(sol%history)
             associate (h => sol%history(i))
                 if (h%residual >= 0.0_dp) then
-                    write (u, '(3x,i5,i6,3i10,2es16.4,2x,a)') h%outer, h%inner, h%n_slip, &
+                    write (line, '(3x,i5,i6,3i10,2es16.4,2x,a)') h%outer, h%inner, h%n_slip, &
                         h%n_tension, h%n_changed, h%increment, h%residual, trim(h%note)
                 else
-                    write (u, '(3x,i5,i6,3i10,es16.4,16x,2x,a)') h%outer, h%inner, h%n_slip, &
+                    write (line, '(3x,i5,i6,3i10,es16.4,16x,2x,a)') h%outer, h%inner, h%n_slip, &
                         h%n_tension, h%n_changed, h%increment, trim(h%note)
                 end if
+                write (u, '(a)') trim(line)
             end associate
         end do
         write (u, '(3x,a,i0,a,i0,a)') 'iterations: ', sol%n_outer, ' outer, ', sol%n_inner, ' inner'
@@ -991,12 +1011,12 @@ contains
             do c = 1, size(cols)
                 if (.not. cols(c)%in_report) cycle
                 if (cols(c)%integer_valued) then
-                    write (cell, '(a13)') trim(state_word(nint(tab%val(Q_STATE, i))))
+                    cell = state_word(nint(tab%val(Q_STATE, i)))
+                    cell = adjustr(cell)
                 else if (c == 1) then
-                    write (cell, position_format(extent, 13)) &
-                        tab%val(cols(c)%quantity, i)*cols(c)%scale
+                    cell = position_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, extent, 13)
                 else
-                    write (cell, '(es13.4)') tab%val(cols(c)%quantity, i)*cols(c)%scale
+                    cell = es_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, 13, 4, 0)
                 end if
                 lines(n_header + i)(13*count(cols(1:c - 1)%in_report) + 1:) = cell
             end do
@@ -1022,9 +1042,10 @@ contains
         write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the section; '// &
             'a station at a concentrated load'
         write (u, '(a)') '   appears twice (left and right limit).'
-        if (m%structure%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) write (u, '(a)') &
-            '   A POINT load on the axis makes Q_r unbounded there (Q_r = -P/(2 pi r)); the r = 0 '// &
-            'station shows the symmetry value 0, and max |Q_r| depends on the mesh.'
+        if (m%structure%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) call &
+            write_wrapped(u, '   A POINT load on the axis makes Q_r unbounded there (Q_r = '// &
+            '-P/(2 pi r)); the r = 0 station shows the symmetry value 0, and max |Q_r| depends '// &
+            'on the mesh.')
         if (any(tab%flag /= 0)) write (u, '(a)') '   FLAGGED rows: !T tension beyond the '// &
             'penalty''s O(eta); !O lifted off with a negative pointwise gap (discretisation).'
     end subroutine write_station_notes
@@ -1038,27 +1059,29 @@ contains
         logical, intent(in) :: adapted      !! the mesh was adapted (ADAPT)
         integer :: i
         character(len=60) :: label
+        character(len=200) :: line    ! a row, written without its trailing blanks
         write (u, '(/,a)') ' 7. DESIGN SUMMARY ('//trim(merge('nondimensional (SPEC.md 6)', &
             'physical units            ', m%nondim))//')'//repeat(' ', 16)//'estimated error (*)'
         do i = 1, size(e)
             label = e(i)%label
             if (e(i)%singular .and. e(i)%defined) label = trim(label)//' [s]'
             if (.not. e(i)%defined) then
-                write (u, '(3x,a,t52,a)') trim(label), 'n/a'
+                write (line, '(3x,a,t52,a)') trim(label), 'n/a'
             else if (e(i)%integer_valued) then
-                write (u, '(3x,a,t52,i14)') label, nint(e(i)%value)
+                write (line, '(3x,a,t52,i14)') label, nint(e(i)%value)
             else if (e(i)%has_error) then
-                write (u, '(3x,a,t52,es14.5,2x,a,t82,a,es9.2,a)') label, e(i)%value, &
+                write (line, '(3x,a,t52,es14.5,2x,a,t82,a,es9.2,a)') label, e(i)%value, &
                     trim(e(i)%unit), '+-', e(i)%error, trim(order_text(e(i)%order))
             else
-                write (u, '(3x,a,t52,es14.5,2x,a)') label, e(i)%value, trim(e(i)%unit)
+                write (line, '(3x,a,t52,es14.5,2x,a)') label, e(i)%value, trim(e(i)%unit)
             end if
+            write (u, '(a)') trim(line)
         end do
         if (any(e%singular .and. e%defined)) write (u, '(3x,a)') '[s] singular in the '// &
             'model where it is taken (notes below): the mesh decides the value; no error '// &
             'estimate'
         if (any(e%has_error)) then
-            write (u, '(3x,a)') '(*) '//error_method_text(adapted)
+            call write_wrapped(u, '   (*) '//error_method_text(adapted))
         else
             write (u, '(3x,a)') '(*) no error estimate: it needs N_e >= 16 (two coarser meshes '// &
                 'of at least 4 elements) and coarse solves that converge'
@@ -1124,6 +1147,19 @@ contains
         end if
     end function position_format
 
+    !> A position x as position_format(extent, width) writes it.
+    pure function position_text(x, extent, width) result(text)
+        real(dp), intent(in) :: x         !! the position [the column's unit]
+        real(dp), intent(in) :: extent    !! largest |position| [the column's unit]
+        integer, intent(in) :: width      !! field width, 12 or 13
+        character(len=width) :: text
+        if (position_format(extent, width) == '(f'//int_text(width)//'.5)') then
+            text = f_text(x, width, 5)
+        else
+            text = es_text(x, width, 4, 0)
+        end if
+    end function position_text
+
     subroutine write_intervals(u, m, iv, slip)
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
@@ -1175,9 +1211,9 @@ contains
         if (m%structure%kind == MODEL_BEAM) call write_moment_checks(u, m, sol, v)
         write (u, '(3x,a,es10.2,a)') 'complementarity max |Sigma_z gap|/max W at lift-off '// &
             'stations ', tab%complementarity, '  (penalty: O(eta_bar))'
-        write (u, '(3x,a,es10.2,a)') 'compatibility max |pointwise gap|/max w at contact '// &
-            'stations ', tab%compatibility, '  (discretisation error of the weak contact '// &
-            'condition: falls as the mesh is refined; no pass/fail)'
+        call write_wrapped(u, '   compatibility max |pointwise gap|/max w at contact '// &
+            'stations '//es_text(tab%compatibility, 10, 2, 0)//'  (discretisation error of '// &
+            'the weak contact condition: falls as the mesh is refined; no pass/fail)')
         write (u, '(3x,a,es10.2,a,i0,a)') 'minimum station Sigma_z (< 0: tension) ', &
             nondim_sigma(m, tab%most_tensile), ' (', s%n_tension_flags, &
             ' stations beyond O(eta) flagged !T)'
@@ -1185,7 +1221,7 @@ contains
             nondim_sigma(m, sol%min_sigma_z)
         write (u, '(3x,a,es10.2,a,es9.2,a)') 'friction admissibility max(|Sigma_x| - f Sigma_z) ', &
             s%admissibility, '  (tolerance ', s%admissibility_tol, &
-            merge(': ok)      ', ': EXCEEDED)', s%admissibility <= s%admissibility_tol)
+            trim(merge(': ok)      ', ': EXCEEDED)', s%admissibility <= s%admissibility_tol))
         write (u, '(3x,a,i0,a)') 'state counts at the stations: ', &
             count(tab%state == STATE_STICK), &
             ' stick, '//int_text(count(tab%state == STATE_SLIP))//' slip, '// &

@@ -230,13 +230,13 @@ contains
         integer :: k
         allocate (e(0))
         do k = 1, size(checks)
-            one%key = lower(checks(k)%name)//'_value'
+            one%key = trim(lower(checks(k)%name))//'_value'
             one%label = checks(k)%label
             one%unit = checks(k)%unit
             one%value = checks(k)%value
             one%defined = checks(k)%defined
             e = [e, one]
-            one%key = lower(checks(k)%name)//'_utilisation'
+            one%key = trim(lower(checks(k)%name))//'_utilisation'
             one%label = 'utilisation of '//checks(k)%name
             one%unit = ''
             one%value = checks(k)%utilisation
@@ -245,11 +245,12 @@ contains
     end function check_entries
 
     !> Lower-case copy of an ASCII name, trailing blanks removed.
+    !! (a result of the argument's length, not a deferred one: scripts/check_thread_safety.py)
     pure function lower(name) result(text)
         character(len=*), intent(in) :: name
-        character(len=:), allocatable :: text
+        character(len=len(name)) :: text
         integer :: i
-        text = trim(name)
+        text = name
         do i = 1, len(text)
             if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') text(i:i) = achar(iachar(text(i:i)) + 32)
         end do

@@ -62,9 +62,9 @@ contains
              ent('slope_relative_max_x', '  at', k%u_length, s%slope_relative_max%x*k%length), &
              ent('contact_extent_t', 'contact extent t (largest t >= 0 in contact)', '', extent)]
         if (beam) e = [e, end_entries(s, k)]
-        e = [e, ent(choose(beam, 'contact_length', 'contact_area'), &
-                 choose(beam, 'contact length', 'contact area'), &
-                 choose(beam, k%u_length, area_unit(k)), &
+        e = [e, ent(either(beam, 'contact_length', 'contact_area'), &
+                 either(beam, 'contact length', 'contact area'), &
+                 either(beam, k%u_length, area_unit(k)), &
                  merge(s%contact_length*k%length, s%contact_area*k%length**2, beam)), &
              ent('pressure_mean', 'mean contact pressure V / contact area', k%u_pressure, &
                  s%mean_pressure*k%pressure), &
@@ -76,16 +76,16 @@ contains
         if (beam) e = [e, ent('pressure_near_left_end', 'pressure at d from the left end', &
                               k%u_pressure, s%edge_pressure(1)*k%pressure, &
                                   s%edge_point_in_contact(1))]
-        e = [e, ent(choose(beam, 'pressure_near_right_end', 'pressure_near_rim'), &
-                    choose(beam, 'pressure at d from the right end', &
+        e = [e, ent(either(beam, 'pressure_near_right_end', 'pressure_near_rim'), &
+                    either(beam, 'pressure at d from the right end', &
                         'pressure at d from the rim'), &
                     k%u_pressure, s%edge_pressure(2)*k%pressure, &
                     s%edge_point_in_contact(2))]
-        e = [e, ent('pressure_centre', choose(beam, 'pressure at the centre x = 0', &
+        e = [e, ent('pressure_centre', either(beam, 'pressure at the centre x = 0', &
                     'pressure at the centre r = 0'), k%u_pressure, s%centre_pressure*k%pressure, &
                     s%centre_defined)]
         e = [e, moment_entries(m%structure, s, k), &
-             ent('shear_force_max', choose(beam, 'max |Q| (signed)', 'max |Q_r| (signed)'), &
+             ent('shear_force_max', either(beam, 'max |Q| (signed)', 'max |Q_r| (signed)'), &
                  k%u_shear, s%q_abs_max%value*k%shear), &
              ent('shear_force_max_x', '  at', k%u_length, s%q_abs_max%x*k%length), &
              ent('sliding_utilisation', 'sliding utilisation H/(f V)', '', s%utilisation, &
@@ -196,6 +196,22 @@ contains
             text = b
         end if
     end function choose
+
+    !> choose for the arguments of ent: a blank-padded result (the length of the longer text),
+    !! not a deferred-length one, since summary_entries runs on the sweep's threads and
+    !! gfortran keeps a deferred result's length in a static variable of the caller
+    !! (scripts/check_thread_safety.py); ent stores the texts in fixed-length fields, where the
+    !! padding is what they hold anyway.
+    pure function either(cond, a, b) result(text)
+        logical, intent(in) :: cond              !! which one
+        character(len=*), intent(in) :: a, b     !! the two texts
+        character(len=max(len(a), len(b))) :: text
+        if (cond) then
+            text = a
+        else
+            text = b
+        end if
+    end function either
 
     pure function ent(key, label, unit, value, defined) result(e)
         character(len=*), intent(in) :: key, label, unit
