@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Idempotent set-up of everything fricon needs on a Debian 12 machine (as root, or with sudo):
-# gfortran, OpenBLAS (the BLAS/LAPACK provider), LAPACK, GSL, gnuplot-nox, and fpm from PyPI.
+# gfortran, OpenBLAS (the BLAS/LAPACK provider; its serial build selected, see below), LAPACK,
+# GSL, gnuplot-nox, and fpm from PyPI.
 set -euo pipefail
 
 SUDO=""
@@ -10,7 +11,7 @@ missing=0
 for cmd in gfortran gnuplot gsl-config; do
   command -v "$cmd" >/dev/null 2>&1 || missing=1
 done
-for pkg in libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox gfortran; do
+for pkg in libopenblas-dev libopenblas0-serial liblapack-dev libgsl-dev gnuplot-nox gfortran; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing=1
 done
 # fpm comes from PyPI: a machine without Python's pip gets Debian's
@@ -23,7 +24,22 @@ if [ "$missing" -eq 1 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends \
-    gfortran libopenblas-dev liblapack-dev libgsl-dev gnuplot-nox $pip_packages
+    gfortran libopenblas-dev libopenblas0-serial liblapack-dev libgsl-dev gnuplot-nox \
+    $pip_packages
+fi
+
+# fricon solves every case with single-threaded BLAS (driver/analysis_driver: the same digits
+# on any number of cores), so Debian's default, threaded OpenBLAS only starts a thread pool
+# that waits: about 0.5 ms of every run (output/bench/fixed_cost.md). Where the system still
+# chooses its OpenBLAS automatically, choose the serial build; a choice made by hand
+# (update-alternatives in manual mode) is left alone. Undo with:
+#   update-alternatives --auto libopenblas.so.0-x86_64-linux-gnu
+blas_link=libopenblas.so.0-x86_64-linux-gnu
+blas_serial=/usr/lib/x86_64-linux-gnu/openblas-serial/libopenblas.so.0
+if [ -e "$blas_serial" ] && update-alternatives --query "$blas_link" 2>/dev/null \
+    | grep -q '^Status: auto'; then
+  $SUDO update-alternatives --set "$blas_link" "$blas_serial" >/dev/null
+  echo "setup: OpenBLAS: the serial build ($blas_serial)"
 fi
 
 if ! command -v fpm >/dev/null 2>&1; then
