@@ -17,13 +17,18 @@ contains
                  new_unittest('deferred_length_call_on_threads_found', test_thread_unsafe_found)]
     end subroutine collect_architecture
 
+    !> The exit status of `python3 scripts/SCRIPT.py`, its output in build/SCRIPT.txt.
+    integer function script_status(script) result(status)
+        character(len=*), intent(in) :: script   !! e.g. 'check_layers'
+        call execute_command_line('python3 scripts/'//script//'.py > build/'//script//'.txt', &
+                                  exitstat=status)
+    end function script_status
+
     !> The project's own src/: exit status 0 (no back-edge).
     subroutine test_no_back_edges(err)
         type(error_t), allocatable, intent(out) :: err
-        integer :: status
-        call execute_command_line('python3 scripts/check_layers.py > build/check_layers.txt', &
-                                  exitstat=status)
-        call check(err, status == 0, 'a module uses a later layer: see build/check_layers.txt')
+        call check(err, script_status('check_layers') == 0, &
+                   'a module uses a later layer: see build/check_layers.txt')
     end subroutine test_no_back_edges
 
     !> A tree where a results module uses an output module: exit status 1.
@@ -50,11 +55,8 @@ contains
     !! static variable: two threads at one call site got an empty JSON key).
     subroutine test_thread_safety(err)
         type(error_t), allocatable, intent(out) :: err
-        integer :: status
-        call execute_command_line('python3 scripts/check_thread_safety.py > '// &
-                                  'build/check_thread_safety.txt', exitstat=status)
-        call check(err, status == 0, 'code on threads calls a deferred-length character '// &
-                   'function: see build/check_thread_safety.txt')
+        call check(err, script_status('check_thread_safety') == 0, 'code on threads calls '// &
+                   'a deferred-length character function: see build/check_thread_safety.txt')
     end subroutine test_thread_safety
 
     !> A tree where a results module calls such a function: exit status 1.
