@@ -464,13 +464,26 @@ contains
             "eq '/') { gp_dir = ARG0[1:i_] } }"
     end subroutine write_script_folder
 
+    !> The lines, trimmed, in one write statement (a template of 200 lines written line by line
+    !! cost 0.4 M instructions of gfortran's per-statement work).
     subroutine write_lines(u, lines)
         integer, intent(in) :: u
         character(len=*), intent(in) :: lines(:)
-        integer :: i
+        character(len=:), allocatable :: text
+        integer :: i, k, n
+        if (size(lines) == 0) return
+        allocate (character(len=sum(len_trim(lines)) + size(lines) - 1) :: text)
+        k = 0
         do i = 1, size(lines)
-            write (u, '(a)') trim(lines(i))
+            n = len_trim(lines(i))
+            text(k + 1:k + n) = lines(i)(1:n)
+            k = k + n
+            if (i < size(lines)) then
+                text(k + 1:k + 1) = new_line('a')
+                k = k + 1
+            end if
         end do
+        write (u, '(a)') text
     end subroutine write_lines
 
     !> Factor from a pressure (force/length^2) to the plotted pressure column: that column's
