@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Idempotent set-up of everything fricon needs on a Debian 12 machine (as root, or with sudo):
-# gfortran, OpenBLAS (the BLAS/LAPACK provider; its serial build selected, see below), LAPACK,
+# gfortran, OpenBLAS (the BLAS/LAPACK provider; its OpenMP build selected, see below), LAPACK,
 # GSL, gnuplot-nox, and fpm from PyPI.
 set -euo pipefail
 
@@ -11,7 +11,7 @@ missing=0
 for cmd in gfortran gnuplot gsl-config; do
   command -v "$cmd" >/dev/null 2>&1 || missing=1
 done
-for pkg in libopenblas-dev libopenblas0-serial liblapack-dev libgsl-dev gnuplot-nox gfortran; do
+for pkg in libopenblas-dev libopenblas0-openmp liblapack-dev libgsl-dev gnuplot-nox gfortran; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing=1
 done
 # fpm comes from PyPI: a machine without Python's pip gets Debian's
@@ -24,22 +24,24 @@ if [ "$missing" -eq 1 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends \
-    gfortran libopenblas-dev libopenblas0-serial liblapack-dev libgsl-dev gnuplot-nox \
+    gfortran libopenblas-dev libopenblas0-openmp liblapack-dev libgsl-dev gnuplot-nox \
     $pip_packages
 fi
 
-# fricon solves every case with single-threaded BLAS (driver/analysis_driver: the same digits
-# on any number of cores), so Debian's default, threaded OpenBLAS only starts a thread pool
-# that waits: about 0.5 ms of every run (output/bench/fixed_cost.md). Where the system still
-# chooses its OpenBLAS automatically, choose the serial build; a choice made by hand
-# (update-alternatives in manual mode) is left alone. Undo with:
+# fricon's threads are OpenMP's (a sweep's cases; every case calls BLAS on one thread), so
+# Debian's OpenMP build of OpenBLAS shares their pool where the default pthread build starts a
+# second one that waits (about 0.1 to 0.5 ms of every run; doc/CHOICES.md, "OpenBLAS").
+# Not the serial build: it is not safe to call from two threads at once (2 to 6 of 100
+# two-thread runs of input/atlas/beam.dat came out different from the serial run). Where the
+# system still chooses its OpenBLAS automatically, choose the OpenMP build; a choice made by
+# hand (update-alternatives in manual mode) is left alone. Undo with:
 #   update-alternatives --auto libopenblas.so.0-x86_64-linux-gnu
 blas_link=libopenblas.so.0-x86_64-linux-gnu
-blas_serial=/usr/lib/x86_64-linux-gnu/openblas-serial/libopenblas.so.0
-if [ -e "$blas_serial" ] && update-alternatives --query "$blas_link" 2>/dev/null \
+blas_openmp=/usr/lib/x86_64-linux-gnu/openblas-openmp/libopenblas.so.0
+if [ -e "$blas_openmp" ] && update-alternatives --query "$blas_link" 2>/dev/null \
     | grep -q '^Status: auto'; then
-  $SUDO update-alternatives --set "$blas_link" "$blas_serial" >/dev/null
-  echo "setup: OpenBLAS: the serial build ($blas_serial)"
+  $SUDO update-alternatives --set "$blas_link" "$blas_openmp" >/dev/null
+  echo "setup: OpenBLAS: the OpenMP build ($blas_openmp)"
 fi
 
 if ! command -v fpm >/dev/null 2>&1; then
