@@ -14,6 +14,10 @@
 #include <unistd.h>
 
 extern char **environ;
+/* temporary_cleanup.c: a signal that ends fricon kills its gnuplots before it removes the
+ * temporary figures */
+void fricon_register_child(int pid);
+void fricon_release_child(int pid);
 
 /* Start gnuplot; *channel receives our end of its standard input and output. The process id,
  * or minus errno (-ENOENT: no gnuplot on the PATH). */
@@ -36,6 +40,7 @@ int fricon_gnuplot_start(int *channel)
         return -status;
     }
     *channel = ends[0];
+    fricon_register_child((int)pid);
     return (int)pid;
 }
 
@@ -79,4 +84,5 @@ void fricon_gnuplot_stop(int pid, int channel)
     close(channel);
     while (waitpid((pid_t)pid, &status, 0) < 0 && errno == EINTR) {
     }
+    fricon_release_child(pid);
 }
