@@ -2,16 +2,16 @@
 # Parallel runs give the serial run's digits: input/atlas/beam.dat (432 hard and easy beam
 # cases, among them RHO 1e-6 with EPS_BAR 1e-12, whose Newton path is sensitive to the last
 # bit of any input) solved once on one thread, then RUNS times on two threads; every output
-# file is compared byte for byte with the one-thread run. Run from the project root after
-# `fpm build --profile release`:
+# file is compared byte for byte with the one-thread run (the release build; fpm builds it):
 #   bash scripts/parallel_determinism.sh [RUNS]      (default 100; about 1 s a run)
 # Prints the runs that differed, and which OpenBLAS the loader picks (Debian's serial build is
 # not safe to call from two threads at once: 2 to 6 of 100 runs differed with it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-100}
-bin=$(ls build/gfortran_*/app/fricon 2>/dev/null | head -n1)
-[ -x "$bin" ] || { echo "parallel_determinism: build fricon first (fpm build --profile release)" >&2; exit 1; }
+# the release build of this tree (built if it is not)
+bin=$(fpm run --profile release --runner echo 2>/dev/null | tail -n 1)
+[ -x "$bin" ] || { echo "parallel_determinism: cannot build fricon (fpm build --profile release)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export SOURCE_DATE_EPOCH=1795000000

@@ -1006,9 +1006,11 @@ contains
         logical, intent(in) :: nondim
         integer :: i, c, n_header
         real(dp) :: extent
+        logical :: fixed
         character(len=13) :: cell
         character(len=13*size(cols) + 6), allocatable :: lines(:)
         extent = maxval(abs(tab%val(cols(1)%quantity, :)*cols(1)%scale), mask=tab%n > 0)
+        fixed = fixed_positions(extent, 13)
         write (u, '(/,a)') heading
         n_header = merge(1, 2, nondim)
         allocate (lines(n_header + tab%n))
@@ -1027,7 +1029,7 @@ contains
                     cell = state_word(nint(tab%val(Q_STATE, i)))
                     cell = adjustr(cell)
                 else if (c == 1) then
-                    cell = position_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, extent, 13)
+                    cell = position_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, fixed, 13)
                 else
                     cell = es_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, 13, 4, 0)
                 end if
@@ -1151,22 +1153,29 @@ contains
         real(dp), intent(in) :: extent    !! largest |position| [the column's unit]
         integer, intent(in) :: width      !! field width, 12 or 13
         character(len=:), allocatable :: fmt
-        real(dp) :: widest
-        widest = merge(1.0e4_dp, 1.0e6_dp, width <= 12)
-        if (extent == 0.0_dp .or. (extent >= 1.0e-3_dp .and. extent < widest)) then
+        if (fixed_positions(extent, width)) then
             fmt = '(f'//int_text(width)//'.5)'
         else
             fmt = '(es'//int_text(width)//'.4)'
         end if
     end function position_format
 
-    !> A position x as position_format(extent, width) writes it.
-    pure function position_text(x, extent, width) result(text)
-        real(dp), intent(in) :: x         !! the position [the column's unit]
+    !> position_format's choice: 5 decimals (true) or scientific.
+    pure logical function fixed_positions(extent, width) result(fixed)
         real(dp), intent(in) :: extent    !! largest |position| [the column's unit]
         integer, intent(in) :: width      !! field width, 12 or 13
+        real(dp) :: widest
+        widest = merge(1.0e4_dp, 1.0e6_dp, width <= 12)
+        fixed = extent == 0.0_dp .or. (extent >= 1.0e-3_dp .and. extent < widest)
+    end function fixed_positions
+
+    !> A position x as position_format writes it; fixed: fixed_positions of the column.
+    pure function position_text(x, fixed, width) result(text)
+        real(dp), intent(in) :: x         !! the position [the column's unit]
+        logical, intent(in) :: fixed      !! 5 decimals (fixed_positions), else scientific
+        integer, intent(in) :: width      !! field width, 12 or 13
         character(len=width) :: text
-        if (position_format(extent, width) == '(f'//int_text(width)//'.5)') then
+        if (fixed) then
             text = f_text(x, width, 5)
         else
             text = es_text(x, width, 4, 0)
