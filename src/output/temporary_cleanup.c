@@ -110,7 +110,9 @@ void fricon_release_temporary(const char *path, int length)
 }
 
 /* Register a child process (a gnuplot that writes temporary figures): killed by the handler
- * before it removes the temporary files, so that it cannot write one after them. */
+ * before it removes the temporary files, so that it cannot write one after them. fricon runs
+ * one gnuplot per thread; a child beyond the table's 64 is not registered (it is then only
+ * covered by the handler's second sweep). */
 void fricon_register_child(int pid)
 {
     int k, expected;
