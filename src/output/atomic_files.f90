@@ -5,6 +5,7 @@ module atomic_files
     use iso_c_binding, only: c_int, c_char, c_null_char
     use errors, only: error_t, new_error, EXIT_INPUT
     use output_paths, only: looks_like_output
+    use file_system, only: size_and_last_byte
     use temporary_cleanup, only: register_temporary, release_temporary
     implicit none
     private
@@ -40,9 +41,9 @@ contains
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         integer :: ios
         character(len=256) :: msg
-        logical :: there
-        inquire (file=path//'.tmp', exist=there)
-        if (there) then
+        integer :: size_bytes, last
+        call size_and_last_byte(path//'.tmp', size_bytes, last)   ! -1: none (or no file)
+        if (size_bytes >= 0) then
             if (.not. looks_like_output(path//'.tmp')) then
                 ! a file of the user's named like a temporary output: not replaced
                 call new_error(err, EXIT_INPUT, 'not written: '//path//'.tmp exists and is '// &
@@ -123,33 +124,21 @@ contains
     logical function complete(path, written)
         character(len=*), intent(in) :: path
         integer, intent(in) :: written          !! bytes written; < 0: not known
-        integer :: u, ios, size_bytes
-        character(len=1) :: last
-        complete = .false.
-        open (newunit=u, file=path, status='old', action='read', access='stream', &
-              form='unformatted', iostat=ios)
-        if (ios /= 0) return
-        inquire (unit=u, size=size_bytes)
-        if (size_bytes > 0 .and. (written < 0 .or. size_bytes == written)) then
-            read (u, pos=size_bytes, iostat=ios) last
-            complete = ios == 0 .and. last == achar(10)
-        end if
-        close (u)
+        integer :: size_bytes, last
+        call size_and_last_byte(path, size_bytes, last)
+        complete = size_bytes > 0 .and. (written < 0 .or. size_bytes == written) .and. &
+                   last == 10
     end function complete
 
     !> A regular file is at path and does not look like fricon's output (a folder is left to
     !! rename's own error).
     logical function existing_foreign(path)
         character(len=*), intent(in) :: path
-        logical :: there
-        integer :: u, ios
+        integer :: size_bytes, last
+        ! one open tells a readable file (a folder, an unreadable or absent path: size -1)
+        call size_and_last_byte(path, size_bytes, last)
         existing_foreign = .false.
-        inquire (file=path, exist=there)
-        if (.not. there) return
-        open (newunit=u, file=path, status='old', action='read', access='stream', &
-              form='unformatted', iostat=ios)
-        if (ios /= 0) return                      ! a folder, or unreadable
-        close (u)
+        if (size_bytes < 0) return
         existing_foreign = .not. looks_like_output(path)
     end function existing_foreign
 

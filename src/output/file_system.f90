@@ -1,10 +1,11 @@
-!> Files and folders without a shell: create a folder with its parents (mkdir -p), list the
-!! names in one that have a given prefix and suffix, rename and delete a file. POSIX
-!! opendir/closedir, rename and remove through bind(c) interfaces; mkdir and readdir through
-!! the small C shim file_system_shim.c (their C types, mode_t and struct dirent, differ
-!! between systems).
+!> Files and folders without a shell: create a folder with its parents (mkdir -p), check that
+!! files can be created in it, list the names in one that have a given prefix and suffix, read
+!! a file's size and last byte, rename and delete a file. POSIX opendir/closedir, rename and
+!! unlink through bind(c) interfaces; mkdir, readdir, stat and access through the small C shim
+!! file_system_shim.c (their C types, mode_t, struct dirent and struct stat, differ between
+!! systems).
 module file_system
-    use iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
+    use iso_c_binding, only: c_char, c_int, c_long, c_ptr, c_null_char, c_associated
     implicit none
     private
 
@@ -17,6 +18,23 @@ module file_system
             character(kind=c_char), intent(in) :: path(*)
             integer(c_int) :: code
         end function c_make_folder
+        ! int fricon_writable_folder(const char *path, char *why, int capacity);   (shim)
+        function c_writable_folder(path, why, capacity) bind(c, name='fricon_writable_folder') &
+            result(code)
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: path(*)
+            character(kind=c_char), intent(out) :: why(*)
+            integer(c_int), value :: capacity
+            integer(c_int) :: code
+        end function c_writable_folder
+        ! long fricon_size_and_last_byte(const char *path, int *last);   (file_system_shim.c)
+        function c_size_and_last_byte(path, last) bind(c, name='fricon_size_and_last_byte') &
+            result(size)
+            import :: c_char, c_int, c_long
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int), intent(out) :: last
+            integer(c_long) :: size
+        end function c_size_and_last_byte
         ! DIR *opendir(const char *name);
         function c_opendir(path) bind(c, name='opendir') result(folder)
             import :: c_char, c_ptr
@@ -38,12 +56,12 @@ module file_system
             character(kind=c_char), intent(in) :: oldpath(*), newpath(*)
             integer(c_int) :: code
         end function c_rename
-        ! int remove(const char *pathname);
-        function c_remove(path) bind(c, name='remove') result(code)
+        ! int unlink(const char *pathname);   (a file only: it fails on a folder)
+        function c_unlink(path) bind(c, name='unlink') result(code)
             import :: c_char, c_int
             character(kind=c_char), intent(in) :: path(*)
             integer(c_int) :: code
-        end function c_remove
+        end function c_unlink
         ! int closedir(DIR *dirp);
         function c_closedir(folder) bind(c, name='closedir') result(code)
             import :: c_ptr, c_int
@@ -52,7 +70,8 @@ module file_system
         end function c_closedir
     end interface
 
-    public :: make_folder, folder_entries, move_file, delete_file
+    public :: make_folder, writable_folder, folder_entries, size_and_last_byte, move_file, &
+              delete_file
 
 contains
 
@@ -72,6 +91,36 @@ contains
         code = c_make_folder(path//c_null_char)
         made = code == 0
     end subroutine make_folder
+
+    !> Whether files can be created in the folder `path` (it is a folder, and access(2) grants
+    !! writing and searching; a read-only file system is refused too); when not, `why` holds
+    !! the system's reason (e.g. 'Permission denied', 'Not a directory').
+    subroutine writable_folder(path, writable, why)
+        character(len=*), intent(in) :: path                 !! the folder
+        logical, intent(out) :: writable                     !! files can be created in it
+        character(len=:), allocatable, intent(out) :: why    !! the reason when not
+        character(kind=c_char) :: buffer(name_max)
+        integer :: n
+        buffer = c_null_char
+        writable = c_writable_folder(path//c_null_char, buffer, int(name_max, c_int)) == 0
+        n = 0
+        do while (n < name_max)
+            if (buffer(n + 1) == c_null_char) exit
+            n = n + 1
+        end do
+        why = chars_text(buffer, int(n, c_int))
+    end subroutine writable_folder
+
+    !> The size in bytes of the file at `path` (-1 when it cannot be opened or read) and its
+    !! last byte (-1 when the file is empty or unreadable): one open, fstat, pread and close.
+    subroutine size_and_last_byte(path, size_bytes, last)
+        character(len=*), intent(in) :: path       !! the file
+        integer, intent(out) :: size_bytes         !! its size [bytes], or -1
+        integer, intent(out) :: last               !! its last byte (0..255), or -1
+        integer(c_int) :: byte
+        size_bytes = int(c_size_and_last_byte(path//c_null_char, byte))
+        last = int(byte)
+    end subroutine size_and_last_byte
 
     !> The names in folder `dir` that start with `prefix` and end with `suffix`, read in one
     !! pass over the folder; `listed` is false when the folder cannot be read (it does not
@@ -118,11 +167,11 @@ contains
         moved = c_rename(from//c_null_char, to//c_null_char) == 0
     end subroutine move_file
 
-    !> Delete the file at path, if there is one.
+    !> Delete the file at path, if there is one (unlink(2): never a folder).
     subroutine delete_file(path)
         character(len=*), intent(in) :: path   !! the file (nothing happens if there is none)
         integer(c_int) :: code
-        code = c_remove(path//c_null_char)
+        code = c_unlink(path//c_null_char)
     end subroutine delete_file
 
     !> The first len(prefix) characters of buffer are prefix.

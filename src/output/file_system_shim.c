@@ -1,10 +1,13 @@
 /* The POSIX calls of file_system.f90 whose C types Fortran cannot spell portably: mkdir's
- * mode_t, and readdir's struct dirent (its layout differs between systems). */
+ * mode_t, readdir's struct dirent and stat's struct stat (their layouts differ between
+ * systems). */
 #include <dirent.h>
+#include <fcntl.h>
 #include <errno.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <unistd.h>
 
 /* mkdir(path, 0777) (less the umask): 0 when made, or when a folder is there already;
  * else errno (a file of that name: EEXIST). */
@@ -27,4 +30,43 @@ int fricon_next_entry(DIR *folder, char *name, int capacity)
     if (n >= (size_t)capacity) return -2;
     memcpy(name, entry->d_name, n + 1);
     return (int)n;
+}
+
+/* 0 when path is a folder this process may create files in (access(2) with W_OK | X_OK, which
+ * also answers EROFS for a read-only file system); else errno (ENOTDIR when it is no folder),
+ * and the system's text for it copied into why (capacity bytes, NUL terminated). One stat and
+ * one access: no probe file is created and unlinked (an inode made and freed on every run). */
+int fricon_writable_folder(const char *path, char *why, int capacity)
+{
+    struct stat st;
+    int code = 0;
+    if (stat(path, &st) != 0) code = errno;
+    else if (!S_ISDIR(st.st_mode)) code = ENOTDIR;
+    else if (access(path, W_OK | X_OK) != 0) code = errno;
+    if (code != 0 && capacity > 0) {
+        strncpy(why, strerror(code), (size_t)capacity - 1);
+        why[capacity - 1] = '\0';
+    }
+    return code;
+}
+
+/* The size of the file at path in bytes and its last byte (-1 when it is empty), read with
+ * one open, fstat, pread and close; -1 when it cannot be opened or read. */
+long fricon_size_and_last_byte(const char *path, int *last)
+{
+    struct stat st;
+    unsigned char byte;
+    long size = -1;
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    *last = -1;
+    if (fd < 0) return -1;
+    if (fstat(fd, &st) == 0) {
+        size = (long)st.st_size;
+        if (size > 0) {
+            if (pread(fd, &byte, 1, (off_t)(size - 1)) == 1) *last = byte;
+            else size = -1;
+        }
+    }
+    close(fd);
+    return size;
 }

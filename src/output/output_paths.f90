@@ -6,7 +6,8 @@ module output_paths
     use iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
     use errors, only: error_t, new_error, EXIT_INPUT
     use deck_fields, only: int_text
-    use file_system, only: make_folder, folder_entries
+    use file_system, only: make_folder, writable_folder, folder_entries, delete_file, &
+                           size_and_last_byte
     use sha256, only: sha256_hex
     implicit none
     private
@@ -42,29 +43,26 @@ module output_paths
 
 contains
 
-    !> Create the folder (and its parents) and prove it writable with a probe file; an error
-    !! (exit status 1) names the folder and the reason.
+    !> Create the folder (and its parents) and check that files can be created in it (stat
+    !! and access(2): no probe file); an error (exit status 1) names the folder and the reason.
     subroutine prepare_output_dir(dir, err)
         character(len=*), intent(in) :: dir              !! the output folder
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
-        integer :: u, ios
-        character(len=256) :: msg
-        logical :: made
+        character(len=:), allocatable :: why
+        logical :: made, writable
         ! (the figures' gnuplot command line quotes the folder: these characters would break it)
         if (scan(dir, '''"`$\') > 0) then
             call new_error(err, EXIT_INPUT, 'output folder '''//dir//''': quotes, backquotes, '// &
                            '$ and \ are not allowed in its name')
             return
         end if
-        call make_folder(dir, made)        ! when it fails, the probe file below says why
-        open (newunit=u, file=dir//'/.fricon_write_probe', status='replace', action='write', &
-              iostat=ios, iomsg=msg)
-        if (ios /= 0) then
+        call make_folder(dir, made)        ! when it fails, the check below says why
+        call writable_folder(dir, writable, why)
+        if (.not. writable) then
             call new_error(err, EXIT_INPUT, 'cannot write to the output folder '//dir//': '// &
-                           trim(msg)//' (is it a file, or read-only?)')
+                           why//' (is it a file, or read-only?)')
             return
         end if
-        close (u, status='delete', iostat=ios)
     end subroutine prepare_output_dir
 
     !> Refuse (exit status 1) when an output of the deck would be the deck itself: the deck
@@ -258,13 +256,13 @@ contains
     !! given an output's name is ever deleted.
     subroutine remove_output(path)
         character(len=*), intent(in) :: path   !! a file
-        integer :: u, ios
-        logical :: there
-        inquire (file=path, exist=there)
-        if (.not. there) return
+        integer :: size_bytes, last
+        ! nothing there, or a folder (size -1): nothing to remove. (Not by a failing Fortran
+        ! open: gfortran formats its message and loads the locale's files for each one)
+        call size_and_last_byte(path, size_bytes, last)
+        if (size_bytes < 0) return
         if (.not. looks_like_output(path)) return
-        open (newunit=u, file=path, status='old', iostat=ios)
-        if (ios == 0) close (u, status='delete', iostat=ios)
+        call delete_file(path)
     end subroutine remove_output
 
     !> See remove_output.
@@ -284,6 +282,9 @@ contains
         if (ios /= 0) return
         read (u, iostat=ios) head
         close (u)
+        ! (gfortran opens a folder; reading it fails: no output. The end of a shorter file is
+        ! no failure)
+        if (ios > 0) return
         n = index(head, achar(10)) - 1
         if (n < 0) n = len_trim(head)
         if (len_trim(head) == 0) then
@@ -319,12 +320,11 @@ contains
         character(len=*), intent(in) :: path, deck_real
         character(len=8192) :: line
         character(len=:), allocatable :: given
-        integer :: u, ios, k
-        logical :: there
+        integer :: u, ios, k, size_bytes, last
         names_deck = .false.
         if (len(deck_real) == 0) return
-        inquire (file=path, exist=there)
-        if (.not. there) return
+        call size_and_last_byte(path, size_bytes, last)   ! (see remove_output)
+        if (size_bytes < 0) return
         open (newunit=u, file=path, status='old', action='read', iostat=ios)
         if (ios /= 0) return
         do
