@@ -50,7 +50,9 @@ contains
                  new_unittest('moments_about_mid_plane_and_base', test_moment_conventions), &
                  new_unittest('epoch_to_iso_time', test_epoch_time), &
                  new_unittest('version_and_run_time_in_every_file', test_traceability), &
-                 new_unittest('springs_file_only_where_meaningful', test_springs_file)]
+                 new_unittest('springs_file_only_where_meaningful', test_springs_file), &
+                 new_unittest('rewritten_output_reuses_its_file_not_its_links', &
+                              test_rewritten_output)]
     end subroutine collect_report_writer
 
     function card(name, fields) result(line)
@@ -441,6 +443,82 @@ contains
         call check(err, .not. allocated(refusal) .and. exists(dir//'/whole.txt'), &
                    'a complete file was not committed')
     end subroutine test_incomplete_file
+
+    !> An output written again (atomic_files): a shorter text leaves nothing of the longer
+    !! one behind (the file's bytes are exactly the new lines), the file is the same inode
+    !! (rewritten in place: no inode allocated and freed), and an earlier output that has a
+    !! second name (a hard link kept as a copy) is not rewritten: the link keeps the old text,
+    !! the output gets a new file. Expected bytes: the lines written plus one line end each.
+    subroutine test_rewritten_output(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: path = dir//'/again.txt'
+        character(len=*), parameter :: long = '= a longer first report, two lines', &
+                                       short = '= short'
+        integer :: inode_before
+        call clean_dir()
+        call write_output(path, [long, long], err)
+        if (allocated(err)) return
+        inode_before = inode(path)
+        call write_output(path, [short], err)
+        if (allocated(err)) return
+        call check(err, file_text(path) == short//achar(10), 'the rewritten file is not '// &
+                   'exactly its new text: "'//file_text(path)//'"')
+        if (allocated(err)) return
+        call check(err, inode(path) == inode_before .and. inode_before > 0, 'the output '// &
+                   'was not rewritten in place (a new inode)')
+        if (allocated(err)) return
+        call execute_command_line('ln '//path//' '//dir//'/kept.txt')
+        call write_output(path, [long], err)
+        if (allocated(err)) return
+        call check(err, file_text(dir//'/kept.txt') == short//achar(10) .and. &
+                   file_text(path) == long//achar(10) .and. inode(path) /= inode_before, &
+                   'a hard-linked earlier output was rewritten through its other name')
+    end subroutine test_rewritten_output
+
+    !> Write lines to path through open_temporary and commit_file.
+    subroutine write_output(path, lines, err)
+        character(len=*), intent(in) :: path, lines(:)
+        type(error_t), allocatable, intent(out) :: err
+        type(error_t), allocatable :: refusal
+        integer :: u, i
+        call open_temporary(path, u, refusal)
+        if (.not. allocated(refusal)) then
+            do i = 1, size(lines)
+                write (u, '(a)') trim(lines(i))
+            end do
+            call commit_file(path, u, refusal)
+        end if
+        call check(err, .not. allocated(refusal), 'cannot write '//path)
+    end subroutine write_output
+
+    !> The whole file as text ('' when it cannot be read).
+    function file_text(path) result(text)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: text
+        integer :: u, ios, n
+        text = ''
+        open (newunit=u, file=path, status='old', action='read', access='stream', &
+              form='unformatted', iostat=ios)
+        if (ios /= 0) return
+        inquire (unit=u, size=n)
+        deallocate (text)
+        allocate (character(len=n) :: text)
+        if (n > 0) read (u, iostat=ios) text
+        close (u)
+    end function file_text
+
+    !> The inode number of path, from stat(1) (-1 when it cannot be read).
+    integer function inode(path)
+        character(len=*), intent(in) :: path
+        integer :: u, ios
+        inode = -1
+        call execute_command_line('stat -c %i '//path//' > '//dir//'/inode.out')
+        open (newunit=u, file=dir//'/inode.out', status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        read (u, *, iostat=ios) inode
+        if (ios /= 0) inode = -1
+        close (u)
+    end function inode
 
     subroutine clean_dir()
         call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)

@@ -94,7 +94,9 @@ contains
                 c%val(slot(t%row(k))) = c%val(slot(t%row(k))) + t%val(k)
                 k = next(k)
             end do entries
-            slot(c%row(c%ptr(j):nnz)) = 0
+            do k = c%ptr(j), nnz        ! (a loop: the vector subscript made a heap temporary)
+                slot(c%row(k)) = 0
+            end do
             call drop_zeros(c, j, nnz)
         end do columns
         c%ptr(t%ncol + 1) = nnz + 1

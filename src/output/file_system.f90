@@ -1,9 +1,9 @@
 !> Files and folders without a shell: create a folder with its parents (mkdir -p), check that
 !! files can be created in it, list the names in one that have a given prefix and suffix, read
-!! a file's size and last byte, rename and delete a file. POSIX opendir/closedir, rename and
-!! unlink through bind(c) interfaces; mkdir, readdir, stat and access through the small C shim
-!! file_system_shim.c (their C types, mode_t, struct dirent and struct stat, differ between
-!! systems).
+!! a file's size, last byte and number of names, rename and delete a file. POSIX
+!! opendir/closedir, rename and unlink through bind(c) interfaces; mkdir, readdir, stat, lstat
+!! and access through the C shim file_system_shim.c (their C types, mode_t, struct dirent
+!! and struct stat, differ between systems).
 module file_system
     use iso_c_binding, only: c_char, c_int, c_long, c_ptr, c_null_char, c_associated
     implicit none
@@ -35,6 +35,12 @@ module file_system
             integer(c_int), intent(out) :: last
             integer(c_long) :: size
         end function c_size_and_last_byte
+        ! long fricon_file_links(const char *path);   (file_system_shim.c)
+        function c_file_links(path) bind(c, name='fricon_file_links') result(links)
+            import :: c_char, c_long
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_long) :: links
+        end function c_file_links
         ! DIR *opendir(const char *name);
         function c_opendir(path) bind(c, name='opendir') result(folder)
             import :: c_char, c_ptr
@@ -70,8 +76,8 @@ module file_system
         end function c_closedir
     end interface
 
-    public :: make_folder, writable_folder, folder_entries, size_and_last_byte, move_file, &
-              delete_file
+    public :: make_folder, writable_folder, folder_entries, size_and_last_byte, file_links, &
+              move_file, delete_file
 
 contains
 
@@ -121,6 +127,13 @@ contains
         size_bytes = int(c_size_and_last_byte(path//c_null_char, byte))
         last = int(byte)
     end subroutine size_and_last_byte
+
+    !> The number of names (hard links) of the regular file at `path`; -1 when there is no
+    !! regular file there (nothing, a folder, a symbolic link).
+    integer function file_links(path)
+        character(len=*), intent(in) :: path   !! the file
+        file_links = int(c_file_links(path//c_null_char))
+    end function file_links
 
     !> The names in folder `dir` that start with `prefix` and end with `suffix`, read in one
     !! pass over the folder; `listed` is false when the folder cannot be read (it does not

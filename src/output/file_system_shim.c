@@ -70,3 +70,12 @@ long fricon_size_and_last_byte(const char *path, int *last)
     close(fd);
     return size;
 }
+
+/* The number of names (hard links) of the regular file at path; -1 when there is none there,
+ * or it is no regular file (lstat: a symbolic link counts as no regular file). */
+long fricon_file_links(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode)) return -1;
+    return (long)st.st_nlink;
+}
