@@ -407,9 +407,9 @@ contains
             sol%reaction = known%reaction
             sol%applied = known%applied
             sol%n_solves = known%n_solves
-            call finish_case(m, d, sol, c, err)
+            call finish_case(m, d, sol, c, err, soil=.false.)
         else
-            call solve_on(m, d, c, err, cache=cache, start=start)
+            call solve_on(m, d, c, err, cache=cache, start=start, soil=.false.)
         end if
         ok = .not. allocated(err)
     end subroutine coarse_case

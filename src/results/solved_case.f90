@@ -49,7 +49,7 @@ contains
     end subroutine solve_case
 
     !> Solve m on the discretisation d and finish the case (finish_case).
-    subroutine solve_on(m, d, c, err, progress_unit, cache, start)
+    subroutine solve_on(m, d, c, err, progress_unit, cache, start, soil)
         type(model_t), intent(in) :: m                  !! the model
         type(discretization_t), intent(in) :: d         !! any mesh of m (MESH card, adapted)
         type(case_t), intent(out) :: c                  !! the finished case
@@ -58,6 +58,8 @@ contains
         type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
         !> a solution known on d's nested coarser mesh (contact_solver, solve_contact)
         type(coarse_solution_t), intent(in), optional :: start
+        !> the soil's displacement at the stations too (default; finish_case)
+        logical, intent(in), optional :: soil
         type(solution_t) :: sol
         if (present(progress_unit)) then
             if (progress_unit >= 0) then
@@ -72,7 +74,7 @@ contains
             c = failed_case(m, d, sol)
             return
         end if
-        call finish_case(m, d, sol, c, err)
+        call finish_case(m, d, sol, c, err, soil)
     end subroutine solve_on
 
     !> A case whose solve failed: what there is of it (the discretisation, the solver's counts
@@ -89,18 +91,22 @@ contains
     end function failed_case
 
     !> The results of a solution: station and design tables, design summary, key results.
-    subroutine finish_case(m, d, sol, c, err)
+    subroutine finish_case(m, d, sol, c, err, soil)
         type(model_t), intent(in) :: m                  !! the model solved
         type(discretization_t), intent(in) :: d         !! its discretisation
         type(solution_t), intent(in) :: sol             !! its solution
         type(case_t), intent(out) :: c                  !! the finished case
         type(error_t), allocatable, intent(out) :: err  !! a station value not finite
+        !> the soil's displacement at the stations too (default); .false. for a case only the
+        !! key results of are read (station_results::tabulate)
+        logical, intent(in), optional :: soil
         c%model = m
         c%d = d
         c%sol = sol
         allocate (c%entries(0))
-        call tabulate(m, d, sol, c%stations, err)
-        if (.not. allocated(err)) call tabulate_design(m, d, sol, c%stations, c%design, err)
+        call tabulate(m, d, sol, c%stations, err, soil=soil)
+        if (.not. allocated(err)) call tabulate_design(m, d, sol, c%stations, c%design, err, &
+                                                       soil)
         if (allocated(err)) return
         c%summary = summarise(m, sol, c%design)
         c%extent = contact_extent(c%design, m%structure%length)

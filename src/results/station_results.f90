@@ -69,32 +69,36 @@ contains
 
     !> Evaluate everything at the stations (every node, or OUTPUT stations equally spaced,
     !! plus both sides of every concentrated load).
-    subroutine tabulate(m, d, sol, tab, err, with_nodes)
+    subroutine tabulate(m, d, sol, tab, err, with_nodes, soil)
         type(model_t), intent(in) :: m                !! the model
         type(discretization_t), intent(in) :: d       !! the discretisation
         type(solution_t), intent(in) :: sol           !! the solution
         type(station_table_t), intent(out) :: tab     !! the station table
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         logical, intent(in), optional :: with_nodes   !! OUTPUT stations and every node
+        !> the soil's surface displacement at the stations (default); .false.: not computed,
+        !! and the columns made from it (gap, slip) and the overlap flags are left 0. For the
+        !! error estimate's extra solves, which read the key results only (none of them is
+        !! made from the soil's displacement); a tenth of a small case's work each
+        logical, intent(in), optional :: soil
         real(dp), allocatable :: x(:), u_f(:), w_f(:), rec(:, :), gap_pw(:)
-        logical :: nodes_too
+        logical :: nodes_too, with_soil
         integer :: i
 
         nodes_too = .false.
         if (present(with_nodes)) nodes_too = with_nodes
+        with_soil = .true.
+        if (present(soil)) with_soil = soil
         call station_positions(m, d, nodes_too, x, tab%side)
         tab%n = size(x)
         allocate (tab%val(n_quantities, tab%n), tab%state(tab%n), tab%flag(tab%n))
         allocate (u_f(tab%n), w_f(tab%n), gap_pw(tab%n))
         tab%val = 0.0_dp
         tab%val(Q_X, :) = x
-        call surface_displacement(m, d, sol%z(d%nv + 1:), tab%val(Q_X, :), u_f, w_f, err)
-        if (allocated(err)) return
-        ! no silent Inf or NaN in a report (a quadrature that met the kernel's singularity)
-        if (.not. (all(abs(u_f) <= huge(1.0_dp)) .and. all(abs(w_f) <= huge(1.0_dp)))) then
-            call new_error(err, EXIT_INTERNAL, 'the soil surface displacement at a station is '// &
-                           'not finite')
-            return
+        gap_pw = 0.0_dp
+        if (with_soil) then
+            call soil_displacement(m, d, sol, tab%val(Q_X, :), u_f, w_f, err)
+            if (allocated(err)) return
         end if
         allocate (rec(2, 0:d%msh%ne))
         rec(:, :) = nodal_traction_means(d, sol%z(d%nv + 1:))
@@ -104,16 +108,37 @@ contains
                 tab%val(:, i))
             tab%state(i) = contact_state(tab%val(Q_SX, i), tab%val(Q_SZ, i), &
                                          friction_threshold(m%interface%f, tab%val(Q_SZ, i)))
-            gap_pw(i) = w_f(i) - tab%val(Q_W, i)
-            call gap_and_slip(m, tab%state(i), gap_pw(i), &
-                              tab%val(Q_U, i) - 0.5_dp*m%structure%h*tab%val(Q_PSI, i) - u_f(i), &
-                              tab%val(Q_SX, i), tab%val(Q_GAP, i), tab%val(Q_SLIP, i))
+            if (with_soil) then
+                gap_pw(i) = w_f(i) - tab%val(Q_W, i)
+                call gap_and_slip(m, tab%state(i), gap_pw(i), &
+                                  tab%val(Q_U, i) - 0.5_dp*m%structure%h*tab%val(Q_PSI, i) - &
+                                  u_f(i), tab%val(Q_SX, i), tab%val(Q_GAP, i), &
+                                  tab%val(Q_SLIP, i))
+            end if
             tab%val(Q_STATE, i) = real(tab%state(i), dp)
         end do stations
         call statics_resultants(m, d, sol, tab)
         call pointwise_checks(m, gap_pw, tab)
         tab%w_mean = mean_settlement(m%structure, d, sol)
     end subroutine tabulate
+
+    !> The soil's surface displacement (u_f, w_f) at the points x under the solution's
+    !! tractions; an error where it is not finite (a quadrature that met the kernel's
+    !! singularity: no silent Inf or NaN in a report).
+    subroutine soil_displacement(m, d, sol, x, u_f, w_f, err)
+        type(model_t), intent(in) :: m
+        type(discretization_t), intent(in) :: d
+        type(solution_t), intent(in) :: sol
+        real(dp), intent(in) :: x(:)
+        real(dp), intent(out) :: u_f(:), w_f(:)
+        type(error_t), allocatable, intent(out) :: err
+        call surface_displacement(m, d, sol%z(d%nv + 1:), x, u_f, w_f, err)
+        if (allocated(err)) return
+        if (.not. (all(abs(u_f) <= huge(1.0_dp)) .and. all(abs(w_f) <= huge(1.0_dp)))) then
+            call new_error(err, EXIT_INTERNAL, 'the soil surface displacement at a station is '// &
+                           'not finite')
+        end if
+    end subroutine soil_displacement
 
     !> The mean of the finite-element settlement w over the base, weighted by 2 pi r for the
     !! plate: 4-point Gauss per element (exact for w of degree <= 5, 6 with the weight r).
@@ -146,18 +171,19 @@ contains
     !! would otherwise be missed or read low; stations finer than the mesh keep locating the
     !! contact boundaries as finely as they did). The printed table itself when it already is
     !! that one.
-    subroutine tabulate_design(m, d, sol, tab, design, err)
+    subroutine tabulate_design(m, d, sol, tab, design, err, soil)
         type(model_t), intent(in) :: m                 !! the model
         type(discretization_t), intent(in) :: d        !! the discretisation
         type(solution_t), intent(in) :: sol            !! the solution
         type(station_table_t), intent(in) :: tab       !! the printed table (tabulate)
         type(station_table_t), intent(out) :: design   !! the design table
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        logical, intent(in), optional :: soil   !! the soil's displacement too (tabulate)
         if (m%output%stations < 2) then
             design = tab
             return
         end if
-        call tabulate(m, d, sol, design, err, with_nodes=.true.)
+        call tabulate(m, d, sol, design, err, with_nodes=.true., soil=soil)
     end subroutine tabulate_design
 
     !> Nodes of the mesh (or `stations` equally spaced points), with every patch edge inside
