@@ -48,6 +48,7 @@ contains
         integer :: ios
         character(len=256) :: msg
         integer :: size_bytes, last
+        logical :: moved
         call size_and_last_byte(path//'.tmp', size_bytes, last)   ! -1: none (or no file)
         if (size_bytes >= 0) then
             if (.not. looks_like_output(path//'.tmp')) then
@@ -65,6 +66,8 @@ contains
             ! overwritten from its start, without truncation (commit_file cuts it)
             open (newunit=unit, file=path//'.tmp', status='old', action='write', &
                   iostat=ios, iomsg=msg)
+            ! (not expected after reusable's checks) the earlier output gets its name back
+            if (ios /= 0) call move_file(path//'.tmp', path, moved)
         end if
         if (ios /= 0) open (newunit=unit, file=path//'.tmp', status='replace', action='write', &
                             iostat=ios, iomsg=msg)
@@ -75,13 +78,18 @@ contains
     end subroutine open_temporary
 
     !> An earlier output at `path` (fricon's, by looks_like_output) whose file has no other
-    !! name, moved to `path`.tmp to be rewritten; false (nothing moved) otherwise. A file with
+    !! name and may be written, moved to `path`.tmp to be rewritten; false (nothing moved)
+    !! otherwise. A file with
     !! two names (a hard link kept as a copy) is not rewritten: its other name keeps the
     !! earlier results.
     logical function reusable(path)
         character(len=*), intent(in) :: path
+        character(len=3) :: may_write
         reusable = .false.
         if (file_links(path) /= 1) return
+        ! a file the user made read-only is replaced by a new one, as before (access(2))
+        inquire (file=path, write=may_write)
+        if (may_write /= 'YES') return
         if (.not. looks_like_output(path)) return
         call move_file(path, path//'.tmp', reusable)
     end function reusable
