@@ -22,8 +22,8 @@ module test_adaptive
     use discretization, only: discretization_t, new_discretization, discretise_mesh
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
-    use error_estimate, only: formal_order, extent_floors
-    use extreme_estimates, only: parabola_excess, add_sampling_errors, &
+    use error_estimate, only: formal_order, extent_floors, pre_asymptotic
+    use extreme_estimates, only: parabola_excess, tent_height, add_sampling_errors, &
                                  widen_unresolved_moments
     use station_results, only: station_table_t
     use station_columns, only: Q_X, Q_W, Q_M, n_quantities
@@ -54,6 +54,8 @@ contains
                  new_unittest('parabola_excess_closed_form', test_parabola_excess), &
                  new_unittest('peak_between_stations', test_sampling_errors), &
                  new_unittest('unresolved_moment_widened', test_unresolved_moments), &
+                 new_unittest('tent_at_load_inside_element', test_tent), &
+                 new_unittest('pre_asymptotic_coarse_meshes_widen', test_pre_asymptotic), &
                  new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
@@ -430,6 +432,89 @@ contains
         call add_sampling_errors(m, tab, e, ef)
         call check(err, e(1)%error == 0.001_dp, 'point load at the station: nothing added')
     end subroutine test_sampling_errors
+
+    !> The settlement at a POINT load inside an element (extreme_estimates): W = 1 - |x - 0.1|
+    !! (a kink at the load, straight on each side) on the nodes -0.5, -0.25, 0, 0.25, 0.5 is
+    !! 0.4, 0.65, 0.9, 0.85, 0.6, and the loaded element [0, 0.25] reads 0.88 at the load (its
+    !! chord); the node 0 is nearer, and its neighbour's chord (slope 1) continued to 0.1
+    !! gives the peak 1 exactly: 1 - 0.9 = 0.1 is added to settlement_max and to
+    !! differential_settlement (times the unit factor). tent_height continues from the nearer
+    !! node: with the nodes 0, 1, 3, 4 and the values 0, 1, 1, 0, a load at 1.5 gives
+    !! 1 + 0.5 = 1.5 (left), at 2.5 the same from the right, and midway at 2 the larger of
+    !! 2 (left) and 2 (right). A load on a node, or in the first element, adds nothing.
+    subroutine test_tent(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(station_table_t) :: tab
+        type(entry_t) :: e(3), e0(3), ef(3)
+        type(scales_t) :: k
+        real(dp), parameter :: nodes(0:4) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.25_dp, 0.5_dp]
+        real(dp), parameter :: x(7) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.1_dp, 0.1_dp, 0.25_dp, &
+                                       0.5_dp]
+        real(dp), parameter :: w(7) = [0.4_dp, 0.65_dp, 0.9_dp, 0.88_dp, 0.88_dp, 0.85_dp, &
+                                       0.6_dp]
+        call check(err, abs(tent_height([0.0_dp, 1.0_dp, 3.0_dp, 4.0_dp], [0.0_dp, 1.0_dp, &
+                   1.0_dp, 0.0_dp], 1.5_dp) - 1.5_dp) <= 1.0e-14_dp .and. &
+                   abs(tent_height([0.0_dp, 1.0_dp, 3.0_dp, 4.0_dp], [0.0_dp, 1.0_dp, 1.0_dp, &
+                   0.0_dp], 2.5_dp) - 1.5_dp) <= 1.0e-14_dp .and. &
+                   abs(tent_height([0.0_dp, 1.0_dp, 3.0_dp, 4.0_dp], [0.0_dp, 1.0_dp, 1.0_dp, &
+                   0.0_dp], 2.0_dp) - 2.0_dp) <= 1.0e-14_dp, 'tent heights 1.5, 1.5, 2')
+        if (allocated(err)) return
+        m%structure%kind = MODEL_BEAM
+        m%structure%length = 1.0_dp
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.1_dp)]
+        k = case_scale_factors(m)
+        tab%n = 7
+        allocate (tab%val(n_quantities, 7), source=0.0_dp)
+        allocate (tab%side(7), tab%state(7), tab%flag(7), source=0)
+        tab%side(4:5) = [-1, 1]
+        tab%val(Q_X, :) = x
+        tab%val(Q_W, :) = w
+        e0 = [entry_t(key='settlement_max', value=0.9_dp*k%disp, has_error=.true., &
+                      error=0.001_dp), entry_t(key='settlement_max_x', value=0.0_dp), &
+              entry_t(key='differential_settlement', value=0.5_dp*k%disp, has_error=.true., &
+                      error=0.002_dp)]
+        e = e0
+        call add_sampling_errors(m, tab, e, e0, nodes)
+        call check(err, abs(e(1)%error - (0.001_dp + 0.1_dp*k%disp)) <= 1.0e-12_dp .and. &
+                   abs(e(3)%error - (0.002_dp + 0.1_dp*k%disp)) <= 1.0e-12_dp, &
+                   'the peak 1 at the load: 0.1 added')
+        if (allocated(err)) return
+        e = e0
+        m%loads(1)%x1 = 0.0_dp
+        call add_sampling_errors(m, tab, e, e0, nodes)
+        call check(err, e(1)%error == 0.001_dp, 'a load on a node: nothing added')
+        if (allocated(err)) return
+        ! (the other mesh's largest W elsewhere: no parabola through the stations 0 +- 0.25)
+        ef = e0
+        ef(2)%value = 0.25_dp
+        m%loads(1)%x1 = -0.4_dp
+        call add_sampling_errors(m, tab, e, ef, nodes)
+        call check(err, e(1)%error == 0.001_dp, 'a load in the first element: nothing added')
+    end subroutine test_tent
+
+    !> Coarse meshes short of the asymptotic range (error_estimate, pre_asymptotic): the
+    !! settlement 2.569e-4 +- 1.8e-7 with 2.562e-4 on N_e/2 and 3.35e-4 on N_e/4 changes
+    !! 7.81e-5 from N_e/4 to N_e/2 and 7e-7 from there on, a ratio of 111 above 2^(4 + 2) =
+    !! 64 (formal order 4 for a settlement with the loads on nodes): the estimate becomes the
+    !! coarse difference 7e-7. With 2.58e-4 on N_e/4 (ratio 26) it stays (arithmetic).
+    subroutine test_pre_asymptotic(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(entry_t) :: e(1), ec(1), e4(1)
+        m%structure%kind = MODEL_BEAM
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp)]
+        e = entry_t(key='settlement_max', value=2.569e-4_dp, has_error=.true., error=1.8e-7_dp)
+        ec = entry_t(key='settlement_max', value=2.562e-4_dp)
+        e4 = entry_t(key='settlement_max', value=3.35e-4_dp)
+        call pre_asymptotic(m, e, ec, e4, .true., .false.)
+        call check(err, abs(e(1)%error - 7.0e-7_dp) <= 1.0e-15_dp, 'widened to 7e-7')
+        if (allocated(err)) return
+        e(1)%error = 1.8e-7_dp
+        e4(1)%value = 2.58e-4_dp
+        call pre_asymptotic(m, e, ec, e4, .true., .false.)
+        call check(err, e(1)%error == 1.8e-7_dp, 'ratio 26: kept')
+    end subroutine test_pre_asymptotic
 
     !> An extreme moment that is not established (estimate >= its size), smaller than the
     !! opposite extreme whose estimate is at least half that extreme, is estimated as at least

@@ -12,17 +12,20 @@
 !!    parabola through the extreme station and its two neighbours over the station's value
 !!    (exact for a quadratic field), and is added to the estimate. At a station where the
 !!    field has a kink or a jump (a POINT, RING or MOMENT load, a station with left and right
-!!    limits) or at an end of the table the extreme is at the station itself: nothing added.
-!!  * **An extreme moment the meshes do not resolve.** Under a point load on a very soft thick
-!!    beam the moment at the load is sagging on coarse meshes and hogging on fine ones (rho
-!!    1e-4, zeta 0.3: M(0) = -8.3e-3 on N_e = 20, +9.5e-3 converged), so the hogging moment
-!!    is near 0 on the coarse meshes and grows from 2e-6 to 3e-3 over N_e = 20 to 160; its
-!!    estimate from the nested meshes was a tenth of its error. Where an extreme moment's
-!!    estimate is at least its own size (the value is not established), it is the smaller of
-!!    the two extremes, and the larger one's estimate is at least half that extreme (the
-!!    mesh is not sure of the moment field where it is largest, nor so of its sign), its
-!!    estimate is at least the largest magnitude the moment field may have there,
-!!    |M_opposite| + E_opposite.
+!!    limits) or at an end of the table the extreme is at the station itself: nothing added;
+!!    nor where the parabola's stations span a concentrated load (a kink: see the next rule).
+!!  * **At a concentrated load inside an element.** Under a POINT or RING load that lies
+!!    between two nodes the settlement has its kink at the load, where the element's field
+!!    (linear in P1) cannot follow it: the station at the load reads the element's value,
+!!    below the peak, and meshes that keep the load inside an element show the same kind of
+!!    shortfall (a thick soft beam, P1 on EDGES meshes: 1e-5 below the peak of 3.9e-4, an
+!!    estimate of 1e-7). The field at the load is taken from the node of the loaded element
+!!    nearer to it, continued with the slope of the element beyond that node (first order in
+!!    the distance, which is at most half the element); its excess over the table's largest
+!!    settlement is added to the estimates of the largest and the differential settlement.
+!!    The node farther away is not used: the field's curvature between it and the load
+!!    (concave next to the load, convex farther out on a soft base) makes a long extension
+!!    too high or too low.
 module extreme_estimates
     use kinds, only: dp
     use model, only: model_t, LOAD_POINT, LOAD_RING, LOAD_MOMENT
@@ -33,7 +36,7 @@ module extreme_estimates
     implicit none
     private
 
-    public :: parabola_excess, add_sampling_errors, widen_unresolved_moments
+    public :: parabola_excess, tent_height, add_sampling_errors, widen_unresolved_moments
 
 contains
 
@@ -83,6 +86,9 @@ contains
         if (x_of(i) - x_of(left) < 0.5_dp*(x_of(right) - x_of(i))) &
             left = station_beyond(tab, i, -1, 0.5_dp*(x_of(right) - x_of(i)))
         if (left < 1 .or. right > tab%n) return
+        ! a concentrated load between the stations is a kink the parabola cannot describe
+        if (any(concentrated(m) .and. m%loads%x1 > x_of(left) + tol .and. &
+                m%loads%x1 < x_of(right) - tol)) return
         excess = parabola_excess(tab%val(Q_X, [left, i, right]), y([left, i, right]))
     contains
         pure real(dp) function x_of(j)
@@ -90,6 +96,85 @@ contains
             x_of = tab%val(Q_X, j)
         end function x_of
     end function station_shortfall
+
+    !> The loads whose position is a kink or a jump of the fields (POINT, RING, MOMENT).
+    pure function concentrated(m) result(yes)
+        type(model_t), intent(in) :: m
+        logical :: yes(size(m%loads))
+        yes = m%loads%kind == LOAD_POINT .or. m%loads%kind == LOAD_RING .or. &
+              m%loads%kind == LOAD_MOMENT
+    end function concentrated
+
+    !> The field at a load xp inside the element [x(2), x(3)] continued from the node nearer
+    !! to it with the slope of the element beyond that node, [x(1), x(2)] or [x(3), x(4)]
+    !! (the larger of the two continuations where xp is midway); x(1) < x(2) < xp < x(3) <
+    !! x(4).
+    pure real(dp) function tent_height(x, y, xp) result(top)
+        real(dp), intent(in) :: x(4)   !! the nodes of the loaded element and of its neighbours
+        real(dp), intent(in) :: y(4)   !! the field at them
+        real(dp), intent(in) :: xp     !! the load, inside (x(2), x(3))
+        real(dp) :: left, right
+        left = y(2) + (y(2) - y(1))/(x(2) - x(1))*(xp - x(2))
+        right = y(3) + (y(3) - y(4))/(x(4) - x(3))*(x(3) - xp)
+        if (xp - x(2) < x(3) - xp) then
+            top = left
+        else if (xp - x(2) > x(3) - xp) then
+            top = right
+        else
+            top = max(left, right)
+        end if
+    end function tent_height
+
+    !> The excess over the largest value of y over the stations of tab of the field at the
+    !! POINT and RING loads that lie inside an element of the mesh (nodes), as tent_height
+    !! continues it; 0 where none rises above it (module header). A load in the first or last
+    !! element, or with a node missing from the table, adds nothing.
+    pure real(dp) function tent_shortfall(m, tab, nodes, y) result(excess)
+        type(model_t), intent(in) :: m
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: nodes(0:)          !! the mesh's nodes, increasing
+        real(dp), intent(in) :: y(:)
+        real(dp) :: tol, yn(4), y_max
+        integer :: k, j, q, ne
+        logical :: found
+        excess = 0.0_dp
+        ne = ubound(nodes, 1)
+        if (tab%n < 1 .or. ne < 3) return
+        tol = 1.0e-9_dp*(nodes(ne) - nodes(0))
+        y_max = maxval(y)
+        loads: do k = 1, size(m%loads)
+            if (.not. (m%loads(k)%kind == LOAD_POINT .or. m%loads(k)%kind == LOAD_RING)) &
+                cycle loads
+            ! the loaded element [nodes(j), nodes(j + 1)], the load strictly inside
+            j = count(nodes(1:ne - 1) < m%loads(k)%x1 - tol)
+            if (j < 1 .or. j + 2 > ne) cycle loads
+            if (.not. (m%loads(k)%x1 > nodes(j) + tol .and. &
+                       m%loads(k)%x1 < nodes(j + 1) - tol)) cycle loads
+            do q = 1, 4
+                call value_at(tab, y, nodes(j - 2 + q), tol, yn(q), found)
+                if (.not. found) cycle loads
+            end do
+            excess = max(excess, tent_height(nodes(j - 1:j + 2), yn, m%loads(k)%x1) - y_max)
+        end do loads
+    end function tent_shortfall
+
+    !> y at the first station at x0 (within tol); found false where the table has none.
+    pure subroutine value_at(tab, y, x0, tol, v, found)
+        type(station_table_t), intent(in) :: tab
+        real(dp), intent(in) :: y(:), x0, tol
+        real(dp), intent(out) :: v
+        logical, intent(out) :: found
+        integer :: i
+        v = 0.0_dp
+        do i = 1, tab%n
+            found = abs(tab%val(Q_X, i) - x0) <= tol
+            if (found) then
+                v = y(i)
+                return
+            end if
+        end do
+        found = .false.
+    end subroutine value_at
 
     !> The first station from i in direction step (-1 or +1) at least gap from station i
     !! (0 or tab%n + 1 if none).
@@ -110,11 +195,13 @@ contains
     !! the extreme lies at the same station on the other mesh of the estimate (ef): where it
     !! moved, that mesh sampled the field nearer its extreme and the estimate holds the
     !! difference.
-    pure subroutine add_sampling_errors(m, tab, e, ef)
+    pure subroutine add_sampling_errors(m, tab, e, ef, nodes)
         type(model_t), intent(in) :: m             !! the model (its loads, its units)
         type(station_table_t), intent(in) :: tab   !! the case's design table
         type(entry_t), intent(inout) :: e(:)       !! key results with estimates, updated
         type(entry_t), intent(in) :: ef(:)         !! the same keys on the other mesh
+        !> the case's mesh nodes (0:N_e): the tents over loads inside an element
+        real(dp), intent(in), optional :: nodes(0:)
         type(scales_t) :: k
         real(dp) :: w_high, w_low
         k = case_scale_factors(m)
@@ -122,6 +209,8 @@ contains
         w_low = 0.0_dp
         if (same_place(e, ef, 'settlement_max_x')) w_high = k%disp*station_shortfall(m, &
             tab, tab%val(Q_W, :))
+        if (present(nodes)) w_high = max(w_high, &
+                                         k%disp*tent_shortfall(m, tab, nodes, tab%val(Q_W, :)))
         if (same_place(e, ef, 'settlement_min_x')) w_low = k%disp*station_shortfall(m, &
             tab, -tab%val(Q_W, :))
         call add_to(e, 'settlement_max', w_high)
