@@ -636,7 +636,8 @@ contains
             '  the half-space surface displacement at each station: the near elements by their', &
             '  line rules, far clusters of elements by Chebyshev interpolation (a cluster tree).', &
             '  Expected about 1 (N_e log N_e).', &
-            '- design summary: summarise, summary_entries, contact_extent: O(stations). Expected 1.', &
+            '- design summary: summarise, summary_entries, contact_extent: O(stations). '// &
+                'Expected 1.', &
             '- error estimate: error_estimate::estimate_errors, the case discretised, solved and', &
             '  tabulated on N_e/2 and N_e/4; above N_e = 48 the solves are those of the nested', &
             '  start, reused, and only the tabulations remain. Expected: as the tabulation.', &
@@ -648,7 +649,8 @@ contains
             '(*) the only phase obtained by a difference (least build time less least T and K, M', &
             'times): noisy where T dominates it. The second table times, as separate calls that', &
             'are not in the sum, the Schur set-up and one Schur factorisation of the final sets', &
-            '(both inside the Newton iterations), and the whole solve_contact; the replica column', &
+            '(both inside the Newton iterations), and the whole solve_contact; the replica '// &
+                'column', &
             'is the sum of the phases discretisation to final checks; max rel. diff. of z: the', &
             'replica''s answer against solve_contact''s. solve / one linear solve: the phases', &
             'K, M assembly to final checks (the case''s solve without T, which item 3 times)', &

@@ -494,7 +494,8 @@ contains
                                 interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
                                 true_error, est(k), est(k)/true_error
                             if (dumping) write (dump_unit, &
-                                '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,es12.4,f4.0,es24.15)') &
+                                '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,'// &
+                                'es12.4,f4.0,es24.15)') &
                                 i, interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
                                 raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), raw(6:7, k)
                             eff = [eff, est(k)/true_error]
@@ -519,7 +520,8 @@ contains
         integer :: i
         write (u, '(a)') '# Effectivity of the error estimates '//label
         write (u, '(a)') ''
-        write (u, '(a)') 'example/estimate_effectivity.f90 (effectivity = estimate / true error; '// &
+        write (u, '(a)') 'example/estimate_effectivity.f90 (effectivity = estimate / true '// &
+            'error; '// &
             'reference bar <= 0.2 of the error)'
         write (u, '(a)') ''
         write (u, '(a)') '| set | results | median | 10th pct | 90th pct | < 0.2 | < 0.5 | '// &

@@ -1,9 +1,10 @@
 !> Work-precision benchmark (doc/OUTPUT.md, Error estimates): for a PLATE and a BEAM case with
 !! lift-off and friction, each discretisation (interpolation x mesh family) over N_e = 10 ... 160
 !! (the fixed families on to 1280, and doubled beyond while they have not reached the smallest
-!! ADAPT error and have at most max_unknowns unknowns), and the three ADAPT families (P1, S2 everywhere, and S2 displacements
-!! with P1 tractions, from 16 elements, tol 1e-2 ... 1e-4), the error of W(0), the centre and peak pressure, max |M|
-!! and the contact extent against a reference, versus processor time and versus unknowns.
+!! ADAPT error and have at most max_unknowns unknowns), and the three ADAPT families (P1, S2
+!! everywhere, and S2 displacements with P1 tractions, from 16 elements, tol 1e-2 ... 1e-4), the
+!! error of W(0), the centre and peak pressure, max |M| and the contact extent against a reference,
+!! versus processor time and versus unknowns.
 !!
 !! Reference (subroutine reference): per quantity the best of three Richardson extrapolations,
 !! (a) P1 on LOADS meshes, (b) P1 on a P1-adapted mesh bisected uniformly, (c) S2w-P1tr on an
@@ -177,8 +178,9 @@ contains
         q(1) = tab%val(Q_W, i0)*cols(column_index(cols, 'W'))%scale
         q(2) = tab%val(Q_SZ, i0)*cols(column_index(cols, 'Sigma_z'))%scale
         q(3) = maxval(tab%val(Q_SZ, :))*cols(column_index(cols, 'Sigma_z'))%scale
-        q(4) = maxval(abs(tab%val(Q_M, :)))*cols(column_index(cols, merge('M/(Fl)', 'M_r/F ', &
-                                                                          m%structure%kind == MODEL_BEAM)))%scale
+        q(4) = maxval(abs(tab%val(Q_M, :)))* &
+               cols(column_index(cols, merge('M/(Fl)', 'M_r/F ', &
+                                             m%structure%kind == MODEL_BEAM)))%scale
         q(5) = contact_extent(tab, m%structure%length)
     end subroutine measure
 
@@ -293,7 +295,8 @@ contains
         write (u, '(a)') '# work-precision, '// &
             trim(merge('PLATE rho 0.001 zeta 0.1 f 0.6, disk load r <= 0.1 a           ', &
             'BEAM rho 0.001 zeta 0.1 beta 0.05 f 0.6, central load H = 0.1 V', plate))
-        write (u, '(a)') '# reference (a): Richardson of P1/LOADS N_e 320, 640 (order from 160/320/640)'
+        write (u, '(a)') '# reference (a): Richardson of P1/LOADS N_e 320, 640 (order from '// &
+            '160/320/640)'
         write (u, '(a,i0,a)') '# reference (b): the P1-ADAPT mesh of tol 1e-4 (at most ', &
             reference_max, ' elements) bisected once and twice, Richardson (observed order)'
         write (u, '(a,i0,a)') '# reference (c): the S2w-P1tr-ADAPT mesh of tol 1e-4 (at most ', &
@@ -306,7 +309,8 @@ contains
         call write_costs(u, plate, rows, unknowns, seconds, errors, ok)
         write (u, '(a)') '# errors relative to the reference (extent: absolute, t); '// &
             'time: discretise + solve, processor time [s]'
-        write (u, '(a)') '# disc              N_e  unknowns   time_s      err_W0      err_Sz0     '// &
+        write (u, '(a)') '# '// &
+            'disc              N_e  unknowns   time_s      err_W0      err_Sz0     '// &
             'err_Szmax   err_Mmax    err_extent'
         do k = 1, n_disc
             do j = 1, rows(k)
@@ -436,7 +440,8 @@ contains
                 'BEAM (rho 0.001, f 0.6, H = 0.1 V)  ', &
                        plate))//": error against solve time' font 'Sans,14'"
         write (u, '(a)') 'set logscale xy; set grid; set format y "%.0e"; set format x "%.0e"'
-        write (u, '(a)') "set linetype 9 lc rgb '#e0007a' lw 3    # the ninth family: magenta (8 is black)"
+        write (u, '(a)') "set linetype 9 lc rgb '#e0007a' lw 3    # the ninth family: magenta "// &
+            "(8 is black)"
         write (u, '(a)') "set xlabel 'discretise + solve time [s]'; set key bottom left font ',9'"
         write (u, '(a)') "names = '"//join(disc_names)//"'"
         do i = 1, n_q

@@ -657,7 +657,8 @@ contains
         if (allocated(err)) return
         call check(err, json_has(dir//'/soft.json', '"elements": ', res%elements) .and. &
                    json_has(dir//'/soft.json', '"warnings": ["mesh refined from N_e = 20 to ', &
-                            res%elements), 'very soft beam: the JSON does not give the refined mesh')
+                            res%elements), 'very soft beam: the JSON does not give the '// &
+                                'refined mesh')
         if (allocated(err)) return
         call case_model(deck, 1, m_direct, label, err)
         if (allocated(err)) return

@@ -1,6 +1,6 @@
 !> The layers of src/ (doc/ARCHITECTURE.md): scripts/check_layers.py finds no module that uses
 !! a module of a later layer, and it does find one in a small tree made to have one (so the
-!! check can fail).
+!! check can fail); likewise the thread check and the line length (scripts/check_line_length.py).
 module test_architecture
     use harness, only: error_t, unittest_t, new_unittest, check
     implicit none
@@ -14,7 +14,9 @@ contains
         tests = [new_unittest('no_back_edges', test_no_back_edges), &
                  new_unittest('back_edge_found', test_back_edge_found), &
                  new_unittest('threads_call_no_deferred_length_text', test_thread_safety), &
-                 new_unittest('deferred_length_call_on_threads_found', test_thread_unsafe_found)]
+                 new_unittest('deferred_length_call_on_threads_found', test_thread_unsafe_found), &
+                 new_unittest('lines_at_most_100_characters', test_line_length), &
+                 new_unittest('long_line_found', test_long_line_found)]
     end subroutine collect_architecture
 
     !> The exit status of `python3 scripts/SCRIPT.py`, its output in build/SCRIPT.txt.
@@ -23,6 +25,50 @@ contains
         call execute_command_line('python3 scripts/'//script//'.py > build/'//script//'.txt', &
                                   exitstat=status)
     end function script_status
+
+    !> Every .f90 and .c line under src/, app/, test/ and example/ has at most 100 characters
+    !! (STYLE.md's limit): exit status 0.
+    subroutine test_line_length(err)
+        type(error_t), allocatable, intent(out) :: err
+        call check(err, script_status('check_line_length') == 0, &
+                   'a source line is over 100 characters: see build/check_line_length.txt')
+    end subroutine test_line_length
+
+    !> A tree with one line of 101 characters in src/ (and one of 100 with a two-byte '²' in
+    !! test/, 101 bytes but 100 characters, which passes): exit status 1, that line named.
+    subroutine test_long_line_found(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = 'build/test_line_length'
+        integer :: status, u
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/src '//dir//'/test')
+        open (newunit=u, file=dir//'/src/long.f90', status='replace', action='write')
+        write (u, '(a)') 'module long', '! '//repeat('x', 99), 'end module long'
+        close (u)
+        open (newunit=u, file=dir//'/test/wide.f90', status='replace', action='write')
+        write (u, '(a)') '! '//repeat('x', 96)//'m²'
+        close (u)
+        call execute_command_line('python3 scripts/check_line_length.py '//dir//' > '//dir// &
+                                  '.txt', exitstat=status)
+        call check(err, status == 1 .and. count_lines(dir//'.txt') == 2, 'a 101-character '// &
+                   'line was not reported, or a 100-character one with a two-byte character was')
+        call execute_command_line('rm -rf '//dir//' '//dir//'.txt')
+    end subroutine test_long_line_found
+
+    !> The number of lines of a text file (0 if it cannot be read).
+    integer function count_lines(path) result(n)
+        character(len=*), intent(in) :: path
+        character(len=256) :: line
+        integer :: u, ios
+        n = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            n = n + 1
+        end do
+        close (u)
+    end function count_lines
 
     !> The project's own src/: exit status 0 (no back-edge).
     subroutine test_no_back_edges(err)

@@ -361,14 +361,16 @@ contains
         if (allocated(err)) return
         associate (m => deck%base)
             call check(err, &
-                m%structure%kind == MODEL_BEAM .and. m%mesh%ne == 10 .and. m%mesh%grading == 'EDGES', &
+                m%structure%kind == MODEL_BEAM .and. m%mesh%ne == 10 .and. &
+                m%mesh%grading == 'EDGES', &
                        'lower-case MODEL and MESH')
             if (allocated(err)) return
             call check(err, all(m%mesh%interp == [INTERP_P2, INTERP_S2, INTERP_P1, INTERP_P1, &
                                              INTERP_P2]), 'interpolation words')
             if (allocated(err)) return
             call check(err, &
-                m%solver%max_outer == 50 .and. m%solver%max_inner == 60 .and. m%output%stations == 11, &
+                m%solver%max_outer == 50 .and. m%solver%max_inner == 60 .and. &
+                m%output%stations == 11, &
                        'SOLVER counts and OUTPUT stations')
             if (allocated(err)) return
             call check_close(err, m%solver%tau0_start, 0.2_dp, 0.0_dp, 0.0_dp, 'tau0')
@@ -954,9 +956,9 @@ contains
         call expect_error(lines, [character(len=120) :: 'test/bad.dat:3:17: TAB'], err)
     end subroutine test_tab
 
-    !> Comment width in characters (UTF-8): a 76-character comment holding 'kN/m²' (77 bytes, the ²
-    !! is two) is accepted, an 81-character one is not; a UTF-8 byte-order mark before the first
-    !! card is ignored.
+    !> Comment width in characters (UTF-8): a 76-character comment holding 'kN/m²' (77
+    !! bytes, the ² is two) is accepted, an 81-character one is not; a UTF-8 byte-order mark
+    !! before the first card is ignored.
     subroutine test_utf8_bom(err)
         type(error_t), allocatable, intent(out) :: err
         type(deck_t) :: deck

@@ -871,7 +871,8 @@ contains
                          what//': the summary''s largest pressure is not the largest mean')
         if (allocated(err)) return
         call check(err, s%pressure_max_singular .and. maxval(p) > maxval(mean), &
-                   what//': the peak under the load should be flagged singular, the field above '// &
+                   what//': the peak under the load should be flagged singular, the field '// &
+                       'above '// &
                    'the mean')
     end subroutine pressure_columns
 

@@ -562,7 +562,8 @@ contains
             end select
             call cached(variant, cache, t_1, err)
             if (allocated(err)) exit
-            call check(err, flexibility_cache_hits(cache) == 1, 'a different case answered from '// &
+            call check(err, flexibility_cache_hits(cache) == 1, 'a different case answered '// &
+                'from '// &
                        'the cache (variant '//char(ichar('0') + k)//')')
             if (allocated(err)) exit
         end do

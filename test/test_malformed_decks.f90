@@ -133,10 +133,12 @@ contains
                  "FRICTION f (friction coefficient): expected a finite number such as 0.3")
         ! line 6 GEOMETRY: l (f1, columns 11-20) is '1e999'
         call add('numbers', 'number_1e999.dat', ':6:11-20:', &
-                 "a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, got '1e999'")
+                 "a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, "// &
+                     "got '1e999'")
         ! line 8 SOIL: nu_f (f2, columns 21-30) is '1e-999'
         call add('numbers', 'number_1e-999.dat', ':8:21-30:', &
-                 "a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, got '1e-999'")
+                 "a deck number is 0 or has a magnitude of at least 1E-30 and below 1E+30, "// &
+                     "got '1e-999'")
         ! line 10 LOAD: F_z (f2, columns 21-30) is 'E5'
         call add('numbers', 'number_exponent_only.dat', ':10:21-30:', &
                  "LOAD F_z (total vertical force, or the moment): expected a finite number")
@@ -168,7 +170,8 @@ contains
         ! --- ADAPT (line 12, inserted after MESH 20 on line 11)
         ! tol (f1, columns 11-20) = 0.0
         call add('adapt', 'adapt_tol_zero.dat', ':12:11-20:', &
-                 'ADAPT tol (relative tolerance of the estimated errors) must be in (0, 1), got 0.0')
+                 'ADAPT tol (relative tolerance of the estimated errors) must be in (0, 1), '// &
+                     'got 0.0')
         ! tol (f1, columns 11-20) blank
         call add('adapt', 'adapt_tol_missing.dat', ':12:11-20:', &
                  'ADAPT tol (relative tolerance of the estimated errors) is required but the '// &

@@ -147,7 +147,8 @@ contains
             e_s2 = sigma_z_error(m, s2, ref)
             if (cases(k) == 5) then
                 call check(err, e_s2 < 0.95_dp*e_p1, 'rho = 0.1: S2 interactions should '// &
-                           'reduce the Sigma_z error against N_e = 160 (errors.txt: 7.3e-2 vs 8.9e-2)')
+                           'reduce the Sigma_z error against N_e = 160 (errors.txt: 7.3e-2 vs '// &
+                               '8.9e-2)')
             else
                 call check(err, e_s2 > 1.5_dp*e_p1, 'rho = 0.00025: S2 interactions were '// &
                            'found to double the Sigma_z error (errors.txt: 4.8e-2 vs 2.3e-2)')

@@ -83,7 +83,8 @@ contains
         character(len=*), intent(in) :: sweep(:)
         character(len=80), allocatable :: lines(:)
         lines = [character(len=80) :: card('MODEL', ['BEAM']), card('UNITS', ['kN', 'm ']), &
-                 card('GEOMETRY', ['10.0', '0.8 ', '1.0 ']), card('STRUCTURE', ['3.0E7', '0.2  ']), &
+                 card('GEOMETRY', ['10.0', '0.8 ', '1.0 '// &
+                     '']), card('STRUCTURE', ['3.0E7', '0.2  ']), &
                  card('SOIL', ['3.0E4', '0.3  ']), card('FRICTION', ['0.5']), &
                  card('LOAD', ['POINT ', '1000.0', '      ', '0.0   ']), &
                  card('MESH', ['16'])]
@@ -152,7 +153,8 @@ contains
         call execute_command_line('mkdir -p '//dir//'/w.csv')
         call parse_deck('w.dat', beam_deck([character(len=4) ::]), deck, err)
         if (allocated(err)) return
-        call run_analysis(deck, dir, output_unit, error_unit, status, run_options_t(figures=.false.))
+        call run_analysis(deck, dir, output_unit, error_unit, status, &
+            run_options_t(figures=.false.))
         call check(err, status == EXIT_INPUT, 'a failed write did not end with status 1')
         if (allocated(err)) return
         do k = 1, size(ext)
@@ -167,7 +169,8 @@ contains
         open (newunit=u, file=dir//'/w.dat', status='replace', action='write')
         write (u, '(a)') '* a deck named like the data file'
         close (u)
-        call run_analysis(deck, dir, output_unit, error_unit, status, run_options_t(figures=.false.))
+        call run_analysis(deck, dir, output_unit, error_unit, status, &
+            run_options_t(figures=.false.))
         line = ''
         open (newunit=u, file=dir//'/w.dat', status='old', action='read')
         read (u, '(a)') line
@@ -702,7 +705,8 @@ contains
             read (line, *, iostat=ios) row
             if (ios /= 0) exit rows
             n = n + 1
-            if (n > 1) total = total + 0.5_dp*(row(6)*row(1) + s_prev*t_prev)*2.0_dp*(row(1) - t_prev)
+            if (n > 1) total = total + &
+                               0.5_dp*(row(6)*row(1) + s_prev*t_prev)*2.0_dp*(row(1) - t_prev)
             t_prev = row(1)
             s_prev = row(6)
         end do rows
@@ -979,7 +983,8 @@ contains
         character(len=80), allocatable :: lines(:)
         call clean_dir()
         lines = [character(len=80) :: card('MODEL', ['BEAM']), card('UNITS', ['kN', 'm ']), &
-                 card('GEOMETRY', ['10.0', '0.8 ', '1.0 ']), card('STRUCTURE', ['3.0E7', '0.2  ']), &
+                 card('GEOMETRY', ['10.0', '0.8 ', '1.0 '// &
+                     '']), card('STRUCTURE', ['3.0E7', '0.2  ']), &
                  card('SOIL', ['3.0E4', '0.3  ']), card('FRICTION', ['0.5']), &
                  card('LOAD', ['POINT ', '1000.0', '      ', '4.0   ']), &
                  card('SWEEP', ['L   ', '10.0', '8.0 ']), card('END', [' '])]
@@ -990,7 +995,8 @@ contains
         end if
         deck%sweeps(1)%values(2) = 6.0_dp
         call run_analysis(deck, dir, output_unit, error_unit, status)
-        call check(err, status == EXIT_INPUT, 'a load off the beam in case 2 was not an input error')
+        call check(err, status == EXIT_INPUT, 'a load off the beam in case 2 was not an input '// &
+            'error')
         if (allocated(err)) return
         call execute_command_line('ls -A '//dir//' | wc -l > build/test_count.txt')
         open (newunit=u, file='build/test_count.txt', status='old', action='read')
@@ -1008,7 +1014,8 @@ contains
         logical :: banner
         call clean_dir()
         call parse_deck('slide.dat', [character(len=80) :: 'TITLE     sliding beam', &
-            card('MODEL', ['BEAM']), card('NONDIM', ['0.01 ', '0.1  ', '0.3  ', '0.1  ', '0.05 ']), &
+            card('MODEL', ['BEAM']), card('NONDIM', ['0.01 '// &
+                '', '0.1  ', '0.3  ', '0.1  ', '0.05 ']), &
             card('FRICTION', ['0.3']), card('LOAD', ['POINT', '1.0  ', '0.5  ', '0.0  ']), &
             card('END', [' '])], deck, err)
         if (allocated(err)) return
@@ -1203,7 +1210,8 @@ contains
         if (allocated(err)) return
         deck%stem = 'sb'
         call run_analysis(deck, dir, output_unit, error_unit, status)
-        call check(err, status == EXIT_ANALYSIS, 'a sweep with a sliding case must end with status 2')
+        call check(err, status == EXIT_ANALYSIS, 'a sweep with a sliding case must end with '// &
+            'status 2')
         if (allocated(err)) return
         open (newunit=u, file=dir//'/sb_summary.csv', status='old', action='read', iostat=ios)
         call check(err, ios == 0, 'no summary for a sweep whose first case failed')
@@ -1228,7 +1236,8 @@ contains
         integer :: status, k, exit_status
         character(len=*), parameter :: runs(3) = ['build/test_sweep_j1', 'build/test_sweep_j2', &
                                                   'build/test_sweep_sh']
-        call execute_command_line('rm -rf build/test_sweep_j1 build/test_sweep_j2 build/test_sweep_sh')
+        call execute_command_line('rm -rf build/test_sweep_j1 build/test_sweep_j2 '// &
+            'build/test_sweep_sh')
         call parse_deck('sw.dat', plate_deck(' ', [card('SWEEP', ['F  ', '0.0', '0.5']), &
                                                    card('SWEEP', ['RHO ', '0.01', '1.0 '])]), &
                         deck, err)
@@ -1252,7 +1261,8 @@ contains
         ! every file of the two-thread run equals the serial one (a race in writing once
         ! corrupted JSON files), and the merged shards give the serial summary and case files
         ! (shards draw no sweep overlay and no response figure)
-        call execute_command_line('bash scripts/merge_shards.sh build/test_sweep_sh/sw > /dev/null '// &
+        call execute_command_line('bash scripts/merge_shards.sh build/test_sweep_sh/sw > '// &
+            '/dev/null '// &
             '&& for f in build/test_sweep_j1/*; do b=$(basename $f); '// &
             'cmp -s $f build/test_sweep_j2/$b || exit 1; '// &
             'case $b in *_sweep.* | *_response.*) continue;; esac; '// &

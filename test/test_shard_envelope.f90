@@ -178,7 +178,8 @@ contains
         call run_deck(dir//'/failed/ce.dat', dir//'/failed/shards', quick(2), status, err)
         if (allocated(err)) return
         call expect_refusal(shard_paths(dir//'/failed/shards', 'ce', [1, 2]), &
-                            'ce_001_UP (case 003 of 006: E_F=15.0E3 UP = -1.0 G + 1.0 W) did not solve', &
+                            'ce_001_UP (case 003 of 006: E_F=15.0E3 UP = -1.0 G + 1.0 W) did '// &
+                                'not solve', &
                             err)
     end subroutine test_failed
 

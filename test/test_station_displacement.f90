@@ -395,7 +395,8 @@ contains
                 return
             end if
             call check_agreement(u, w, spread(u(1), 1, size(x)), spread(w(1), 1, size(x)), &
-                                 merge('plate fast near a node     ', 'beam fast near a node      ', &
+                                 merge('plate fast near a node     ', 'beam fast near a '// &
+                                     'node      ', &
                                        k == 1), err, 1.0e-12_dp)
             if (.not. allocated(err)) call check_agreement(u_ref, w_ref, &
                 spread(u(1), 1, size(x)), spread(w(1), 1, size(x)), &

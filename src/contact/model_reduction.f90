@@ -1,7 +1,7 @@
-!> Model only what a scene needs (doc/CHOICES.md, Simplifications): the discrete contact problem restricted to a
-!! subspace of the full one that provably holds its solution, solved there, and expanded back
-!! to the full coefficient vector, so that every later stage (stations, summary, files,
-!! checks) sees the full model's numbering.
+!> Model only what a scene needs (doc/CHOICES.md, Simplifications): the discrete contact problem
+!! restricted to a subspace of the full one that provably holds its solution, solved there, and
+!! expanded back to the full coefficient vector, so that every later stage (stations, summary,
+!! files, checks) sees the full model's numbering.
 !!
 !! The restriction is z = P y: every full coefficient j is k(j) (0: zero) times s(j) (+-1).
 !! The reduced problem is P^T F(P y) = 0: A0 -> P^T A0 P, q -> P^T q, and the interface terms
@@ -62,7 +62,8 @@ contains
             red%frictionless = m%interface%f == 0.0_dp
             red%half = m%structure%kind == MODEL_BEAM .and. symmetric_loads(m) &
                        .and. symmetric_mesh(d%msh, m%structure%length)
-            red%mean_shear = red%frictionless .and. m%structure%kind == MODEL_BEAM .and. .not. red%half
+            red%mean_shear = red%frictionless .and. m%structure%kind == MODEL_BEAM .and. &
+                             .not. red%half
         end if
         call build_map(d, red)
     end function plan_reduction

@@ -32,8 +32,8 @@
 !! A stage has converged when the merit is at round-off, or when a full step leaves the sets
 !! it was computed with unchanged (F is then linear between the iterates and the step solves
 !! F = 0 up to the accuracy of the solve) and the residual of 4.2a is below 1e-12 of the load
-!! or no longer halves (further exact steps after an inaccurate solve). The converged solution is then held in
-!! double-double and refined with 4.2a in extended precision (refine_equilibrium: thin,
+!! or no longer halves (further exact steps after an inaccurate solve). The converged solution is
+!! then held in double-double and refined with 4.2a in extended precision (refine_equilibrium: thin,
 !! stiff structures on fine meshes, whose v' in double cannot meet 4.2a to 1e-8).
 module newton_method
     use kinds, only: dp, xp

@@ -17,8 +17,8 @@
 !! flops of factorising J; v follows by two banded solves. Two steps of iterative refinement
 !! with the complete J, as the dense solves do.
 !!
-!! Settled lift-off (doc/CHOICES.md, Simplifications): the traction unknowns of a region that stays in the
-!! tension set have rows dominated by the penalty c/eta_bar (and, for sigma_x, the slip term
+!! Settled lift-off (doc/CHOICES.md, Simplifications): the traction unknowns of a region that stays
+!! in the tension set have rows dominated by the penalty c/eta_bar (and, for sigma_x, the slip term
 !! c/eps_bar) and barely couple to the rest. When the caller names them (candidates), the
 !! step's factorisation drops the couplings between them and the other kept unknowns: two
 !! dense blocks factorised on their own, (nk - nd)^3 + nd^3 instead of nk^3. It is an inexact

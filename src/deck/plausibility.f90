@@ -184,7 +184,8 @@ contains
         real(dp) :: mean
         allocate (w(0))
         if (n_flags <= 0) return
-        mean = total_vertical_load(m%loads)/merge(m%structure%length, pi*m%structure%length**2, m%structure%kind == MODEL_BEAM)
+        mean = total_vertical_load(m%loads)/merge(m%structure%length, pi*m%structure%length**2, &
+            m%structure%kind == MODEL_BEAM)
         where = ''
         if (n_lifted < n_flags) write (where, '(a,i0,a)') ', ', n_flags - n_lifted, &
             ' not lifted off'

@@ -22,7 +22,8 @@ module discretization
         integer :: nv = 0                  !! displacement unknowns
         integer :: nr = 0                  !! traction unknowns
         integer :: n = 0                   !! nv + nr
-        integer, allocatable :: fixed(:)   !! constrained unknowns (plate: u_s(0), psi(0), sigma_x(0))
+        !> constrained unknowns (plate: u_s(0), psi(0), sigma_x(0))
+        integer, allocatable :: fixed(:)
     end type discretization_t
 
     public :: new_discretization, discretise_mesh, locate_element, loads_on_nodes

@@ -57,7 +57,8 @@ contains
         k = new_triplets(d%nv, d%nv, 4*d%msh%ne*(2*max_local)**2)
         n_full = maxval(d%basis(FIELD_U:FIELD_PSI)%degree) + merge(2, 1, sec%plate)
         n_shear = max(d%basis(FIELD_W)%degree, d%basis(FIELD_PSI)%degree)
-        ! the rules once, not once per element (once per element they cost 4 % of a small case's time)
+        ! the rules once, not once per element (once per element they cost 4 % of a small case's
+        ! time)
         allocate (xi_full(n_full), w_full(n_full), xi_shear(n_shear), w_shear(n_shear))
         call gauss_legendre(n_full, xi_full, w_full)
         call gauss_legendre(n_shear, xi_shear, w_shear)

@@ -88,7 +88,8 @@ contains
         end if
         if (sep == ' ') then
             write (u, '(a)') '# fricon station data: '//title
-            write (u, '(a)') '# all columns nondimensional (doc/SPEC.md section 6); a station at a concentrated '// &
+            write (u, '(a)') '# all columns nondimensional (doc/SPEC.md section 6); a station '// &
+                'at a concentrated '// &
                 'load appears twice (left and right limit)'
             do c = 1, size(cols)
                 write (u, '(a,i0,a)') '# ', c, &
@@ -447,7 +448,8 @@ contains
             write (u, '(a)') "files = files.' '.gp_dir.'"//trim(names(i))// &
                 trim(merge('.dat', '.csv', m%nondim))//"'"
             write (u, '(a)') 'labels = labels." '//trim(labels(i))//'"'
-            write (u, '(a)') "p_means = p_means.' "//gp_number(means(i)*pressure_scale(m, cols))//"'"
+            write (u, '(a)') "p_means = p_means.' "// &
+                gp_number(means(i)*pressure_scale(m, cols))//"'"
         end do
         write (u, '(a)') "sweep_png = gp_dir.'"//stem//"_sweep.png'"
         write (u, '(a)') "title = 'fricon: "//trim(shell_safe(m%title))//" (sweep)'"
@@ -530,7 +532,8 @@ contains
         call write_figure_columns(u, cols)
         call write_figure_labels(u, cols, m%nondim, beam)
         if (beam .and. phys) then
-            write (u, '(a)') '# beam width b: the right axis of the pressure panel is the line load b p_z'
+            write (u, '(a)') '# beam width b: the right axis of the pressure panel is the '// &
+                'line load b p_z'
             ! line load [F/L] = b [L] times the pressure in F/L^2 (display / its factor)
             call put_num(u, 'line_width', m%structure%b/pressure_scale(m, cols))
             call put_text(u, 'lab_line', 'line load b p_z ['//trim(case_line_load(m))//']')
@@ -538,8 +541,10 @@ contains
             call put_num(u, 'line_width', 0.0_dp)
             call put_text(u, 'lab_line', '')
         end if
-        write (u, '(a)') '# clip rule: p_clip = max(clip_factor p_mean, clip_inner x the largest pressure'
-        write (u, '(a)') '# at least edge_d from a free edge); p_mean = V / contact area, edge_d = h'
+        write (u, '(a)') '# clip rule: p_clip = max(clip_factor p_mean, clip_inner x the '// &
+            'largest pressure'
+        write (u, '(a)') '# at least edge_d from a free edge); p_mean = V / contact area, '// &
+            'edge_d = h'
         call put_num(u, 'p_mean', p_mean)
         call put_num(u, 'clip_factor', 1.5_dp)
         call put_num(u, 'clip_inner', 1.25_dp)
@@ -710,7 +715,8 @@ contains
         real(dp), intent(in) :: xs
         character(len=1) :: kind_letter
         integer :: k, n
-        write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] (plotted unit)'
+        write (u, '(a)') '# loads: P point, M moment, R ring, D patch [load_x1, load_x2] '// &
+            '(plotted unit)'
         n = size(loads)
         write (u, '(a)') 'n_loads = '//int_text(n)
         if (n == 0) return
@@ -784,7 +790,8 @@ contains
         call open_temporary(path, u, err)
         if (allocated(err)) return
         write (u, '(a)') repeat('=', 100)
-        write (u, '(a)') ' fricon - beam / circular raft on an elastic half-space with lift-off and friction'
+        write (u, '(a)') ' fricon - beam / circular raft on an elastic half-space with '// &
+            'lift-off and friction'
         write (u, '(a)') ' deck: '//base_name(deck_path)//'    case: '//label
         write (u, '(a)') ' title: '//trim(m%title)
         write (u, '(a)') ' '//run_stamp()
@@ -869,7 +876,8 @@ contains
         write (u, fmt) 'eps_bar (friction regularisation)', m%interface%eps_bar
         write (u, fmt) 'eta_bar (penalty of the tension zone)', m%interface%eta_bar
         if (m%nondim) then
-            write (u, '(3x,a)') 'physical set chosen to reproduce the groups: l (a) = 1, E = 1, F = 1'
+            write (u, '(3x,a)') 'physical set chosen to reproduce the groups: l (a) = 1, E = '// &
+                '1, F = 1'
         end if
         write (u, fmt) 'l (beam length) or a (plate radius)', m%structure%length, &
             trim(m%units%length)
@@ -933,30 +941,40 @@ contains
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         write (u, '(/,a)') ' 3. SIGN CONVENTIONS AND UNITS'
-        write (u, '(a)') '   z points down into the soil; w > 0 is settlement; x from the beam centre '// &
+        write (u, '(a)') '   z points down into the soil; w > 0 is settlement; x from the '// &
+            'beam centre '// &
             '(plate: radius r).'
-        write (u, '(a)') '   u_s: mid-plane horizontal displacement (+x / outward); psi: section '// &
+        write (u, '(a)') '   u_s: mid-plane horizontal displacement (+x / outward); psi: '// &
+            'section '// &
             'rotation, psi = dw/dx in the thin limit.'
-        write (u, '(a)') '   sigma_z > 0: compressive contact pressure on the soil; sigma_x: shear '// &
+        write (u, '(a)') '   sigma_z > 0: compressive contact pressure on the soil; sigma_x: '// &
+            'shear '// &
             'traction ON THE SOIL, +x (plate: outward);'
-        write (u, '(a)') '   the structure receives -sigma. gap = w_f - w_b >= 0; slip = u_b - u_f, '// &
+        write (u, '(a)') '   the structure receives -sigma. gap = w_f - w_b >= 0; slip = u_b '// &
+            '- u_f, '// &
             'u_b = u_s - (h/2) psi.'
         if (m%structure%kind == MODEL_BEAM) then
-            call write_wrapped(u, '   BEAM: sigma are line loads (force/length) over the width b; '// &
-                'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh (w''-psi).')
-            write (u, '(a)') '   M is the moment about the mid-plane. A MOMENT load M0 > 0 turns '// &
+            call write_wrapped(u, '   BEAM: sigma are line loads (force/length) over the '// &
+                'width b; '// &
+                'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh '// &
+                    '(w''-psi).')
+            write (u, '(a)') '   M is the moment about the mid-plane. A MOMENT load M0 > 0 '// &
+                'turns '// &
                 'the beam clockwise as the figure draws it'
-            write (u, '(a)') '   (x to the right, w down: the +x side settles more); M drops by '// &
+            write (u, '(a)') '   (x to the right, w down: the +x side settles more); M drops '// &
+                'by '// &
                 'M0 across it. A horizontal load F_x'
             write (u, '(a)') '   on the top face acts h/2 above the mid-plane: M drops by '// &
                 'F_x h/2 across it (at once at a POINT load).'
-            write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F l^2), '// &
+            write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F '// &
+                'l^2), '// &
                 'Sigma = l sigma/F, N/F, M/(F l), Q/F.'
         else
             call write_wrapped(u, '   PLATE: sigma are stresses; resultants per unit length: '// &
                 'N_r, N_theta, M_r = D(psi''+nu psi/r), M_theta = D(psi/r+nu psi'') '// &
                 '(> 0: top in tension), Q_r = kGh(w''-psi).')
-            write (u, '(a)') '   Nondimensional: t = r/a, U,W = D u/(F a^2), Psi = D psi/(F a), '// &
+            write (u, '(a)') '   Nondimensional: t = r/a, U,W = D u/(F a^2), Psi = D psi/(F '// &
+                'a), '// &
                 'Sigma = pi a^2 sigma/F, N a/F, M/F, Q a/F.'
         end if
         write (u, '(a)') '   Physical units: force '//trim(m%units%force)//', length '// &
@@ -969,13 +987,15 @@ contains
         type(solution_t), intent(in) :: sol
         integer :: i
         character(len=200) :: line    ! a row, written without its trailing blanks
-        write (u, '(/,a)') ' 4. SOLVER LOG (outer: friction threshold tau0 <- f sigma_z; inner: '// &
+        write (u, '(/,a)') ' 4. SOLVER LOG (outer: friction threshold tau0 <- f sigma_z; '// &
+            'inner: '// &
             'slip / tension sets)'
         if (.not. allocated(sol%history)) then
             write (u, '(a)') '   (no iteration: the case was refused before solving)'
             return
         end if
-        write (u, '(a)') '   outer inner  slip-pts  lift-pts  changed   rel.increment   rel.residual'// &
+        write (u, '(a)') '   outer '// &
+            'inner  slip-pts  lift-pts  changed   rel.increment   rel.residual'// &
             '  note'
         do i = 1, size(sol%history)
             associate (h => sol%history(i))
@@ -1048,13 +1068,16 @@ contains
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
-        write (u, '(/,a)') '   Station values: tractions are the mean over the elements meeting at '// &
+        write (u, '(/,a)') '   Station values: tractions are the mean over the elements '// &
+            'meeting at '// &
             'the station (the forces the equations carry);'
         write (u, '(a)') '   the pointwise finite-element field is in the data files '// &
             '(Sigma_x^h, Sigma_z^h in the .dat; sigma_x_fe, sigma_z_fe in the CSV);'
-        write (u, '(a)') '   states follow the solver''s interface law; gap is 0 where in contact '// &
+        write (u, '(a)') '   states follow the solver''s interface law; gap is 0 where in '// &
+            'contact '// &
             '(weak compatibility, see CHECKS);'
-        write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the section; '// &
+        write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the '// &
+            'section; '// &
             'a station at a concentrated load'
         write (u, '(a)') '   appears twice (left and right limit).'
         if (m%structure%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) call &
@@ -1123,13 +1146,17 @@ contains
     !> Which pressure the summary reports, and why.
     subroutine write_pressure_note(u)
         integer, intent(in) :: u
-        write (u, '(3x,a)') 'Pressures are element means at the stations: the mean pressure over '// &
+        write (u, '(3x,a)') 'Pressures are element means at the stations: the mean pressure '// &
+            'over '// &
             'the elements meeting there'
-        write (u, '(3x,a)') '(the forces the equations carry; they do not alternate from node to '// &
+        write (u, '(3x,a)') '(the forces the equations carry; they do not alternate from node '// &
+            'to '// &
             'node as the nodal field does near an edge or a'
-        write (u, '(3x,a)') 'lift-off boundary). Where the pressure is bounded both converge to '// &
+        write (u, '(3x,a)') 'lift-off boundary). Where the pressure is bounded both converge '// &
+            'to '// &
             'the same value; the pointwise finite-element'
-        write (u, '(3x,a)') 'field (data files) peaks higher under a concentrated load and at an '// &
+        write (u, '(3x,a)') 'field (data files) peaks higher under a concentrated load and at '// &
+            'an '// &
             'edge in contact, where neither converges.'
     end subroutine write_pressure_note
 

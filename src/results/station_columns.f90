@@ -101,7 +101,8 @@ contains
         call set_roles(cols, [character(len=12) :: 't', 'W', 'gap', 'Sigma_z', 'Sigma_x', &
                               'state', 'slip', merge('M/(Fl)', 'M_r/F ', beam), &
                               merge('     ', 'M_t/F', beam), merge('Q/F    ', 'Q_r*a/F', beam), &
-                              merge('N/F    ', 'N_r*a/F', beam), merge('       ', 'N_t*a/F', beam)], &
+                              merge('N/F    ', 'N_r*a/F', beam), merge('       ', 'N_t*a/F', &
+                                  beam)], &
                        [character(len=12) :: 'M_theta/F', 'N_theta*a/F'])
     end function nondim_columns
 
@@ -194,7 +195,8 @@ contains
             i = column_index(cols, trim(keys(r)))
             cols(i)%role = r
             cols(i)%legend = cols(i)%symbol
-            cols(i)%words = merge(plate_words(r), beam_words(r), len_trim(keys(ROLE_HOOP_MOMENT)) > 0)
+            cols(i)%words = merge(plate_words(r), beam_words(r), &
+                len_trim(keys(ROLE_HOOP_MOMENT)) > 0)
         end do
         if (len_trim(keys(ROLE_HOOP_MOMENT)) == 0) return
         cols(column_index(cols, trim(keys(ROLE_HOOP_MOMENT))))%legend = hoop_legends(1)

@@ -385,11 +385,12 @@ contains
     !! I0[g](x) = int_x0^x w g ds, I1[g](x) = int_x0^x w g (x - s) ds (loads included as
     !! distributions, moments C as their sum left of x):
     !!   beam   Q = I0[sz] - I0[qz],  N = I0[sx] - I0[qx],
-    !!          M = -(I1[sz] - I1[qz]) - (h/2)(I0[sx] + I0[qx]) - C          (M' = -Q - (h/2)(qx+sx))
+    !!          M = -(I1[sz] - I1[qz]) - (h/2)(I0[sx] + I0[qx]) - C (M' = -Q - (h/2)(qx+sx))
     !!   plate  2 pi r Q_r = I0[sz] - I0[qz],  r N_r = int N_t - (I0[qx] - I0[sx])/(2 pi),
     !!          r M_r = int M_t - (I1[sz] - I1[qz])/(2 pi) - (h/2)(I0[sx] + I0[qx])/(2 pi)
     !! from Q' = sz - qz, N' = sx - qx, M' = -Q - (h/2)(qx + sx) and their axisymmetric forms
-    !! (r Q_r)' = r (sz - qz), (r N_r)' = N_t - r (qx - sx), (r M_r)' = M_t - r Q_r - r (h/2)(qx + sx).
+    !! (r Q_r)' = r (sz - qz), (r N_r)' = N_t - r (qx - sx),
+    !! (r M_r)' = M_t - r Q_r - r (h/2)(qx + sx).
     pure subroutine statics_resultants(m, d, sol, tab)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
