@@ -1,4 +1,4 @@
-!> Two additions to the error estimate of a key result that is the largest or least value of
+!> Three additions to the error estimate of a key result that is the largest or least value of
 !! a station field (settlement_max, differential_settlement, moment_sagging, moment_hogging),
 !! made after error_estimate's estimate from the nested meshes:
 !!
@@ -26,6 +26,16 @@
 !!    The node farther away is not used: the field's curvature between it and the load
 !!    (concave next to the load, convex farther out on a soft base) makes a long extension
 !!    too high or too low.
+!!  * **An extreme moment the meshes do not resolve.** Under a point load on a very soft thick
+!!    beam the moment at the load is sagging on coarse meshes and hogging on fine ones (rho
+!!    1e-4, zeta 0.3: M(0) = -8.3e-3 on N_e = 20, +9.5e-3 converged), so the hogging moment
+!!    is near 0 on the coarse meshes and grows from 2e-6 to 3e-3 over N_e = 20 to 160; its
+!!    estimate from the nested meshes was a tenth of its error. Where an extreme moment's
+!!    estimate is at least its own size (the value is not established), it is the smaller of
+!!    the two extremes, and the larger one's estimate is at least half that extreme (the
+!!    mesh is not sure of the moment field where it is largest, nor so of its sign), its
+!!    estimate is at least the largest magnitude the moment field may have there,
+!!    |M_opposite| + E_opposite.
 module extreme_estimates
     use kinds, only: dp
     use model, only: model_t, LOAD_POINT, LOAD_RING, LOAD_MOMENT
