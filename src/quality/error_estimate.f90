@@ -14,9 +14,11 @@
 !! estimate from collapsing where the fine pair happens to agree (a boundary that stays in one
 !! element). The contact extent moves by whole nodes: its estimate is at least half the
 !! element beyond the last node in contact (at an end of the base, the end element). The
-!! keys that are extremes of a station field then get two additions (extreme_estimates,
-!! both estimates): the shortfall of an extreme lying between two stations, and a wider
-!! estimate for an extreme moment the meshes do not resolve.
+!! keys that are extremes of a station field then get three additions (extreme_estimates,
+!! both estimates): the shortfall of an extreme lying between two stations, the settlement
+!! at a load inside an element, and a wider estimate for an extreme moment the meshes do not
+!! resolve. Where the mesh coarsened twice shows the coarse meshes short of the asymptotic
+!! range, the estimate is at least the coarse difference (pre_asymptotic).
 !! Measured on a reference set of 1665 results
 !! (output/bench/estimate_effectivity.md), against the estimates from coarser meshes only:
 !! the coarse meshes of N_e = 20 to 80 are short of the asymptotic range and gave estimates
