@@ -10,6 +10,12 @@ inside one critical section, but the solve, the key results, the warnings and th
 run outside it. This check lists every function with a deferred-length character result and
 fails where one is referenced from the rooms that run outside the critical section.
 
+It also fails on an INQUIRE by file name (`inquire (file=...)`) in those rooms and in output/
+(whose writers run inside the critical section while the other threads run): gfortran's
+INQUIRE by name waits for the lock of every open unit, so it waited for another thread's
+unit held through a gnuplot's answer, and a sweep's figures stopped using the second core
+(1000 cases: 2.0 times as fast on two threads before, 1.0 with one such INQUIRE).
+
 Usage: python3 scripts/check_thread_safety.py [SRC_DIR]   (default: the project's src/)
 """
 import os
@@ -26,6 +32,9 @@ FUNC = re.compile(r'^\s*(?:(?:pure|elemental|recursive|impure|module)\s+)*functi
 DEFERRED = re.compile(r'character\s*\(\s*len\s*=\s*:\s*\)\s*,\s*allocatable\s*::\s*([\w\s,]+)', re.I)
 END_FUNC = re.compile(r'^\s*end\s+function', re.I)
 RENAME = re.compile(r'(\w+)\s*=>\s*(\w+)')
+INQUIRE_FILE = re.compile(r'\binquire\s*\(\s*file\s*=', re.I)
+# folders whose code runs while a sweep's threads run (the writers: inside the critical section)
+SWEEP_FOLDERS = PARALLEL_FOLDERS + ['output']
 
 
 def sources(src):
@@ -70,6 +79,11 @@ def main():
     bad = 0
     for path in sorted(sources(src)):
         rel = os.path.relpath(path, src).replace(os.sep, '/')
+        if rel.split('/')[0] in SWEEP_FOLDERS or rel in PARALLEL_FILES:
+            for k, line in enumerate(code_lines(path), 1):
+                if INQUIRE_FILE.search(line):
+                    print(f'{rel}:{k}: INQUIRE by file name (waits for every open unit)')
+                    bad += 1
         if rel.split('/')[0] not in PARALLEL_FOLDERS and rel not in PARALLEL_FILES:
             continue
         lines = code_lines(path)
@@ -91,7 +105,7 @@ def main():
                     print(f'{rel}:{k}: calls {name} (a deferred-length character result)')
                     bad += 1
     print(f'{len(names)} functions with deferred-length character results; '
-          f'{bad} calls from code that runs on several threads')
+          f'{bad} calls or INQUIREs by name from code that runs on several threads')
     return 1 if bad else 0
 
 

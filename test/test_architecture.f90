@@ -15,6 +15,7 @@ contains
                  new_unittest('back_edge_found', test_back_edge_found), &
                  new_unittest('threads_call_no_deferred_length_text', test_thread_safety), &
                  new_unittest('deferred_length_call_on_threads_found', test_thread_unsafe_found), &
+                 new_unittest('inquire_by_name_in_output_found', test_inquire_found), &
                  new_unittest('lines_at_most_100_characters', test_line_length), &
                  new_unittest('long_line_found', test_long_line_found)]
     end subroutine collect_architecture
@@ -123,4 +124,23 @@ contains
         call check(err, status == 1, 'a call of word() in results/ was not reported')
         call execute_command_line('rm -rf '//dir)
     end subroutine test_thread_unsafe_found
+
+    !> A tree whose output/ room asks INQUIRE (FILE=...): exit status 1 (gfortran's INQUIRE by
+    !! name waits for every open unit's lock: a sweep's writer waited for another thread's
+    !! gnuplot, scripts/check_thread_safety.py).
+    subroutine test_inquire_found(err)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=*), parameter :: dir = 'build/test_inquire'
+        integer :: status, u
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/output')
+        open (newunit=u, file=dir//'/output/files.f90', status='replace', action='write')
+        write (u, '(a)') 'module files', 'contains', '    logical function there(p)', &
+            '        character(len=*), intent(in) :: p', '        inquire (file=p, exist=there)', &
+            '    end function there', 'end module files'
+        close (u)
+        call execute_command_line('python3 scripts/check_thread_safety.py '//dir// &
+                                  ' > /dev/null', exitstat=status)
+        call check(err, status == 1, 'an INQUIRE by name in output/ was not reported')
+        call execute_command_line('rm -rf '//dir)
+    end subroutine test_inquire_found
 end module test_architecture

@@ -11,7 +11,7 @@ module atomic_files
     use iso_c_binding, only: c_int, c_char, c_null_char
     use errors, only: error_t, new_error, EXIT_INPUT
     use output_paths, only: looks_like_output
-    use file_system, only: size_and_last_byte, file_links, move_file
+    use file_system, only: size_and_last_byte, file_links, may_write, move_file
     use temporary_cleanup, only: register_temporary, release_temporary
     implicit none
     private
@@ -84,12 +84,10 @@ contains
     !! earlier results.
     logical function reusable(path)
         character(len=*), intent(in) :: path
-        character(len=3) :: may_write
         reusable = .false.
         if (file_links(path) /= 1) return
-        ! a file the user made read-only is replaced by a new one, as before (access(2))
-        inquire (file=path, write=may_write)
-        if (may_write /= 'YES') return
+        ! a file the user made read-only is replaced by a new one, as before
+        if (.not. may_write(path)) return
         if (.not. looks_like_output(path)) return
         call move_file(path, path//'.tmp', reusable)
     end function reusable

@@ -35,6 +35,12 @@ module file_system
             integer(c_int), intent(out) :: last
             integer(c_long) :: size
         end function c_size_and_last_byte
+        ! int fricon_may_write(const char *path);   (file_system_shim.c)
+        function c_may_write(path) bind(c, name='fricon_may_write') result(yes)
+            import :: c_char, c_int
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int) :: yes
+        end function c_may_write
         ! long fricon_file_links(const char *path);   (file_system_shim.c)
         function c_file_links(path) bind(c, name='fricon_file_links') result(links)
             import :: c_char, c_long
@@ -77,7 +83,7 @@ module file_system
     end interface
 
     public :: make_folder, writable_folder, folder_entries, size_and_last_byte, file_links, &
-              move_file, delete_file
+              may_write, move_file, delete_file
 
 contains
 
@@ -127,6 +133,15 @@ contains
         size_bytes = int(c_size_and_last_byte(path//c_null_char, byte))
         last = int(byte)
     end subroutine size_and_last_byte
+
+    !> Whether this process may write the file at `path` (access(2)). Not Fortran's INQUIRE
+    !! (WRITE=): gfortran's INQUIRE by file name waits for every open unit's lock, so a thread
+    !! writing a case's files waited for another thread's gnuplot to answer, and a sweep's
+    !! figures no longer used the second core.
+    logical function may_write(path)
+        character(len=*), intent(in) :: path   !! the file
+        may_write = c_may_write(path//c_null_char) == 1
+    end function may_write
 
     !> The number of names (hard links) of the regular file at `path`; -1 when there is no
     !! regular file there (nothing, a folder, a symbolic link).

@@ -79,3 +79,9 @@ long fricon_file_links(const char *path)
     if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode)) return -1;
     return (long)st.st_nlink;
 }
+
+/* 1 when this process may write the file at path (access(2), W_OK), else 0. */
+int fricon_may_write(const char *path)
+{
+    return access(path, W_OK) == 0;
+}
