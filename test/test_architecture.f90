@@ -40,20 +40,35 @@ contains
     subroutine test_long_line_found(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=*), parameter :: dir = 'build/test_line_length'
-        integer :: status, u
-        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/src '//dir//'/test')
-        open (newunit=u, file=dir//'/src/long.f90', status='replace', action='write')
-        write (u, '(a)') 'module long', '! '//repeat('x', 99), 'end module long'
-        close (u)
-        open (newunit=u, file=dir//'/test/wide.f90', status='replace', action='write')
-        write (u, '(a)') '! '//repeat('x', 96)//'m²'
-        close (u)
-        call execute_command_line('python3 scripts/check_line_length.py '//dir//' > '//dir// &
-                                  '.txt', exitstat=status)
+        integer :: status
+        call execute_command_line('rm -rf '//dir)
+        call tree_file(dir, 'src/long.f90', &
+                       [character(len=101) :: 'module long', '! '//repeat('x', 99), &
+                        'end module long'])
+        call tree_file(dir, 'test/wide.f90', ['! '//repeat('x', 96)//'m²'])
+        status = script_on_tree('check_line_length', dir)
         call check(err, status == 1 .and. count_lines(dir//'.txt') == 2, 'a 101-character '// &
                    'line was not reported, or a 100-character one with a two-byte character was')
         call execute_command_line('rm -rf '//dir//' '//dir//'.txt')
     end subroutine test_long_line_found
+
+    !> Write the lines to dir/rel (its folders made): a file of a tree made to fail a check.
+    subroutine tree_file(dir, rel, lines)
+        character(len=*), intent(in) :: dir, rel, lines(:)
+        integer :: u, k
+        k = index(rel, '/', back=.true.)
+        call execute_command_line('mkdir -p '//dir//'/'//rel(1:max(k - 1, 0)))
+        open (newunit=u, file=dir//'/'//rel, status='replace', action='write')
+        write (u, '(a)') (trim(lines(k)), k = 1, size(lines))
+        close (u)
+    end subroutine tree_file
+
+    !> The exit status of `python3 scripts/SCRIPT.py DIR`, its output in DIR.txt.
+    integer function script_on_tree(script, dir) result(status)
+        character(len=*), intent(in) :: script, dir
+        call execute_command_line('python3 scripts/'//script//'.py '//dir//' > '//dir// &
+                                  '.txt', exitstat=status)
+    end function script_on_tree
 
     !> The number of lines of a text file (0 if it cannot be read).
     integer function count_lines(path) result(n)
@@ -82,19 +97,14 @@ contains
     subroutine test_back_edge_found(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=*), parameter :: dir = 'build/test_layers'
-        integer :: status, u
-        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/results '//dir// &
-                                  '/output')
-        open (newunit=u, file=dir//'/output/writer.f90', status='replace', action='write')
-        write (u, '(a)') 'module writer', 'end module writer'
-        close (u)
-        open (newunit=u, file=dir//'/results/table.f90', status='replace', action='write')
-        write (u, '(a)') 'module table', '    use writer', 'end module table'
-        close (u)
-        call execute_command_line('python3 scripts/check_layers.py '//dir//' > /dev/null', &
-                                  exitstat=status)
-        call check(err, status == 1, 'results using output was not reported as a back-edge')
         call execute_command_line('rm -rf '//dir)
+        call tree_file(dir, 'output/writer.f90', [character(len=20) :: 'module writer', &
+                                                  'end module writer'])
+        call tree_file(dir, 'results/table.f90', [character(len=20) :: 'module table', &
+                                                  '    use writer', 'end module table'])
+        call check(err, script_on_tree('check_layers', dir) == 1, &
+                   'results using output was not reported as a back-edge')
+        call execute_command_line('rm -rf '//dir//' '//dir//'.txt')
     end subroutine test_back_edge_found
 
     !> The project's own src/: no function with a deferred-length character result is called
@@ -110,19 +120,16 @@ contains
     subroutine test_thread_unsafe_found(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=*), parameter :: dir = 'build/test_threads'
-        integer :: status, u
-        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/results')
-        open (newunit=u, file=dir//'/results/table.f90', status='replace', action='write')
-        write (u, '(a)') 'module table', 'contains', '    function word() result(t)', &
+        call execute_command_line('rm -rf '//dir)
+        call tree_file(dir, 'results/table.f90', [character(len=48) :: 'module table', &
+            'contains', '    function word() result(t)', &
             '        character(len=:), allocatable :: t', '        t = ''x''', &
             '    end function word', '    subroutine key(k)', &
             '        character(len=8), intent(out) :: k', '        k = word()', &
-            '    end subroutine key', 'end module table'
-        close (u)
-        call execute_command_line('python3 scripts/check_thread_safety.py '//dir// &
-                                  ' > /dev/null', exitstat=status)
-        call check(err, status == 1, 'a call of word() in results/ was not reported')
-        call execute_command_line('rm -rf '//dir)
+            '    end subroutine key', 'end module table'])
+        call check(err, script_on_tree('check_thread_safety', dir) == 1, &
+                   'a call of word() in results/ was not reported')
+        call execute_command_line('rm -rf '//dir//' '//dir//'.txt')
     end subroutine test_thread_unsafe_found
 
     !> A tree whose output/ room asks INQUIRE (FILE=...): exit status 1 (gfortran's INQUIRE by
@@ -131,16 +138,13 @@ contains
     subroutine test_inquire_found(err)
         type(error_t), allocatable, intent(out) :: err
         character(len=*), parameter :: dir = 'build/test_inquire'
-        integer :: status, u
-        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//'/output')
-        open (newunit=u, file=dir//'/output/files.f90', status='replace', action='write')
-        write (u, '(a)') 'module files', 'contains', '    logical function there(p)', &
-            '        character(len=*), intent(in) :: p', '        inquire (file=p, exist=there)', &
-            '    end function there', 'end module files'
-        close (u)
-        call execute_command_line('python3 scripts/check_thread_safety.py '//dir// &
-                                  ' > /dev/null', exitstat=status)
-        call check(err, status == 1, 'an INQUIRE by name in output/ was not reported')
         call execute_command_line('rm -rf '//dir)
+        call tree_file(dir, 'output/files.f90', [character(len=48) :: 'module files', &
+            'contains', '    logical function there(p)', &
+            '        character(len=*), intent(in) :: p', '        inquire (file=p, exist=there)', &
+            '    end function there', 'end module files'])
+        call check(err, script_on_tree('check_thread_safety', dir) == 1, &
+                   'an INQUIRE by name in output/ was not reported')
+        call execute_command_line('rm -rf '//dir//' '//dir//'.txt')
     end subroutine test_inquire_found
 end module test_architecture
