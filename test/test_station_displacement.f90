@@ -18,12 +18,13 @@
 !! decks, and the sums in quadruple precision: output/bench/tabulation_before_after.md).
 module test_station_displacement
     use kinds, only: dp, pi
-    use harness, only: unittest_t, new_unittest, check_close, error_t
+    use harness, only: unittest_t, new_unittest, check, check_close, error_t
     use errors, only: add_context
     use mesh, only: mesh_t, new_mesh
     use shape_functions, only: basis_t, new_basis, INTERP_P1, INTERP_P2, INTERP_S2
     use singular_quadrature, only: split_kernel_t, displacement_split_kernel, &
-                                   displacement_split_kernel_reference
+                                   displacement_split_kernel_reference, gauss_tables_t, &
+                                   new_gauss_tables, shared_gauss_tables, n_max, n_log
     use halfspace_plate, only: plate_surface_displacement, ring_kernels, elliptic_ke_agm
     use halfspace_beam, only: beam_surface_displacement, strip_kernels
     implicit none
@@ -63,8 +64,47 @@ contains
                  new_unittest('beam_fast_vs_reference', test_beam), &
                  new_unittest('same_kernel_fast_vs_reference', test_same_kernel), &
                  new_unittest('small_meshes', test_small_meshes), &
-                 new_unittest('points_ulps_from_nodes', test_near_nodes)]
+                 new_unittest('points_ulps_from_nodes', test_near_nodes), &
+                 new_unittest('embedded_gauss_tables_match', test_embedded_tables), &
+                 new_unittest('embedded_gauss_rules_exact', test_embedded_rules_exact)]
     end subroutine collect_station_displacement
+
+    !> The GL tables embedded in the program (gauss_rule_tables, through shared_gauss_tables)
+    !! are the tables new_gauss_tables computes (Newton's method on P_n, the product-log
+    !! moments), bit for bit: the program's results do not depend on which it uses.
+    subroutine test_embedded_tables(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(gauss_tables_t) :: embedded, computed
+        call shared_gauss_tables(embedded)
+        call new_gauss_tables(computed)
+        call check(err, all(embedded%v == computed%v) .and. all(embedded%w == computed%w) &
+                   .and. all(embedded%wq == computed%wq), 'the embedded GL tables differ '// &
+                   'from new_gauss_tables: run scripts/embed_gauss_tables.sh')
+    end subroutine test_embedded_tables
+
+    !> Closed forms for the embedded rules: the n-point rule integrates v^(2n-1) on [0, 1]
+    !! exactly (1/(2n)); the product-log rule of n points, whose weights are
+    !! wl_i = wq(i, n) + w(i, n) ln v_i, integrates v^(n-1) ln v exactly (-1/n^2).
+    subroutine test_embedded_rules_exact(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(gauss_tables_t) :: tab
+        real(dp) :: total
+        integer :: n
+        character(len=40) :: what
+        call shared_gauss_tables(tab)
+        rules: do n = 1, n_max
+            total = sum(tab%w(1:n, n)*tab%v(1:n, n)**(2*n - 1))
+            write (what, '("int v^(2n-1), n = ",i0)') n
+            call check_close(err, total, 1.0_dp/real(2*n, dp), 1.0e-14_dp, 0.0_dp, what)
+            if (allocated(err)) return
+            if (n > n_log) cycle
+            total = sum((tab%wq(1:n, n) + tab%w(1:n, n)*log(tab%v(1:n, n))) &
+                        *tab%v(1:n, n)**(n - 1))
+            write (what, '("int v^(n-1) ln v, n = ",i0)') n
+            call check_close(err, total, -1.0_dp/real(n*n, dp), 1.0e-13_dp, 0.0_dp, what)
+            if (allocated(err)) return
+        end do rules
+    end subroutine test_embedded_rules_exact
 
     ! ------------------------------------------------------------------ test kernels
 

@@ -1,7 +1,7 @@
 !> What every program of the project does once before any work, while it runs one thread:
 !! GSL's error handler off (its default aborts the process; every GSL status is checked
 !! instead) and the run's date and time recorded (run_identity). The quadrature tables are
-!! tabulated by the first case that needs them (singular_quadrature::shared_gauss_tables).
+!! constants of the program (gauss_rule_tables).
 module start_up
     use gsl_wrappers, only: gsl_start
     use run_identity, only: record_run_time

@@ -38,6 +38,7 @@ module singular_quadrature
     use sorting, only: sort_ascending
     use errors, only: error_t, new_error, add_context, EXIT_INTERNAL
     use quadrature, only: gauss_legendre
+    use gauss_rule_tables, only: packed_nodes, packed_weights, packed_log_weights
     use shape_functions, only: basis_t, eval_basis, max_local
     implicit none
     private
@@ -46,7 +47,7 @@ module singular_quadrature
     public :: shared_gauss_tables, build_pair_rule, build_line_rule
     public :: assemble_split_kernel_reference, displacement_split_kernel
     public :: displacement_split_kernel_reference
-    public :: check_bases, near_ratio, n_max, points_for_ratio
+    public :: check_bases, near_ratio, n_max, n_log, points_for_ratio, new_gauss_tables
     ! public because the submodule calls them: gfortran 12 does not emit a private module
     ! procedure that only a submodule (or an inlined call) uses, and the link fails
     public :: check_displacement_arguments, snapped_to_nodes
@@ -143,37 +144,30 @@ module singular_quadrature
         end subroutine displacement_split_kernel
     end interface
 
-    !> The process's GL tables, written once by the first shared_gauss_tables, then only read.
-    type(gauss_tables_t), save :: process_tables
-    logical, save :: tables_ready = .false.
-
 contains
 
     !> Tabulate GL rules on [0, 1] and the product-log weights (see module header); the
     !! program takes its copies from shared_gauss_tables.
     pure subroutine new_gauss_tables(tab)
-        type(gauss_tables_t), intent(out) :: tab
+        type(gauss_tables_t), intent(out) :: tab   !! the rules, computed
         integer :: n
         rules: do n = 1, n_max
             call tabulate_order(tab, n)
         end do rules
     end subroutine new_gauss_tables
 
-    !> A copy of all GL rules and product-log weights: the process's, tabulated once, by the
-    !! first call (the same numbers at every assembly and tabulation; computing the rules took
-    !! 2 % of an assembly at N_e = 50 and, rule by rule on demand, 2 % of a 1000-case sweep's
-    !! stations). A process that solves nothing (an input error, --version) never tabulates.
-    subroutine shared_gauss_tables(tab)
+    !> A copy of all GL rules and product-log weights, unpacked from the constants of
+    !! gauss_rule_tables: the numbers new_gauss_tables computes (singular_quadrature/
+    !! embedded_tables_match), embedded because computing them took 0.2 ms of every small case.
+    pure subroutine shared_gauss_tables(tab)
         type(gauss_tables_t), intent(out) :: tab   !! the rules
-        ! one thread at a time looks: the threads of a sweep never see half-written tables
-        !$omp critical (fricon_gauss_tables)
-        if (.not. tables_ready) then
-            call new_gauss_tables(process_tables)
-            tables_ready = .true.
-        end if
-        !$omp end critical (fricon_gauss_tables)
-        ! written once above, only read from here on
-        tab = process_tables
+        integer :: n, first
+        rules: do n = 1, n_max
+            first = n*(n - 1)/2
+            tab%v(1:n, n) = packed_nodes(first + 1:first + n)
+            tab%w(1:n, n) = packed_weights(first + 1:first + n)
+            if (n <= n_log) tab%wq(1:n, n) = packed_log_weights(first + 1:first + n)
+        end do rules
     end subroutine shared_gauss_tables
 
     !> Tabulate the n-point rule (and, for n <= n_log, its product-log weights).
