@@ -19,6 +19,7 @@
 !!   contact_solver's admissibility and soft-beam tests.
 module test_newton
     use kinds, only: dp
+    use double_double, only: two_sum, two_product
     use harness, only: unittest_t, new_unittest, error_t, check, check_close
     use errors, only: EXIT_ANALYSIS
     use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_PATCH, &
@@ -45,6 +46,29 @@ module test_newton
 
 contains
 
+    !> The error-free transformations of the double-double refinement, on numbers whose exact
+    !! sums and products are known in closed form: (1 + 2^-30)^2 = 1 + 2^-29 + 2^-60, whose
+    !! double is 1 + 2^-29 and error 2^-60; 1 + 2^-60 rounds to 1 with error 2^-60; and
+    !! (2^-60 + 1) - 1 recovered exactly from the pair. binary128 (exact for these) was the
+    !! arithmetic before.
+    subroutine test_double_double(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp) :: a, p, e, s, t
+        a = 1.0_dp + 2.0_dp**(-30)
+        call two_product(a, a, p, e)
+        call check(err, p == 1.0_dp + 2.0_dp**(-29) .and. e == 2.0_dp**(-60), &
+                   'two_product((1 + 2^-30)^2) is not 1 + 2^-29 with error 2^-60')
+        if (allocated(err)) return
+        call two_sum(1.0_dp, 2.0_dp**(-60), s, e)
+        call check(err, s == 1.0_dp .and. e == 2.0_dp**(-60), &
+                   'two_sum(1, 2^-60) is not 1 with error 2^-60')
+        if (allocated(err)) return
+        call two_sum(2.0_dp**(-60), 1.0_dp, s, e)
+        call two_sum(s, -1.0_dp, t, p)
+        call check(err, t + (p + e) == 2.0_dp**(-60), &
+                   '(2^-60 + 1) - 1 in double-double is not 2^-60')
+    end subroutine test_double_double
+
     subroutine collect_newton(tests)
         type(unittest_t), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('beam_horizontal_load_03', test_beam_horizontal), &
@@ -61,7 +85,8 @@ contains
                  new_unittest('set_cycle_broken_by_single_flip', test_single_flip), &
                  new_unittest('set_cycle_broken_whatever_the_rounding', test_flip_rounding), &
                  new_unittest('schur_solve_matches_dense', test_schur_matches_dense), &
-                 new_unittest('band_solve_matches_lapack', test_band_solve)]
+                 new_unittest('band_solve_matches_lapack', test_band_solve), &
+                 new_unittest('double_double_exact', test_double_double)]
     end subroutine collect_newton
 
     !> Solve m and assert the four checks of the module header; what names the case.

@@ -12,7 +12,8 @@
 !! Constrained unknowns (d%fixed) have the equation z_i = 0.
 module contact_system
     use iso_fortran_env, only: int64
-    use kinds, only: dp, xp, pi
+    use kinds, only: dp, pi
+    use double_double, only: two_sum
     use errors, only: error_t, add_context
     use quadrature, only: gauss_legendre
     use shape_functions, only: eval_basis, max_local, basis_t, INTERP_P2, INTERP_S2
@@ -28,7 +29,7 @@ module contact_system
                              is_slipping, in_tension
     use rigid_body, only: rigid_t, new_rigid, to_rigid_coordinates
     use sparse_matrix, only: columns_t, triplets_t, compressed, transposed, triplets_of, &
-                             columns_times, columns_times_extended, dense_column, &
+                             columns_times, columns_times_double_double, dense_column, &
                              scatter_column, &
                              pack_lower, packed_times, packed_column, packed_entry, &
                              packed_position
@@ -487,21 +488,24 @@ contains
     end subroutine complete_residual
 
     !> The displacement rows of F (4.2a, the structure's equilibrium K v + M^T r - q) at
-    !! z + z_lo, K (v + v_lo) summed in extended precision. In rigid coordinates K holds the
-    !! shear stiffness kGh/h_e of the section while the flexural part v' has w' - psi nearly
-    !! cancelling: for a thin, stiff structure eps |K| |v'| reaches 1e-7 of the load
-    !! (rho 1e6, zeta 1e-3, N_e 400), and the residual of the exactly solved v' rounded to
-    !! double is that large too (doc/METHOD.md, double-double refinement). M^T r is summed
-    !! in double: its round-off, eps |M^T| |r|, is that of the load itself.
+    !! z + z_lo, K (v + v_lo) summed in double-double (module double_double). In rigid
+    !! coordinates K holds the shear stiffness kGh/h_e of the section while the flexural part
+    !! v' has w' - psi nearly cancelling: for a thin, stiff structure eps |K| |v'| reaches
+    !! 1e-7 of the load (rho 1e6, zeta 1e-3, N_e 400), and the residual of the exactly solved
+    !! v' rounded to double is that large too (doc/METHOD.md, double-double refinement).
+    !! M^T r is summed in double: its round-off, eps |M^T| |r|, is that of the load itself.
     pure function equilibrium_residual(d, sys, z, z_lo) result(res)
         type(discretization_t), intent(in) :: d   !! the discretisation
         type(system_t), intent(in) :: sys       !! the assembled system (A0, q)
         real(dp), intent(in) :: z(:), z_lo(:)   !! [v; r] = z + z_lo
         real(dp) :: res(d%nv)
+        real(dp) :: kv(d%nv), kv_lo(d%nv), rest(d%nv), s(d%nv), s_err(d%nv)
         integer :: i
         associate (nv => d%nv)
-            res = real(columns_times_extended(sys%k, real(z(1:nv), xp) + real(z_lo(1:nv), xp)) &
-                       + real(columns_times(sys%mt, z(nv + 1:)) - sys%q, xp), dp)
+            call columns_times_double_double(sys%k, z(1:nv), z_lo(1:nv), kv, kv_lo)
+            rest = columns_times(sys%mt, z(nv + 1:)) - sys%q
+            call two_sum(kv, rest, s, s_err)
+            res = s + (s_err + kv_lo)
         end associate
         do i = 1, size(d%fixed)
             if (d%fixed(i) <= d%nv) res(d%fixed(i)) = z(d%fixed(i))

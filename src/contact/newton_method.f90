@@ -36,7 +36,8 @@
 !! then held in double-double and refined with 4.2a in extended precision (refine_equilibrium: thin,
 !! stiff structures on fine meshes, whose v' in double cannot meet 4.2a to 1e-8).
 module newton_method
-    use kinds, only: dp, xp
+    use kinds, only: dp
+    use double_double, only: two_sum
     use errors, only: error_t, new_error, EXIT_ANALYSIS
     use model, only: model_t, interface_t
     use discretization, only: discretization_t
@@ -160,10 +161,10 @@ contains
         !> two decades below the 1e-8 of the load to which the tests hold equilibrium
         real(dp), parameter :: refine_from = 1.0e-10_dp
         real(dp), allocatable :: res(:), dz(:), z_before(:, :)
-        real(xp), allocatable :: held(:)
+        real(dp), allocatable :: sum_hi(:), sum_lo(:)
         real(dp) :: load, equilibrium, previous
         integer :: step
-        allocate (res(d%n))
+        allocate (res(d%n), sum_hi(d%n), sum_lo(d%n))
         sol%z_lo = spread(0.0_dp, 1, d%n)
         load = max(maxval(abs(sys%q)), tiny(1.0_dp))
         previous = huge(1.0_dp)
@@ -183,9 +184,11 @@ contains
             call newton_direction(d, sys, ls, sys%law, sol, res, dz, err)
             if (allocated(err)) return
             z_before = reshape([sol%z, sol%z_lo], [d%n, 2])
-            held = (real(sol%z, xp) + real(sol%z_lo, xp)) + real(dz, xp)
-            sol%z = real(held, dp)
-            sol%z_lo = real(held - real(sol%z, xp), dp)
+            ! (z + z_lo) + dz in double-double: z + dz exactly as sum + its error, the old
+            ! z_lo added to the error, renormalised so that |z_lo| <= ulp(z)/2
+            call two_sum(sol%z, dz, sum_hi, sum_lo)
+            sum_lo = sum_lo + sol%z_lo
+            call two_sum(sum_hi, sum_lo, sol%z, sol%z_lo)
         end do steps
     end subroutine refine_equilibrium
 

@@ -8,7 +8,8 @@
 !! largest block rather than the whole n x n matrix (the memory target of doc/CHOICES.md,
 !! "The solver's performance targets").
 module sparse_matrix
-    use kinds, only: dp, xp
+    use kinds, only: dp
+    use double_double, only: two_sum, two_product
     use lapack_interfaces, only: dspmv
     implicit none
     private
@@ -30,7 +31,7 @@ module sparse_matrix
     end type columns_t
 
     public :: new_triplets, add_entry, compressed, triplets_of, transposed
-    public :: columns_times, columns_times_extended, dense_column, dense_of
+    public :: columns_times, columns_times_double_double, dense_column, dense_of
     public :: scatter_column
     public :: pack_lower, packed_column, packed_times, packed_add, packed_entry
     public :: packed_position, unpack_lower
@@ -167,21 +168,27 @@ contains
         end do
     end function columns_times
 
-    !> c x with x and the sums in extended precision (the entries of c are exact in it):
-    !! columns_times again, for the few sums that need it (binary128 is emulated in
-    !! software, too slow for the products of every residual).
-    pure function columns_times_extended(c, x) result(y)
-        type(columns_t), intent(in) :: c   !! the sparse matrix (compressed columns)
-        real(xp), intent(in) :: x(:)       !! the vector (ncol), extended precision
-        real(xp) :: y(c%nrow)
-        integer :: j, k
-        y = 0.0_xp
+    !> c (x + x_lo) in double-double, y + y_lo: each product c_ij x_j and its sum exact
+    !! (two_product, two_sum), their errors and the small c_ij x_lo_j added into y_lo
+    !! (module double_double: as accurate as twice the working precision).
+    pure subroutine columns_times_double_double(c, x, x_lo, y, y_lo)
+        type(columns_t), intent(in) :: c      !! the sparse matrix (compressed columns)
+        real(dp), intent(in) :: x(:), x_lo(:) !! the vector (ncol), x + x_lo
+        real(dp), intent(out) :: y(:), y_lo(:) !! the product (nrow), y + y_lo
+        real(dp) :: p, p_err, s, s_err
+        integer :: i, j, k
+        y = 0.0_dp
+        y_lo = 0.0_dp
         do j = 1, c%ncol
             do k = c%ptr(j), c%ptr(j + 1) - 1
-                y(c%row(k)) = y(c%row(k)) + real(c%val(k), xp)*x(j)
+                i = c%row(k)
+                call two_product(c%val(k), x(j), p, p_err)
+                call two_sum(y(i), p, s, s_err)
+                y(i) = s
+                y_lo(i) = y_lo(i) + (s_err + (p_err + c%val(k)*x_lo(j)))
             end do
         end do
-    end function columns_times_extended
+    end subroutine columns_times_double_double
 
     !> Column j of c as a dense vector.
     pure function dense_column(c, j) result(col)
