@@ -273,14 +273,16 @@ contains
         integer, intent(in) :: e           !! the element
         real(dp), intent(in) :: xi         !! local coordinate in [-1, 1]
         type(field_point_t) :: p
-        integer :: field, idx(max_local), n
+        integer :: field, idx(max_local), n, k
         real(dp) :: val(max_local), der(max_local), coef(max_local)
         do field = FIELD_U, FIELD_PSI
             call eval_basis(d%basis(field), e, xi, idx, val, der, p%x)
             n = d%basis(field)%n_local
-            ! (gathered into a fixed-size local: a vector subscript in the call would make a
-            ! heap temporary at every point)
-            coef(1:n) = v(d%offset(field) + idx(1:n))
+            ! (gathered element by element into a fixed-size local: a vector subscript, in the
+            ! call or in this assignment, makes a heap temporary at every point)
+            do k = 1, n
+                coef(k) = v(d%offset(field) + idx(k))
+            end do
             p%val(field) = dot_product(val(1:n), coef(1:n))
             p%der(field) = dot_product(der(1:n), coef(1:n))
         end do
@@ -293,12 +295,14 @@ contains
         integer, intent(in) :: e                  !! the element
         real(dp), intent(in) :: xi                !! local coordinate in [-1, 1]
         real(dp) :: s(2)
-        integer :: field, idx(max_local), n
+        integer :: field, idx(max_local), n, k
         real(dp) :: val(max_local), der(max_local), x, coef(max_local)
         do field = FIELD_SX, FIELD_SZ
             call eval_basis(d%basis(field), e, xi, idx, val, der, x)
             n = d%basis(field)%n_local
-            coef(1:n) = r(d%offset(field) - d%nv + idx(1:n))   ! (see displacement_at)
+            do k = 1, n   ! (see displacement_at)
+                coef(k) = r(d%offset(field) - d%nv + idx(k))
+            end do
             s(field - FIELD_SX + 1) = dot_product(val(1:n), coef(1:n))
         end do
     end function traction_at
