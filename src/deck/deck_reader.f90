@@ -551,7 +551,7 @@ contains
         type(state_t), intent(inout) :: st
         integer, intent(in) :: i                 !! line number
         character(len=*), intent(in) :: text     !! the line
-        integer :: n, c, tab, ctrl
+        integer :: n, c, tab, ctrl, k
         n = len_trim(text)
         tab = index(text(1:n), achar(9))
         ctrl = 0
@@ -566,7 +566,15 @@ contains
             int_text(tab)//': cards have fixed columns, use blanks', echo_text(text))
         if (ctrl > 0) call add_diagnostic(st%diag, i, ctrl, ctrl, 'control character (code '// &
             int_text(iachar(text(ctrl:ctrl)))//') in column '//int_text(ctrl), echo_text(text))
-        c = scan(text(1:n), non_ascii())
+        ! (a loop, not scan with the 128 characters above 127: that compares each column with
+        ! each of them)
+        c = 0
+        high: do k = 1, n
+            if (iachar(text(k:k)) > 127) then
+                c = k
+                exit high
+            end if
+        end do high
         if (c > 0) then
             call add_diagnostic(st%diag, i, c, c, 'non-ASCII character in column '// &
                 int_text(c)//': cards hold ASCII only (a comment, * in column 1, may hold '// &
@@ -583,15 +591,6 @@ contains
         end if
         line_is_clean = tab == 0 .and. ctrl == 0 .and. n <= card_width
     end function line_is_clean
-
-    !> The bytes 128-255.
-    pure function non_ascii() result(set)
-        character(len=128) :: set
-        integer :: k
-        do k = 1, 128
-            set(k:k) = achar(127 + k)
-        end do
-    end function non_ascii
 
     !> Identify the card name of a clean line (columns 1-10) and record the card.
     subroutine classify_card(st, i, text)

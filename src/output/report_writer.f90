@@ -472,14 +472,14 @@ contains
         integer, intent(in) :: u
         character(len=*), intent(in) :: lines(:)
         character(len=:), allocatable :: text
-        integer :: i, k, n
+        integer :: i, k, n(size(lines))
         if (size(lines) == 0) return
-        allocate (character(len=sum(len_trim(lines)) + size(lines) - 1) :: text)
+        n = len_trim(lines)   ! once: the template lines are mostly blanks to scan
+        allocate (character(len=sum(n) + size(lines) - 1) :: text)
         k = 0
         do i = 1, size(lines)
-            n = len_trim(lines(i))
-            text(k + 1:k + n) = lines(i)(1:n)
-            k = k + n
+            text(k + 1:k + n(i)) = lines(i)(1:n(i))
+            k = k + n(i)
             if (i < size(lines)) then
                 text(k + 1:k + 1) = new_line('a')
                 k = k + 1
