@@ -16,8 +16,7 @@
 module test_adaptive
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, LOAD_MOMENT, &
-                     complete_model
+    use model, only: model_t, load_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, complete_model
     use mesh, only: mesh_t, new_mesh
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes
     use discretization, only: discretization_t, new_discretization, discretise_mesh
@@ -57,7 +56,6 @@ contains
                  new_unittest('unresolved_moment_widened', test_unresolved_moments), &
                  new_unittest('tent_at_load_inside_element', test_tent), &
                  new_unittest('pre_asymptotic_coarse_meshes_widen', test_pre_asymptotic), &
-                 new_unittest('pre_asymptotic_at_load_inside_element', test_pre_asymptotic_load), &
                  new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
@@ -517,45 +515,6 @@ contains
         call pre_asymptotic(m, e, ec, e4, .true., .false.)
         call check(err, e(1)%error == 1.8e-7_dp, 'ratio 26: kept')
     end subroutine test_pre_asymptotic
-
-    !> An extreme at a concentrated load inside an element (error_estimate, pre_asymptotic):
-    !! the hogging moment 5.9664e-2 +- 2.5e-7 at the MOMENT load x = 0.21, with 5.9663e-2 on
-    !! N_e/2 and 5.9737e-2 on N_e/4, changes 7.4e-5 and then 1e-6, a ratio of 74 above
-    !! 2^(1 + 2) = 8 (formal order 1: a load between nodes). The estimate is at least the
-    !! coarse difference 1e-6 and, the load lying inside the element [0.2, 0.25], at least
-    !! 7.4e-5 / 4^1 = 1.85e-5 (arithmetic). With the load on the node 0.2 (and the extreme
-    !! there) only the coarse difference.
-    subroutine test_pre_asymptotic_load(err)
-        type(error_t), allocatable, intent(out) :: err
-        type(model_t) :: m
-        type(entry_t) :: e(2), e0(2), ec(2), e4(2)
-        type(scales_t) :: k
-        real(dp) :: nodes(0:40)
-        integer :: i
-        m%structure%kind = MODEL_BEAM
-        m%structure%length = 2.0_dp
-        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=-0.07_dp), &
-                   load_t(kind=LOAD_MOMENT, fz=0.1_dp, x1=0.21_dp)]
-        k = case_scale_factors(m)
-        nodes = [(-1.0_dp + 0.05_dp*i, i=0, 40)]
-        e0 = [entry_t(key='moment_hogging', value=5.9664e-2_dp, has_error=.true., &
-                      error=2.5e-7_dp), entry_t(key='moment_hogging_x', value=0.21_dp*k%length)]
-        ec = e0
-        ec(1)%value = 5.9663e-2_dp
-        e4 = e0
-        e4(1)%value = 5.9737e-2_dp
-        e = e0
-        call pre_asymptotic(m, e, ec, e4, .false., .false., nodes)
-        call check(err, abs(e(1)%error - 7.4e-5_dp/4.0_dp) <= 1.0e-12_dp, &
-                   'at the load inside an element: 1.85e-5')
-        if (allocated(err)) return
-        m%loads(2)%x1 = 0.2_dp
-        e = e0
-        e(2)%value = 0.2_dp*k%length
-        call pre_asymptotic(m, e, ec, e4, .false., .false., nodes)
-        call check(err, abs(e(1)%error - 1.0e-6_dp) <= 1.0e-12_dp, &
-                   'at a load on a node: the coarse difference 1e-6')
-    end subroutine test_pre_asymptotic_load
 
     !> An extreme moment that is not established (estimate >= its size), smaller than the
     !! opposite extreme whose estimate is at least half that extreme, is estimated as at least

@@ -18,8 +18,7 @@
 !! both estimates): the shortfall of an extreme lying between two stations, the settlement
 !! at a load inside an element, and a wider estimate for an extreme moment the meshes do not
 !! resolve. Where the mesh coarsened twice shows the coarse meshes short of the asymptotic
-!! range, the estimate is at least the coarse difference, and for an extreme at a
-!! concentrated load inside an element at least the coarsest change over 4^p (pre_asymptotic).
+!! range, the estimate is at least the coarse difference (pre_asymptotic).
 !! Measured on a reference set of 1665 results
 !! (output/bench/estimate_effectivity.md), against the estimates from coarser meshes only:
 !! the coarse meshes of N_e = 20 to 80 are short of the asymptotic range and gave estimates
@@ -114,7 +113,7 @@ contains
             call refined_estimate(m, e, fam%ec, fam%ef, extent_floors(m, d%msh, e), &
                                   fam%on_nodes, fam%edge)
             if (allocated(fam%e4)) call pre_asymptotic(m, e, fam%ec, fam%e4, fam%on_nodes, &
-                                                       fam%edge, d%msh%x)
+                                                       fam%edge)
         else
             call attach_estimates(m, e, fam%ec, fam%ef, 2.0_dp, extent_floors(m, d%msh, e), &
                                   fam%on_nodes, fam%edge)
@@ -298,27 +297,14 @@ contains
     !! mesh were inside it, is no measure of the error (a soft thick beam under a point load,
     !! P2: settlement 3.35, 2.562, 2.569, 2.570 e-4 on N_e = 5, 10, 20, 40 and 2.549e-4
     !! converged, an estimate of 1.8e-7 for an error of 2.0e-6). The estimate is then at least
-    !! the whole coarse difference |Q_c - Q|. An extreme that lies at a concentrated load
-    !! inside an element is moreover at least the error the case's mesh would have if the
-    !! change from N_e/4 to N_e/2, |Q_4 - Q_c|, were the error of N_e/4 and the values
-    !! converged at the order p from there: |Q_4 - Q_c| / 4^p (two halvings). There the finer
-    !! difference can be small by accident: the nested meshes keep the load's distance to
-    !! the node beside it (a beam with a MOMENT load between nodes, P2: hogging moment at the
-    !! load 5.9737, 5.9663, 5.9664, 5.9665 e-2 on N_e = 10, 20, 40, 80 and 5.9641e-2
-    !! converged; |Q_c - Q| = 1.6e-6 for an error of 2.3e-5; with p = 1, a load between
-    !! nodes, the second floor is 1.8e-5). For every key it was too wide (the reference set's
-    !! estimates in [0.5, 5]: 87 % instead of 91.5 %; doc/CHOICES.md, sixth revision).
-    !! Contact extents keep theirs (their floors).
-    pure subroutine pre_asymptotic(m, e, ec, e4, kinks_on_nodes, singular_edge, nodes)
+    !! the whole coarse difference |Q_c - Q|. Contact extents keep theirs (their floors).
+    pure subroutine pre_asymptotic(m, e, ec, e4, kinks_on_nodes, singular_edge)
         type(model_t), intent(in) :: m            !! the model (formal orders by its kind)
         type(entry_t), intent(inout) :: e(:)      !! key results with their estimates
         type(entry_t), intent(in) :: ec(:), e4(:) !! the keys on N_e/2 and N_e/4
         logical, intent(in) :: kinks_on_nodes     !! see formal_order
         logical, intent(in) :: singular_edge      !! see formal_order
-        !> the case's mesh nodes (0:N_e): an extreme at a concentrated load inside an element
-        !! gets the second floor
-        real(dp), intent(in), optional :: nodes(0:)
-        real(dp) :: dc, d4, p
+        real(dp) :: dc, d4
         integer :: i
         do i = 1, size(e)
             if (.not. e(i)%has_error .or. trim(e(i)%key) == 'contact_extent_t') cycle
@@ -326,38 +312,11 @@ contains
             if (.not. (ec(i)%defined .and. e4(i)%defined)) cycle
             dc = abs(compared(ec(i)) - compared(e(i)))
             d4 = abs(compared(e4(i)) - compared(ec(i)))
-            p = formal_order(m, e(i)%key, kinks_on_nodes, singular_edge)
-            if (.not. d4 > 2.0_dp**(p + 2.0_dp)*dc) cycle
+            if (.not. d4 > 2.0_dp**(formal_order(m, e(i)%key, kinks_on_nodes, &
+                                                 singular_edge) + 2.0_dp)*dc) cycle
             e(i)%error = max(e(i)%error, dc)
-            if (.not. present(nodes)) cycle
-            if (at_load_inside_element(m, e, i, nodes)) &
-                e(i)%error = max(e(i)%error, d4/4.0_dp**p)
         end do
     end subroutine pre_asymptotic
-
-    !> Whether the key result e(i) is an extreme whose place (its entry KEY_x) is a POINT,
-    !! RING or MOMENT load that lies strictly inside an element of the mesh `nodes`.
-    pure logical function at_load_inside_element(m, e, i, nodes) result(yes)
-        type(model_t), intent(in) :: m
-        type(entry_t), intent(in) :: e(:)
-        integer, intent(in) :: i
-        real(dp), intent(in) :: nodes(0:)
-        type(scales_t) :: k
-        real(dp) :: x, tol
-        integer :: j, l
-        yes = .false.
-        j = entry_index(e, trim(e(i)%key)//'_x')
-        if (j == 0) return
-        if (.not. e(j)%defined) return
-        k = case_scale_factors(m)
-        x = e(j)%value/k%length
-        tol = 1.0e-9_dp*(nodes(ubound(nodes, 1)) - nodes(0))
-        do l = 1, size(m%loads)
-            if (m%loads(l)%kind == LOAD_PATCH) cycle
-            if (abs(m%loads(l)%x1 - x) > tol) cycle
-            if (all(abs(nodes - m%loads(l)%x1) > tol)) yes = .true.
-        end do
-    end function at_load_inside_element
 
     !> Estimates of the estimated keys of e from the same keys on two coarser meshes of a
     !! nested family (e2 about N_e/ratio, e4 about N_e/ratio^2 elements); each estimate is
