@@ -89,8 +89,7 @@ contains
         if (sep == ' ') then
             write (u, '(a)') '# fricon station data: '//title
             write (u, '(a)') '# all columns nondimensional (doc/SPEC.md section 6); a station '// &
-                'at a concentrated '// &
-                'load appears twice (left and right limit)'
+                'at a concentrated load appears twice (left and right limit)'
             do c = 1, size(cols)
                 write (u, '(a,i0,a)') '# ', c, &
                     ': '//trim(cols(c)%symbol)//'  '//trim(cols(c)%meaning)
@@ -832,9 +831,8 @@ contains
         character(len=*), intent(in) :: lines(:)
         integer :: i
         write (u, '(/,a)') ' 1. INPUT ECHO'
-        write (u, '(a)') '  line |'// &
-            '....+....1....+....2....+....3....+....4....+....5....+....6'// &
-            '....+....7....+....8'
+        write (u, '(a)') '  line '// &
+            '|....+....1....+....2....+....3....+....4....+....5....+....6....+....7....+....8'
         do i = 1, size(lines)
             write (u, '(i6,a,a)') i, ' |', trim(lines(i))
         end do
@@ -941,41 +939,32 @@ contains
         integer, intent(in) :: u
         type(model_t), intent(in) :: m
         write (u, '(/,a)') ' 3. SIGN CONVENTIONS AND UNITS'
-        write (u, '(a)') '   z points down into the soil; w > 0 is settlement; x from the '// &
-            'beam centre '// &
-            '(plate: radius r).'
+        write (u, '(a)') '   z points down into the soil; w > 0 is settlement; x from the beam '// &
+            'centre (plate: radius r).'
         write (u, '(a)') '   u_s: mid-plane horizontal displacement (+x / outward); psi: '// &
-            'section '// &
-            'rotation, psi = dw/dx in the thin limit.'
+            'section rotation, psi = dw/dx in the thin limit.'
         write (u, '(a)') '   sigma_z > 0: compressive contact pressure on the soil; sigma_x: '// &
-            'shear '// &
-            'traction ON THE SOIL, +x (plate: outward);'
-        write (u, '(a)') '   the structure receives -sigma. gap = w_f - w_b >= 0; slip = u_b '// &
-            '- u_f, '// &
-            'u_b = u_s - (h/2) psi.'
+            'shear traction ON THE SOIL, +x (plate: outward);'
+        write (u, '(a)') '   the structure receives -sigma. gap = w_f - w_b >= 0; slip = u_b - '// &
+            'u_f, u_b = u_s - (h/2) psi.'
         if (m%structure%kind == MODEL_BEAM) then
-            call write_wrapped(u, '   BEAM: sigma are line loads (force/length) over the '// &
-                'width b; '// &
-                'N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh '// &
-                    '(w''-psi).')
+            call write_wrapped(u, '   BEAM: sigma are line loads (force/length) over the width '// &
+                'b; N = EA u_s'', M = EI psi'' (> 0: top fibre in tension, hogging), Q = kGbh '// &
+                '(w''-psi).')
             write (u, '(a)') '   M is the moment about the mid-plane. A MOMENT load M0 > 0 '// &
-                'turns '// &
-                'the beam clockwise as the figure draws it'
+                'turns the beam clockwise as the figure draws it'
             write (u, '(a)') '   (x to the right, w down: the +x side settles more); M drops '// &
-                'by '// &
-                'M0 across it. A horizontal load F_x'
+                'by M0 across it. A horizontal load F_x'
             write (u, '(a)') '   on the top face acts h/2 above the mid-plane: M drops by '// &
                 'F_x h/2 across it (at once at a POINT load).'
             write (u, '(a)') '   Nondimensional: t = x/l, U,W = EI u/(F l^3), Psi = EI psi/(F '// &
-                'l^2), '// &
-                'Sigma = l sigma/F, N/F, M/(F l), Q/F.'
+                'l^2), Sigma = l sigma/F, N/F, M/(F l), Q/F.'
         else
             call write_wrapped(u, '   PLATE: sigma are stresses; resultants per unit length: '// &
                 'N_r, N_theta, M_r = D(psi''+nu psi/r), M_theta = D(psi/r+nu psi'') '// &
                 '(> 0: top in tension), Q_r = kGh(w''-psi).')
             write (u, '(a)') '   Nondimensional: t = r/a, U,W = D u/(F a^2), Psi = D psi/(F '// &
-                'a), '// &
-                'Sigma = pi a^2 sigma/F, N a/F, M/F, Q a/F.'
+                'a), Sigma = pi a^2 sigma/F, N a/F, M/F, Q a/F.'
         end if
         write (u, '(a)') '   Physical units: force '//trim(m%units%force)//', length '// &
             trim(m%units%length)//trim(merge(' (labels of the NONDIM set)', &
@@ -988,15 +977,13 @@ contains
         integer :: i
         character(len=200) :: line    ! a row, written without its trailing blanks
         write (u, '(/,a)') ' 4. SOLVER LOG (outer: friction threshold tau0 <- f sigma_z; '// &
-            'inner: '// &
-            'slip / tension sets)'
+            'inner: slip / tension sets)'
         if (.not. allocated(sol%history)) then
             write (u, '(a)') '   (no iteration: the case was refused before solving)'
             return
         end if
-        write (u, '(a)') '   outer '// &
-            'inner  slip-pts  lift-pts  changed   rel.increment   rel.residual'// &
-            '  note'
+        write (u, '(a)') '   outer inner  slip-pts  lift-pts  changed   rel.increment   '// &
+            'rel.residual  note'
         do i = 1, size(sol%history)
             associate (h => sol%history(i))
                 if (h%residual >= 0.0_dp) then
@@ -1069,16 +1056,13 @@ contains
         type(model_t), intent(in) :: m
         type(station_table_t), intent(in) :: tab
         write (u, '(/,a)') '   Station values: tractions are the mean over the elements '// &
-            'meeting at '// &
-            'the station (the forces the equations carry);'
+            'meeting at the station (the forces the equations carry);'
         write (u, '(a)') '   the pointwise finite-element field is in the data files '// &
             '(Sigma_x^h, Sigma_z^h in the .dat; sigma_x_fe, sigma_z_fe in the CSV);'
         write (u, '(a)') '   states follow the solver''s interface law; gap is 0 where in '// &
-            'contact '// &
-            '(weak compatibility, see CHECKS);'
+            'contact (weak compatibility, see CHECKS);'
         write (u, '(a)') '   N, M, Q are from the statics of the part left of (inside) the '// &
-            'section; '// &
-            'a station at a concentrated load'
+            'section; a station at a concentrated load'
         write (u, '(a)') '   appears twice (left and right limit).'
         if (m%structure%kind /= MODEL_BEAM .and. any(m%loads%kind == LOAD_POINT)) call &
             write_wrapped(u, '   A POINT load on the axis makes Q_r unbounded there (Q_r = '// &
@@ -1115,9 +1099,8 @@ contains
             end if
             write (u, '(a)') trim(line)
         end do
-        if (any(e%singular .and. e%defined)) write (u, '(3x,a)') '[s] singular in the '// &
-            'model where it is taken (notes below): the mesh decides the value; no error '// &
-            'estimate'
+        if (any(e%singular .and. e%defined)) write (u, '(3x,a)') '[s] singular in the model '// &
+            'where it is taken (notes below): the mesh decides the value; no error estimate'
         if (any(e%has_error)) then
             call write_wrapped(u, '   (*) '//error_method_text(adapted))
         else
@@ -1147,17 +1130,13 @@ contains
     subroutine write_pressure_note(u)
         integer, intent(in) :: u
         write (u, '(3x,a)') 'Pressures are element means at the stations: the mean pressure '// &
-            'over '// &
-            'the elements meeting there'
+            'over the elements meeting there'
         write (u, '(3x,a)') '(the forces the equations carry; they do not alternate from node '// &
-            'to '// &
-            'node as the nodal field does near an edge or a'
+            'to node as the nodal field does near an edge or a'
         write (u, '(3x,a)') 'lift-off boundary). Where the pressure is bounded both converge '// &
-            'to '// &
-            'the same value; the pointwise finite-element'
+            'to the same value; the pointwise finite-element'
         write (u, '(3x,a)') 'field (data files) peaks higher under a concentrated load and at '// &
-            'an '// &
-            'edge in contact, where neither converges.'
+            'an edge in contact, where neither converges.'
     end subroutine write_pressure_note
 
     pure function order_text(p) result(text)
