@@ -68,9 +68,10 @@ contains
         call put_digits(buf, k, int(abs(p), int64), n_exp)
         call put_char(buf, k, merge('-', '+', p < 0))
         if (e > 0 .or. n_exp == 2) call put_char(buf, k, 'E')
-        call put_digits(buf, k, int(mod(n, pow10(d)), int64), d)
+        ! n < 10^(d+1) <= 10^18 fits in 64 bits, where dividing is not a library call
+        call put_digits(buf, k, mod(int(n, int64), int(pow10(d), int64)), d)
         call put_char(buf, k, '.')
-        call put_digits(buf, k, int(n/pow10(d), int64), 1)
+        call put_digits(buf, k, int(n, int64)/int(pow10(d), int64), 1)
         ! the sign of a negative zero is written too
         if (sign(1.0_dp, x) < 0.0_dp) call put_char(buf, k, '-')
         if (buf_len - k > w) then
@@ -177,13 +178,12 @@ contains
             ! the truncated quotient decides p; rounding it may then carry into 10^(d+1)
             call exact_ratio(x, p - d, num, den, ok)
             if (.not. ok) return
-            n = num/den
+            call divide(num, den, n, r)
             if (n >= pow10(d + 1)) then
                 p = p + 1
             else if (n < pow10(d)) then
                 p = p - 1
             else
-                r = num - n*den
                 if (2*r > den .or. (2*r == den .and. mod(n, 2_i16) == 1)) n = n + 1
                 if (n == pow10(d + 1)) then
                     n = pow10(d)
@@ -204,10 +204,26 @@ contains
         integer(i16) :: num, den, r
         call exact_ratio(x, k, num, den, ok)
         if (.not. ok) return
-        n = num/den
-        r = num - n*den
+        call divide(num, den, n, r)
         if (2*r > den .or. (2*r == den .and. mod(n, 2_i16) == 1)) n = n + 1
     end subroutine rounded_quotient
+
+    !> n = num / den truncated and the remainder r (num >= 0, den > 0). A den that is a power
+    !! of two (every number below 10^d written with d digits: den = 2^-q) is a shift: a
+    !! 128-bit division is a library call of a hundred or more instructions.
+    pure subroutine divide(num, den, n, r)
+        integer(i16), intent(in) :: num, den
+        integer(i16), intent(out) :: n, r
+        integer :: s
+        if (iand(den, den - 1_i16) == 0_i16) then
+            s = trailz(den)
+            n = shiftr(num, s)
+            r = iand(num, den - 1_i16)
+        else
+            n = num/den
+            r = num - n*den
+        end if
+    end subroutine divide
 
     !> |x| / 10^k = num / den exactly, with |x| = m 2^q (m an integer of 53 bits); ok is false
     !! where num or den would not fit in 125 bits.
