@@ -33,7 +33,7 @@
 !! it was computed with unchanged (F is then linear between the iterates and the step solves
 !! F = 0 up to the accuracy of the solve) and the residual of 4.2a is below 1e-12 of the load
 !! or no longer halves (further exact steps after an inaccurate solve). The converged solution is
-!! then held in double-double and refined with 4.2a in extended precision (refine_equilibrium: thin,
+!! then held in double-double and refined with 4.2a in double-double (refine_equilibrium: thin,
 !! stiff structures on fine meshes, whose v' in double cannot meet 4.2a to 1e-8).
 module newton_method
     use kinds, only: dp
@@ -143,7 +143,7 @@ contains
     end subroutine solve_newton
 
     !> Iterative refinement of the converged solution in double-double, z + z_lo, where its
-    !! 4.2a residual (in extended precision: equilibrium_residual) is above refine_from of
+    !! 4.2a residual (in double-double: equilibrium_residual) is above refine_from of
     !! the load: the residual solved with the Newton matrix of the final sets and the
     !! correction added to the held sum, while 4.2a is above refine_tol and halves (at most
     !! max_refine steps). A thin, stiff structure needs it: no double v' meets 4.2a better
@@ -333,7 +333,7 @@ contains
                     (all(new_code == code) .or. incr <= round_off)
             ! an exact step solves F = 0 up to the accuracy of the solve: with the merit at
             ! round-off it is the answer (4.2a of a stiff structure is refined afterwards in
-            ! extended precision: refine_equilibrium); otherwise (an inaccurate solve) further
+            ! double-double: refine_equilibrium); otherwise (an inaccurate solve) further
             ! steps, while 4.2a's residual is above refine_tol and halves
             equilibrium = maxval(abs(s%res(1:d%nv)))/max(maxval(abs(sys%q)), tiny(1.0_dp))
             converged = s%phi <= round_off .or. (exact .and. (equilibrium <= refine_tol .or. &

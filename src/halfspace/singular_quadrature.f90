@@ -157,8 +157,8 @@ contains
     end subroutine new_gauss_tables
 
     !> A copy of all GL rules and product-log weights, unpacked from the constants of
-    !! gauss_rule_tables: the numbers new_gauss_tables computes (singular_quadrature/
-    !! embedded_tables_match), embedded because computing them took 0.2 ms of every small case.
+    !! gauss_rule_tables: the numbers new_gauss_tables computes (station_displacement/
+    !! embedded_gauss_tables_match), embedded because computing them took 0.2 ms a small case.
     pure subroutine shared_gauss_tables(tab)
         type(gauss_tables_t), intent(out) :: tab   !! the rules
         integer :: n, first
