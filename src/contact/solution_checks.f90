@@ -76,7 +76,7 @@ contains
 
     !> Residuals of both equations of the complete problem (tau0 = f max(sigma_z, 0) from the
     !! final state, whatever the method), equilibrium, admissibility. 4.2a is evaluated in
-    !! extended precision for the solution as held, z + z_lo (equilibrium_residual).
+    !! double-double for the solution as held, z + z_lo (equilibrium_residual).
     subroutine final_checks(m, d, sys, sol, err)
         type(model_t), intent(in) :: m                   !! the model
         type(discretization_t), intent(in) :: d          !! the discretisation
