@@ -53,9 +53,9 @@ contains
         integer :: kind, status, j, n_before
         if (nondim) then
             call add_diagnostic(diag, line, 1, name_width, 'CHECK needs a physical deck: its '// &
-                'limits '// &
-                'are pressures, settlements and rotations in the deck''s units, and a NONDIM '// &
-                'deck''s results are nondimensional groups (give GEOMETRY, STRUCTURE and SOIL)', &
+                'limits are pressures, settlements and rotations in the deck''s units, and a '// &
+                'NONDIM deck''s results are nondimensional groups (give GEOMETRY, STRUCTURE '// &
+                'and SOIL)', &
                 trim(text))
             return
         end if

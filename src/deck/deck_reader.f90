@@ -433,8 +433,8 @@ contains
         if (line == 0) line = card_line(deck, merge('NONDIM  ', 'GEOMETRY', m%nondim))
         if (line < 1) return
         call add_diagnostic(diag, line, first, first + field_width - 1, trim(what)// &
-            ' gives a beam of width b = '// &
-                format_real(m%structure%b/m%structure%length)//' l, below the '// &
+            ' gives a beam of width b = '//format_real(m%structure%b/m%structure%length)// &
+            ' l, below the '// &
             'narrowest allowed, b = '//format_real(min_width_ratio)//' l (the soil kernel '// &
             'under a beam varies over b/2, finer than positions along the beam are resolved), '// &
             'got '//got, echo_text(deck%lines(line)))
@@ -881,10 +881,10 @@ contains
         character(len=:), allocatable :: what
         integer :: s
         what = 'GEOMETRY l or a (beam length or plate radius)'
-        if (st%kind_known .and. st%m%structure%kind == MODEL_BEAM) what = 'GEOMETRY l (length '// &
-            'of the beam)'
-        if (st%kind_known .and. st%m%structure%kind == MODEL_PLATE) what = 'GEOMETRY a '// &
-            '(radius of the plate)'
+        if (st%kind_known .and. st%m%structure%kind == MODEL_BEAM) &
+            what = 'GEOMETRY l (length of the beam)'
+        if (st%kind_known .and. st%m%structure%kind == MODEL_PLATE) &
+            what = 'GEOMETRY a (radius of the plate)'
         call take_real(st, cd, 1, what, RULE_POSITIVE, .true., st%m%structure%length, s)
         st%length_known = s == FIELD_OK
         call take_real(st, cd, 2, 'GEOMETRY h (thickness of the structure)', RULE_POSITIVE, &

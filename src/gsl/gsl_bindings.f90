@@ -39,8 +39,8 @@ module gsl_bindings
             type(c_ptr) :: gsl_strerror
         end function gsl_strerror
 
-        ! int gsl_sf_ellint_RF_e (double x, double y, double z, gsl_mode_t mode, gsl_sf_result *
-        ! result);
+        ! int gsl_sf_ellint_RF_e (double x, double y, double z, gsl_mode_t mode,
+        !                         gsl_sf_result * result);
         function gsl_sf_ellint_rf_e(x, y, z, mode, result) bind(c, name='gsl_sf_ellint_RF_e')
             import :: c_int, c_double, gsl_sf_result
             real(c_double), value :: x, y, z
@@ -49,8 +49,8 @@ module gsl_bindings
             integer(c_int) :: gsl_sf_ellint_rf_e
         end function gsl_sf_ellint_rf_e
 
-        ! int gsl_sf_ellint_RD_e (double x, double y, double z, gsl_mode_t mode, gsl_sf_result *
-        ! result);
+        ! int gsl_sf_ellint_RD_e (double x, double y, double z, gsl_mode_t mode,
+        !                         gsl_sf_result * result);
         function gsl_sf_ellint_rd_e(x, y, z, mode, result) bind(c, name='gsl_sf_ellint_RD_e')
             import :: c_int, c_double, gsl_sf_result
             real(c_double), value :: x, y, z

@@ -80,9 +80,9 @@ contains
         p = merge('p_z    ', 'sigma_z', beam)
         write (u, '(a)') '# '//run_stamp()
         write (u, '(a)') '# secant springs of this load case only (doc/OUTPUT.md): per node '// &
-            'k_v = F_z/w and k_h = F_x/u_b ('//trim(merge('the whole width b', 'the ring 2 pi '// &
-                'r  ', &
-            beam))//'), k_s = '//trim(p)//'/w; 0 where lifted off or not moving'
+            'k_v = F_z/w and k_h = F_x/u_b ('// &
+            trim(merge('the whole width b', 'the ring 2 pi r  ', beam))//'), k_s = '//trim(p)// &
+            '/w; 0 where lifted off or not moving'
         write (u, '(a)') x//' ['//trim(un%length)//'],w ['//trim(un%disp)//'],u_b ['// &
             trim(un%disp)//'],F_z ['//trim(un%force)//'],F_x ['//trim(un%force)// &
             '],k_v ['//f_l//'],k_h ['//f_l//'],'//trim(p)//' ['//trim(un%pressure)// &
