@@ -25,8 +25,8 @@
 !! listed in the third revision's table, and were not looked at while it was made.
 !! Cases 23-28 were added, given references and measured with the fourth revision before
 !! the fifth (concentrated loads between nodes) was made, and not looked at while it was
-!! made; cases 29-34 likewise with the fifth revision before the sixth. The table gives
-!! each set.
+!! made; cases 29-34 likewise with the fifth revision before the sixth, and cases 35-40 with
+!! the fifth revision (the sixth reverted) before the seventh. The table gives each set.
 !!
 !! Usage: fpm run --profile release --example estimate_effectivity -- OUT.md [LABEL [RAW
 !! [FIRST LAST]]]
@@ -55,8 +55,8 @@ program estimate_effectivity
                               estimate_family_t, formal_order, extent_floors
     implicit none
 
-    integer, parameter :: n_cases = 34, n_tuning = 6, n_held_earlier = 10, n_held_second = 16
-    integer, parameter :: n_held_fourth = 22, n_held_fifth = 28
+    integer, parameter :: n_cases = 40, n_tuning = 6, n_held_earlier = 10, n_held_second = 16
+    integer, parameter :: n_held_fourth = 22, n_held_fifth = 28, n_held_sixth = 34
     integer, parameter :: n_keys = 10
     character(len=*), parameter :: keys(n_keys) = [character(len=32) :: 'settlement_max', &
         'differential_settlement', 'contact_extent_t', 'moment_sagging', 'moment_hogging', &
@@ -190,8 +190,10 @@ contains
             call case_model_fourth(i, m, name)
         case (23:28)
             call case_model_fifth(i, m, name)
-        case default
+        case (29:34)
             call case_model_sixth(i, m, name)
+        case default
+            call case_model_seventh(i, m, name)
         end select
     end subroutine case_model
 
@@ -301,6 +303,43 @@ contains
             name = 'beam rho 0.5 f 0.4, uniform load H 0.1, moment 0.05 at x = 0.13'
         end select
     end subroutine case_model_sixth
+
+    !> Cases 35-40, the sixth held-out set (defined before the estimator's seventh revision):
+    !! point loads and moments between the nodes of UNIFORM and EDGES meshes (beam and plate),
+    !! a frictionless beam under two unequal loads, and two generic cases.
+    subroutine case_model_seventh(i, m, name)
+        integer, intent(in) :: i
+        type(model_t), intent(inout) :: m
+        character(len=*), intent(out) :: name
+        select case (i)
+        case (35)  ! a point load with H and a moment, both between nodes
+            call beam(m, 2.0e-3_dp, 0.35_dp, [load_t(kind=LOAD_POINT, fz=1.0_dp, fx=0.15_dp, &
+                x1=0.27_dp), load_t(kind=LOAD_MOMENT, fz=0.08_dp, x1=-0.33_dp)])
+            name = 'beam rho 2e-3 f 0.35, point load at x = 0.27 H 0.15, moment 0.08 at -0.33'
+        case (36)  ! ring between nodes, outer half
+            call plate(m, 5.0e-3_dp, 0.45_dp, [load_t(kind=LOAD_RING, fz=1.0_dp, x1=0.58_dp)])
+            name = 'plate rho 5e-3 f 0.45, ring r = 0.58'
+        case (37)  ! generic: thick stiff beam, long eccentric patch with H
+            m%groups%zeta = 0.3_dp
+            call beam(m, 0.2_dp, 0.25_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.1_dp, &
+                                                x1=-0.4_dp, x2=0.35_dp)])
+            name = 'beam rho 0.2 zeta 0.3 f 0.25, patch -0.4<x<0.35 H 0.1'
+        case (38)  ! generic: thin soft plate, small disk, lift-off and slip
+            m%groups%zeta = 0.05_dp
+            call plate(m, 8.0e-4_dp, 0.7_dp, [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=0.0_dp, &
+                                                      x2=0.15_dp)])
+            name = 'plate rho 8e-4 zeta 0.05 f 0.7, disk r<0.15'
+        case (39)  ! frictionless beam, two unequal point loads between nodes
+            call beam(m, 2.0e-2_dp, 0.0_dp, [load_t(kind=LOAD_POINT, fz=0.7_dp, x1=-0.37_dp), &
+                                              load_t(kind=LOAD_POINT, fz=0.3_dp, x1=0.41_dp)])
+            name = 'beam rho 2e-2 f 0, point loads 0.7 at x = -0.37 and 0.3 at 0.41'
+        case default  ! soft thick beam, a moment and a point load with H, between nodes
+            m%groups%zeta = 0.2_dp
+            call beam(m, 7.0e-4_dp, 0.5_dp, [load_t(kind=LOAD_MOMENT, fz=0.15_dp, x1=0.06_dp), &
+                load_t(kind=LOAD_POINT, fz=1.0_dp, fx=0.2_dp, x1=-0.18_dp)])
+            name = 'beam rho 7e-4 zeta 0.2 f 0.5, moment 0.15 at 0.06, point load at -0.18 H 0.2'
+        end select
+    end subroutine case_model_seventh
 
     subroutine beam(m, rho, f, loads)
         type(model_t), intent(inout) :: m
@@ -574,8 +613,10 @@ contains
         call stats_row(u, 'held out (cases 7-22)', pack(eff, group >= 2 .and. group <= 4))
         call stats_row(u, 'held out for the fifth revision (cases 23-28)', pack(eff, group == 5))
         call stats_row(u, 'held out (cases 7-28)', pack(eff, group >= 2 .and. group <= 5))
-        call stats_row(u, 'held out for a sixth revision (cases 29-34)', pack(eff, group == 6))
-        call stats_row(u, 'held out (cases 7-34)', pack(eff, group >= 2))
+        call stats_row(u, 'held out for the sixth revision (cases 29-34)', pack(eff, group == 6))
+        call stats_row(u, 'held out (cases 7-34)', pack(eff, group >= 2 .and. group <= 6))
+        call stats_row(u, 'held out for a seventh revision (cases 35-40)', pack(eff, group == 7))
+        call stats_row(u, 'held out (cases 7-40)', pack(eff, group >= 2))
         call stats_row(u, 'all', eff)
         write (u, '(a)') ''
         write (u, '(a)') 'Cases:'
@@ -595,10 +636,11 @@ contains
     end subroutine write_table
 
     !> The set of case i: 1 tuning, 2 held out by the first revision, 3 by the second, 4 by
-    !! the fourth, 5 by the fifth, 6 by the sixth.
+    !! the fourth, 5 by the fifth, 6 by the sixth, 7 by the seventh.
     pure integer function group_of(i)
         integer, intent(in) :: i
-        group_of = 6
+        group_of = 7
+        if (i <= n_held_sixth) group_of = 6
         if (i <= n_held_fifth) group_of = 5
         if (i <= n_held_fourth) group_of = 4
         if (i <= n_held_second) group_of = 3
