@@ -34,7 +34,9 @@
 !! RAW: a file for one line per result with the values the estimate is made from (the key on
 !! the case's mesh, on the nested coarser and on the bisected mesh), its reference and bar,
 !! the order cap (formal_order), the floor, the estimate, whether the friction is resolved
-!! pointwise and the key on the mesh coarsened twice, for studying estimate formulas.
+!! pointwise, the key on the mesh coarsened twice and on the meshes of N_e - 1 and N_e + 1
+!! elements (not nested) and whether every concentrated load is on a node of the case's mesh,
+!! for studying estimate formulas.
 !! The references are read from output/bench/estimate_references.txt if it exists (they do
 !! not depend on the estimator); a case without any is computed (about 3 s a case) and
 !! appended. The whole study with stored references takes about 10 s on one core.
@@ -50,7 +52,7 @@ program estimate_effectivity
     use mesh, only: mesh_t
     use mesh_refinement, only: coarsened, pinned_nodes
     use applied_loads, only: load_positions
-    use discretization, only: discretization_t, discretise_mesh
+    use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
     use error_estimate, only: estimate_errors, is_estimated, estimate_family, &
                               estimate_family_t, formal_order, extent_floors
     implicit none
@@ -98,7 +100,7 @@ program estimate_effectivity
         open (newunit=dump_unit, file=trim(dump_file), status='replace', action='write')
         dumping = .true.
         write (dump_unit, '(a)') '# case interp grading ne key q qc qf ref bar p_max floor '// &
-            'refined estimate friction_resolved q4'
+            'refined estimate friction_resolved q4 q_minus q_plus own_on_nodes minus_on plus_on'
     end if
     call start_program()
     call references(ref, bar, has_ref)
@@ -376,14 +378,16 @@ contains
 
     !> The key results of a case (ok false if it failed); estimated as the program does when
     !! estimate is true.
-    subroutine key_values(m, estimate, q, err_est, defined, singular, has_est, ok, raw)
+    subroutine key_values(m, estimate, q, err_est, defined, singular, has_est, ok, raw, on_nodes)
         type(model_t), intent(in) :: m
         logical, intent(in) :: estimate
         real(dp), intent(out) :: q(n_keys), err_est(n_keys)
         logical, intent(out) :: defined(n_keys), singular(n_keys), has_est(n_keys), ok
-        real(dp), intent(out), optional :: raw(7, n_keys)  !! qc, qf, p_max, floor, refined,
+        real(dp), intent(out), optional :: raw(8, n_keys)  !! qc, qf, p_max, floor, refined,
                                                             !! friction resolved (1) or not,
-                                                            !! q on the mesh coarsened twice
+                                                            !! q on the mesh coarsened twice,
+                                                            !! loads on the case's nodes (1)
+        logical, intent(out), optional :: on_nodes  !! every concentrated load on a node
         type(case_t) :: c
         type(error_t), allocatable :: err
         type(estimate_family_t) :: fam
@@ -398,6 +402,7 @@ contains
         call solve_case(m, c, err)
         ok = .not. allocated(err)
         if (.not. ok) return
+        if (present(on_nodes)) on_nodes = loads_on_nodes(c%model%loads, c%d%msh)
         if (present(raw)) then
             raw = -1.0_dp
             call estimate_family(c%model, c%d, c%summary%edge_in_contact, fam, c%sol%coarse, &
@@ -415,7 +420,8 @@ contains
                     if (fam%ok) raw(:, k) = [fam%ec(i)%value, fam%ef(i)%value, &
                         formal_order(c%model, keys(k), fam%on_nodes, fam%edge), floors(i), &
                         merge(1.0_dp, 0.0_dp, fam%refined), merge(1.0_dp, 0.0_dp, &
-                        c%summary%admissibility <= c%summary%admissibility_tol), q4(k)]
+                        c%summary%admissibility <= c%summary%admissibility_tol), q4(k), &
+                        merge(1.0_dp, 0.0_dp, loads_on_nodes(c%model%loads, c%d%msh))]
                     if (fam%ok .and. trim(keys(k)) == 'shear_force_max') &
                         raw(1:2, k) = abs(raw(1:2, k))
                 end if
@@ -549,8 +555,8 @@ contains
         real(dp), allocatable, intent(out) :: eff(:)
         integer, allocatable, intent(out) :: group(:)
         character(len=200), allocatable, intent(out) :: rows(:)
-        real(dp) :: q(n_keys), est(n_keys), true_error, raw(7, n_keys)
-        logical :: def(n_keys), sing(n_keys), has_est(n_keys), ok
+        real(dp) :: q(n_keys), est(n_keys), true_error, raw(8, n_keys), qn(n_keys, 2)
+        logical :: def(n_keys), sing(n_keys), has_est(n_keys), ok, on_n(2)
         character(len=200) :: row
         integer :: i, a, g, n, k
         allocate (eff(0), group(0), rows(0))
@@ -561,6 +567,7 @@ contains
                         call key_values(discretised(i, interps(a), gradings(g), ne_tested(n)), &
                                         .true., q, est, def, sing, has_est, ok, raw)
                         if (.not. ok) cycle
+                        if (dumping) call neighbour_values(i, a, g, ne_tested(n), qn, on_n)
                         do k = 1, n_keys
                             if (.not. (has_est(k) .and. has_ref(k, i))) cycle
                             true_error = abs(q(k) - ref(k, i))
@@ -573,9 +580,11 @@ contains
                                 true_error, est(k), est(k)/true_error
                             if (dumping) write (dump_unit, &
                                 '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,'// &
-                                'es12.4,f4.0,es24.15)') &
+                                'es12.4,f4.0,3es24.15,3f4.0)') &
                                 i, interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
-                                raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), raw(6:7, k)
+                                raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), &
+                                raw(6:7, k), qn(k, :), raw(8, k), &
+                                merge(1.0_dp, 0.0_dp, on_n)
                             eff = [eff, est(k)/true_error]
                             group = [group, group_of(i)]
                             rows = [rows, row]
@@ -585,6 +594,23 @@ contains
             end do
         end do
     end subroutine measure_all
+
+    !> The key results of case i on the meshes of N_e - 1 and N_e + 1 elements of the same
+    !! interpolation and grading (not nested in the case's; 0 where a solve failed).
+    subroutine neighbour_values(i, a, g, ne, qn, on)
+        integer, intent(in) :: i, a, g, ne
+        real(dp), intent(out) :: qn(n_keys, 2)
+        logical, intent(out) :: on(2)   !! every concentrated load on a node of that mesh
+        real(dp) :: e(n_keys)
+        logical :: def(n_keys), sing(n_keys), he(n_keys), ok
+        integer :: j
+        on = .false.
+        do j = 1, 2
+            call key_values(discretised(i, interps(a), gradings(g), ne + 2*j - 3), .false., &
+                            qn(:, j), e, def, sing, he, ok, on_nodes=on(j))
+            if (.not. ok) qn(:, j) = 0.0_dp
+        end do
+    end subroutine neighbour_values
 
     !> The effectivity table: per set and in all, the count, median, 10th and 90th
     !! percentiles and the fractions outside the bands; then every row.
