@@ -641,7 +641,7 @@ contains
         call stats_row(u, 'held out (cases 7-28)', pack(eff, group >= 2 .and. group <= 5))
         call stats_row(u, 'held out for the sixth revision (cases 29-34)', pack(eff, group == 6))
         call stats_row(u, 'held out (cases 7-34)', pack(eff, group >= 2 .and. group <= 6))
-        call stats_row(u, 'held out for a seventh revision (cases 35-40)', pack(eff, group == 7))
+        call stats_row(u, 'held out for the seventh revision (cases 35-40)', pack(eff, group == 7))
         call stats_row(u, 'held out (cases 7-40)', pack(eff, group >= 2))
         call stats_row(u, 'all', eff)
         write (u, '(a)') ''
