@@ -726,9 +726,10 @@ contains
         call stats_row(u, 'held out (cases 7-34)', pack(eff, group >= 2 .and. group <= 6))
         call stats_row(u, 'held out for the seventh revision (cases 35-40)', pack(eff, group == 7))
         call stats_row(u, 'held out (cases 7-40)', pack(eff, group >= 2 .and. group <= 7))
-        call stats_row(u, 'held out for an eighth revision (cases 41-46)', pack(eff, group == 8))
+        call stats_row(u, 'held out after the seventh revision (cases 41-46)', &
+                       pack(eff, group == 8))
         call stats_row(u, 'held out (cases 7-46)', pack(eff, group >= 2 .and. group <= 8))
-        call stats_row(u, 'held out for an eighth revision, second set (cases 47-52)', &
+        call stats_row(u, 'held out after the seventh revision, second set (cases 47-52)', &
                        pack(eff, group == 9))
         call stats_row(u, 'held out (cases 7-52)', pack(eff, group >= 2))
         call stats_row(u, 'all', eff)

@@ -86,7 +86,7 @@ contains
                'the meshes of N_e - 1 and N_e + 1 elements (same grading, the loads on nodes '// &
                'alike). Where the refined case does not fit in memory: the coarse meshes '// &
                'N_e/2, N_e/4 with Roache''s GCI. Measured: 0.5 to 5 times the true error for '// &
-               '91.6 % of 6993 results, below 0.2 times for 1 (doc/OUTPUT.md)'
+               '92.3 % of 9201 results, below 0.2 times for 3 (doc/OUTPUT.md)'
     end function error_method_text
 
     !> The report's lines on the adaptation.

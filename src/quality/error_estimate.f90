@@ -22,8 +22,8 @@
 !! concentrated load lies inside the base, the estimate is at least half the change to the
 !! meshes of N_e - 1 and N_e + 1 elements of the same grading (neighbour_floor): nested
 !! meshes keep the load's place in its element, and an error tied to that place does not
-!! show in them. Measured on 40 cases, 6993 results (output/bench/estimate_effectivity.md):
-!! 91.6 % within 0.5 to 5 times the true error, one below 0.2; the estimates from coarser
+!! show in them. Measured on 52 cases, 9201 results (output/bench/estimate_effectivity.md):
+!! 92.3 % within 0.5 to 5 times the true error, three below 0.2; the estimates from coarser
 !! meshes only gave 0.3 to 50 times the error (10th to 90th percentile).
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
