@@ -24,7 +24,7 @@ module test_adaptive
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
     use error_estimate, only: formal_order, extent_floors, pre_asymptotic, neighbour_floor, &
-                              neighbour_t, estimate_errors
+                              neighbour_t, estimate_errors, same_load_nodes
     use extreme_estimates, only: parabola_excess, tent_height, add_sampling_errors, &
                                  widen_unresolved_moments
     use station_results, only: station_table_t
@@ -59,6 +59,7 @@ contains
                  new_unittest('tent_at_load_inside_element', test_tent), &
                  new_unittest('pre_asymptotic_coarse_meshes_widen', test_pre_asymptotic), &
                  new_unittest('neighbour_floor_half_difference', test_neighbour_floor), &
+                 new_unittest('neighbours_load_by_load', test_same_load_nodes), &
                  new_unittest('neighbours_see_moment_load_place', test_neighbours_moment_load), &
                  new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
@@ -523,8 +524,8 @@ contains
     !> The estimate is at least half the change to a neighbouring mesh (error_estimate,
     !! neighbour_floor; arithmetic): a hogging moment 5.9664e-2 +- 2.5e-6 that is 5.9695e-2
     !! on one neighbour and 5.96542e-2 on the other gets +- 1.55e-5 (half of 3.1e-5, the larger
-    !! change); an undefined neighbour value, a smaller change and a key without an estimate
-    !! change nothing.
+    !! change); an undefined neighbour value, a smaller change, a key without an estimate and
+    !! another key at the same place of a neighbour's list change nothing.
     subroutine test_neighbour_floor(err)
         type(error_t), allocatable, intent(out) :: err
         type(entry_t) :: e(2)
@@ -551,7 +552,37 @@ contains
         e(1)%error = 2.0e-5_dp
         call neighbour_floor(e, en)
         call check(err, e(1)%error == 2.0e-5_dp, 'a smaller change keeps the estimate')
+        if (allocated(err)) return
+        ! a neighbour whose entries come in another order (or fewer) is compared key by key
+        ! only: its sagging moment at position 1 is not compared with the hogging one
+        e(1)%error = 2.5e-6_dp
+        en(2)%e = [entry_t(key='moment_sagging', value=1.0_dp, defined=.true.)]
+        call neighbour_floor(e, en(2:2))
+        call check(err, e(1)%error == 2.5e-6_dp, 'another key at the same place is not compared')
     end subroutine test_neighbour_floor
+
+    !> Which neighbouring meshes are compared (error_estimate, same_load_nodes; counted by
+    !! hand): on [-0.5, 0.5] with 40 uniform elements (nodes at multiples of 0.025) a load at 0
+    !! is on a node and one at 0.21 inside an element; with 41 elements both are inside (0 is
+    !! mid-element, 0.21 is not a multiple of 1/41): with both loads the meshes differ, with
+    !! the load at 0.21 alone they agree, and a mesh agrees with itself.
+    subroutine test_same_load_nodes(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(mesh_t) :: m40, m41
+        type(error_t), allocatable :: mesh_err
+        call new_mesh(m40, -0.5_dp, 0.5_dp, 40, 'UNIFORM', mesh_err)
+        call new_mesh(m41, -0.5_dp, 0.5_dp, 41, 'UNIFORM', mesh_err)
+        m%loads = [load_t(kind=LOAD_POINT, fz=1.0_dp, x1=0.0_dp), &
+                   load_t(kind=LOAD_MOMENT, fz=0.1_dp, x1=0.21_dp)]
+        call check(err, .not. same_load_nodes(m, m40, m41), &
+                   'the load at 0 is on a node of 40 elements, not of 41')
+        if (allocated(err)) return
+        call check(err, same_load_nodes(m, m40, m40), 'a mesh agrees with itself')
+        if (allocated(err)) return
+        m%loads = [load_t(kind=LOAD_MOMENT, fz=0.1_dp, x1=0.21_dp)]
+        call check(err, same_load_nodes(m, m40, m41), 'the load at 0.21 is inside on both')
+    end subroutine test_same_load_nodes
 
     !> A moment load inside an element (a soft thick beam, point load 1 at x = -0.07 l and a
     !! moment 0.1 F l at 0.21 l, rho = 1e-2, zeta = 0.2, f = 0.4; P2 UNIFORM N_e = 40): the
