@@ -26,7 +26,7 @@ module discretization
         integer, allocatable :: fixed(:)
     end type discretization_t
 
-    public :: new_discretization, discretise_mesh, locate_element, loads_on_nodes
+    public :: new_discretization, discretise_mesh, locate_element, loads_on_nodes, card_mesh
     public :: fewest_elements
 
 contains
@@ -37,13 +37,23 @@ contains
         type(discretization_t), intent(out) :: d         !! the discretisation
         type(error_t), allocatable, intent(out) :: err   !! allocated on failure
         type(mesh_t) :: msh
-        real(dp) :: x_left, x_right
 
-        call interface_ends(m%structure, x_left, x_right)
-        call new_mesh(msh, x_left, x_right, m%mesh%ne, m%mesh%grading, err, load_positions(m%loads))
+        call card_mesh(m, m%mesh%ne, msh, err)
         if (allocated(err)) return
         call discretise_mesh(m, msh, d)
     end subroutine new_discretization
+
+    !> The mesh of the model's MESH card with ne elements: its grading over the interface
+    !! (LOADS: a node at every load position and patch edge).
+    subroutine card_mesh(m, ne, msh, err)
+        type(model_t), intent(in) :: m                   !! the model
+        integer, intent(in) :: ne                        !! number of elements
+        type(mesh_t), intent(out) :: msh                 !! the mesh
+        type(error_t), allocatable, intent(out) :: err   !! allocated on failure
+        real(dp) :: x_left, x_right
+        call interface_ends(m%structure, x_left, x_right)
+        call new_mesh(msh, x_left, x_right, ne, m%mesh%grading, err, load_positions(m%loads))
+    end subroutine card_mesh
 
     !> The fewest elements the model's MESH grading can make: one per piece between the load
     !! positions for LOADS, else 1 (the deck reader checks N_e against it).

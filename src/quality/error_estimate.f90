@@ -40,11 +40,11 @@ module error_estimate
     use errors, only: error_t
     use model, only: model_t, LOAD_PATCH
     use shape_functions, only: INTERP_P1
-    use mesh, only: mesh_t, new_mesh
+    use mesh, only: mesh_t
     use mesh_refinement, only: coarsened, pinned_nodes, bisected, same_nodes
     use applied_loads, only: load_positions
     use foundation_structure, only: interface_ends
-    use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
+    use discretization, only: discretization_t, discretise_mesh, loads_on_nodes, card_mesh
     use contact_solver, only: solution_t, solve_contact, coarse_solution_t
     use summary_table, only: entry_t, entry_index
     use case_scales, only: scales_t, case_scale_factors
@@ -230,13 +230,11 @@ contains
         call interface_ends(m%structure, x_left, x_right)
         if (.not. any(m%loads%kind /= LOAD_PATCH .and. m%loads%x1 > x_left .and. &
                       m%loads%x1 < x_right)) return
-        call new_mesh(own, x_left, x_right, msh%ne, m%mesh%grading, err, &
-                      load_positions(m%loads))
+        call card_mesh(m, msh%ne, own, err)
         if (allocated(err)) return
         if (.not. same_nodes(own%x, msh%x)) return
         do step = -1, 1, 2
-            call new_mesh(other, x_left, x_right, msh%ne + step, m%mesh%grading, err, &
-                          load_positions(m%loads))
+            call card_mesh(m, msh%ne + step, other, err)
             if (allocated(err)) cycle
             if (.not. same_load_nodes(m, other, msh)) cycle
             call mesh_entries(m, other, none, en, ok, cache)
