@@ -40,8 +40,9 @@
 !! the case's mesh, on the nested coarser and on the bisected mesh), its reference and bar,
 !! the order cap (formal_order), the floor, the estimate, whether the friction is resolved
 !! pointwise, the key on the mesh coarsened twice and on the meshes of N_e - 1 and N_e + 1
-!! elements (not nested) and whether every concentrated load is on a node of the case's mesh,
-!! for studying estimate formulas.
+!! elements (not nested), whether every concentrated load is on a node of the case's mesh and
+!! the key on 4 N_e elements (the eighth revision's solve on meshes of up to 20 elements; -1
+!! where it is not made), for studying estimate formulas.
 !! The references are read from output/bench/estimate_references.txt if it exists (they do
 !! not depend on the estimator); a case without any is computed (about 3 s a case) and
 !! appended. The whole study (52 cases) with stored references takes about 35 s on two cores.
@@ -106,7 +107,8 @@ program estimate_effectivity
         open (newunit=dump_unit, file=trim(dump_file), status='replace', action='write')
         dumping = .true.
         write (dump_unit, '(a)') '# case interp grading ne key q qc qf ref bar p_max floor '// &
-            'refined estimate friction_resolved q4 q_minus q_plus own_on_nodes minus_on plus_on'
+            'refined estimate friction_resolved q4 q_minus q_plus own_on_nodes minus_on plus_on '// &
+            'q_4f'
     end if
     call start_program()
     call references(ref, bar, has_ref)
@@ -509,10 +511,11 @@ contains
         logical, intent(in) :: estimate
         real(dp), intent(out) :: q(n_keys), err_est(n_keys)
         logical, intent(out) :: defined(n_keys), singular(n_keys), has_est(n_keys), ok
-        real(dp), intent(out), optional :: raw(8, n_keys)  !! qc, qf, p_max, floor, refined,
+        real(dp), intent(out), optional :: raw(9, n_keys)  !! qc, qf, p_max, floor, refined,
                                                             !! friction resolved (1) or not,
                                                             !! q on the mesh coarsened twice,
-                                                            !! loads on the case's nodes (1)
+                                                            !! loads on the case's nodes (1),
+                                                            !! q on 4 N_e (-1: not solved)
         logical, intent(out), optional :: on_nodes  !! every concentrated load on a node
         type(case_t) :: c
         type(error_t), allocatable :: err
@@ -543,13 +546,14 @@ contains
             do k = 1, n_keys
                 if (trim(c%entries(i)%key) /= trim(keys(k))) cycle
                 if (present(raw)) then
-                    if (fam%ok) raw(:, k) = [fam%ec(i)%value, fam%ef(i)%value, &
+                    if (fam%ok) raw(1:8, k) = [fam%ec(i)%value, fam%ef(i)%value, &
                         formal_order(c%model, keys(k), fam%on_nodes, fam%edge), floors(i), &
                         merge(1.0_dp, 0.0_dp, fam%refined), merge(1.0_dp, 0.0_dp, &
                         c%summary%admissibility <= c%summary%admissibility_tol), q4(k), &
                         merge(1.0_dp, 0.0_dp, loads_on_nodes(c%model%loads, c%d%msh))]
+                    if (allocated(fam%e4f)) raw(9, k) = fam%e4f(i)%value
                     if (fam%ok .and. trim(keys(k)) == 'shear_force_max') &
-                        raw(1:2, k) = abs(raw(1:2, k))
+                        raw([1, 2, 9], k) = abs(raw([1, 2, 9], k))
                 end if
                 q(k) = c%entries(i)%value
                 if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))
@@ -681,7 +685,7 @@ contains
         real(dp), allocatable, intent(out) :: eff(:)
         integer, allocatable, intent(out) :: group(:)
         character(len=200), allocatable, intent(out) :: rows(:)
-        real(dp) :: q(n_keys), est(n_keys), true_error, raw(8, n_keys), qn(n_keys, 2)
+        real(dp) :: q(n_keys), est(n_keys), true_error, raw(9, n_keys), qn(n_keys, 2)
         logical :: def(n_keys), sing(n_keys), has_est(n_keys), ok, on_n(2)
         character(len=200) :: row
         integer :: i, a, g, n, k
@@ -706,11 +710,11 @@ contains
                                 true_error, est(k), est(k)/true_error
                             if (dumping) write (dump_unit, &
                                 '(i3,1x,a2,1x,a7,i5,1x,a24,5es24.15,2es12.4,f4.0,'// &
-                                'es12.4,f4.0,3es24.15,3f4.0)') &
+                                'es12.4,f4.0,3es24.15,3f4.0,es24.15)') &
                                 i, interp_names(a), gradings(g), ne_tested(n), keys(k), q(k), &
                                 raw(1:2, k), ref(k, i), bar(k, i), raw(3:5, k), est(k), &
                                 raw(6:7, k), qn(k, :), raw(8, k), &
-                                merge(1.0_dp, 0.0_dp, on_n)
+                                merge(1.0_dp, 0.0_dp, on_n), raw(9, k)
                             eff = [eff, est(k)/true_error]
                             group = [group, group_of(i)]
                             rows = [rows, row]
