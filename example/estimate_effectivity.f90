@@ -799,9 +799,9 @@ contains
             'error; '// &
             'reference bar <= 0.2 of the error)'
         write (u, '(a)') ''
-        write (u, '(a)') '| set | results | median | 10th pct | 90th pct | < 0.2 | < 0.5 | '// &
-            'in [0.5, 5] | > 3 | > 5 | > 10 |'
-        write (u, '(a)') '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|'
+        write (u, '(a)') '| set | results | median | 10th pct | 90th pct | lowest | '// &
+            'number < 0.2 | < 0.2 | < 0.5 | in [0.5, 5] | > 3 | > 5 | > 10 |'
+        write (u, '(a)') '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|'
         call stats_row(u, 'tuning (cases 1-6)', pack(eff, group == 1))
         call stats_row(u, 'held out, earlier (cases 7-10)', pack(eff, group == 2))
         call stats_row(u, 'held out, new (cases 11-16)', pack(eff, group == 3))
@@ -820,7 +820,7 @@ contains
         call stats_row(u, 'held out after the seventh revision, second set (cases 47-52)', &
                        pack(eff, group == 9))
         call stats_row(u, 'held out (cases 7-52)', pack(eff, group >= 2 .and. group <= 9))
-        call stats_row(u, 'held out for an eighth revision (cases 53-58)', pack(eff, group == 10))
+        call stats_row(u, 'held out for the eighth revision (cases 53-58)', pack(eff, group == 10))
         call stats_row(u, 'held out (cases 7-58)', pack(eff, group >= 2 .and. group <= 10))
         call stats_row(u, 'held out after the eighth revision (cases 59-64)', &
                        pack(eff, group == 11))
@@ -877,8 +877,9 @@ contains
         n = size(x)
         if (n == 0) return
         s = sorted(x)
-        write (u, '(a,i0,3(a,f8.3),6(a,f6.1,a),a)') '| '//name//' | ', n, ' | ', &
+        write (u, '(a,i0,4(a,f8.3),a,i0,6(a,f6.1,a),a)') '| '//name//' | ', n, ' | ', &
             percentile(s, 0.5_dp), ' | ', percentile(s, 0.1_dp), ' | ', percentile(s, 0.9_dp), &
+            ' | ', s(1), ' | ', count(x < 0.2_dp), &
             ' | ', pct(count(x < 0.2_dp), n), ' %', ' | ', pct(count(x < 0.5_dp), n), ' %', &
             ' | ', pct(count(x >= 0.5_dp .and. x <= 5.0_dp), n), ' %', &
             ' | ', pct(count(x > 3.0_dp), n), ' %', ' | ', pct(count(x > 5.0_dp), n), ' %', &
