@@ -107,8 +107,8 @@ program estimate_effectivity
         open (newunit=dump_unit, file=trim(dump_file), status='replace', action='write')
         dumping = .true.
         write (dump_unit, '(a)') '# case interp grading ne key q qc qf ref bar p_max floor '// &
-            'refined estimate friction_resolved q4 q_minus q_plus own_on_nodes minus_on plus_on '// &
-            'q_4f'
+            'refined estimate friction_resolved q4 q_minus q_plus own_on_nodes minus_on '// &
+            'plus_on q_4f'
     end if
     call start_program()
     call references(ref, bar, has_ref)

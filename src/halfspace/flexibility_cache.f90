@@ -27,12 +27,13 @@ module flexibility_cache
     private
     public :: flexibility_of, new_flexibility_cache, flexibility_cache_hits
 
-    !> a case's mesh and its estimate's meshes (N_e/2, N_e/4, 2 N_e, and N_e - 1 and N_e + 1
-    !! with a concentrated load inside the base: six), for up to four grounds (or beam widths)
-    !! of a sweep: a sweep over two grounds, such as the 1000-case benchmark, needs six to
-    !! twelve, and four entries evicted each before its next use. At most 24 T of 600^2
-    !! numbers: 69 MB
-    integer, parameter :: max_entries = 24
+    !> a case's mesh and its estimate's meshes (N_e/2, N_e/4, 2 N_e, N_e - 1 and N_e + 1 with
+    !! a concentrated load inside the base, and 4 N_e where N_e <= 20: up to seven), for up
+    !! to four grounds (or beam widths) of a sweep: a sweep over two grounds, such as the
+    !! 1000-case benchmark, needs six to fourteen, and four entries evicted each before its
+    !! next use. At most 28 T of 600^2 numbers: 81 MB (the seventh mesh is one of at most 80
+    !! elements)
+    integer, parameter :: max_entries = 28
     integer, parameter :: max_unknowns = 600   !! tractions (nr); T of nr^2 numbers
 
     !> What T depends on.

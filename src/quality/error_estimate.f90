@@ -25,13 +25,13 @@
 !! show in them. Where the case's mesh has at most 20 elements, it is also solved on the
 !! mesh cut in two twice (4 N_e), and each estimate is at least the key's change to it
 !! (twice_refined_floor): on the coarsest meshes N_e/4 to 2 N_e can stall before the values
-!! fall further. Measured on 52 cases, 9201 results (output/bench/estimate_effectivity.md):
-!! 92.3 % within 0.5 to 5 times the true error, three below 0.2; the estimates from coarser
+!! fall further. Measured on 64 cases, 11335 results (output/bench/estimate_effectivity.md):
+!! 92.9 % within 0.5 to 5 times the true error, none below 0.2; the estimates from coarser
 !! meshes only gave 0.3 to 50 times the error (10th to 90th percentile).
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
-!! start) and costs 2 to 4 times the case, the two neighbours about one case each
-!! (output/bench/estimate_cost.md). Where
+!! start) and costs 2 to 4 times the case, the two neighbours about one case each, the solve
+!! on 4 N_e about three (output/bench/estimate_cost.md). Where
 !! the refined case would not fit in memory (resource_limits), the estimate falls back to the
 !! coarse family alone: N_e/2 and N_e/4 (every other node removed, twice) with Roache's grid
 !! convergence index, E = 1.25 |Q_2 - Q_1| / (2^p - 1), p observed and capped by
