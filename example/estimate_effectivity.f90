@@ -33,8 +33,10 @@
 !! first run with the eighth. The table gives each set.
 !!
 !! Usage: fpm run --profile release --example estimate_effectivity -- OUT.md [LABEL [RAW
-!! [FIRST LAST]]]
-!! FIRST, LAST: measure only cases FIRST to LAST (RAW '-': no raw file).
+!! [FIRST LAST [NE]]]]
+!! FIRST, LAST: measure only cases FIRST to LAST (RAW '-': no raw file). NE: measure only
+!! meshes of NE elements (default 20, 40 and 80; the table's sets and figures are then
+!! those of that mesh alone).
 !! RAW: a file for one line per result with the values the estimate is made from (the key on
 !! the case's mesh, on the nested coarser and on the bisected mesh), its reference and bar,
 !! the order cap (formal_order), the floor, the estimate, whether the friction is resolved
@@ -71,7 +73,8 @@ program estimate_effectivity
         'differential_settlement', 'contact_extent_t', 'moment_sagging', 'moment_hogging', &
         'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim', &
         'pressure_centre', 'shear_force_max']
-    integer, parameter :: ne_tested(3) = [20, 40, 80]
+    !> the case meshes measured (the sixth argument replaces them by one)
+    integer, allocatable :: ne_tested(:)
     character(len=*), parameter :: gradings(3) = [character(len=8) :: 'UNIFORM', 'EDGES', &
                                                   'LOADS']
     integer, parameter :: interps(3) = [INTERP_P1, INTERP_P2, INTERP_S2]
@@ -101,6 +104,12 @@ program estimate_effectivity
         read (arg, *) first_case
         call get_command_argument(5, arg)
         read (arg, *) last_case
+    end if
+    ne_tested = [20, 40, 80]
+    if (command_argument_count() >= 6) then
+        call get_command_argument(6, arg)
+        ne_tested = [0]
+        read (arg, *) ne_tested(1)
     end if
     if (command_argument_count() >= 3) call get_command_argument(3, dump_file)
     if (command_argument_count() >= 3 .and. trim(dump_file) /= '-') then
