@@ -601,9 +601,12 @@ contains
                         merge(1.0_dp, 0.0_dp, fam%refined), merge(1.0_dp, 0.0_dp, &
                         c%summary%admissibility <= c%summary%admissibility_tol), q4(k), &
                         merge(1.0_dp, 0.0_dp, loads_on_nodes(c%model%loads, c%d%msh))]
-                    if (allocated(fam%e4f)) raw(9, k) = fam%e4f(i)%value
                     if (fam%ok .and. trim(keys(k)) == 'shear_force_max') &
-                        raw([1, 2, 9], k) = abs(raw([1, 2, 9], k))
+                        raw(1:2, k) = abs(raw(1:2, k))
+                    if (allocated(fam%e4f)) then
+                        raw(9, k) = fam%e4f(i)%value
+                        if (trim(keys(k)) == 'shear_force_max') raw(9, k) = abs(raw(9, k))
+                    end if
                 end if
                 q(k) = c%entries(i)%value
                 if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))

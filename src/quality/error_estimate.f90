@@ -128,7 +128,7 @@ contains
         !! (extreme_estimates)
         type(station_table_t), intent(in), optional :: design
         type(estimate_family_t) :: fam
-        logical :: edge
+        logical :: edge, floored
         edge = .false.
         if (present(edge_in_contact)) edge = edge_in_contact
         call estimate_family(m, d, edge, fam, known, cache, solution)
@@ -146,9 +146,11 @@ contains
         call widen_unresolved_moments(e)
         ! after the moment rule, as measured (output/bench/estimate_effectivity.md): a moment
         ! the neighbours raise above its size is not widened further
+        floored = allocated(fam%e4f)
+        if (allocated(fam%en)) floored = floored .or. size(fam%en) > 0
         if (allocated(fam%en)) call neighbour_floor(e, fam%en)
         if (allocated(fam%e4f)) call twice_refined_floor(e, fam%e4f)
-        if (allocated(fam%en) .or. allocated(fam%e4f)) call liftoff_estimates(m, e)
+        if (floored) call liftoff_estimates(m, e)
     end subroutine estimate_errors
 
     !> The key results of the case on the meshes its estimate compares (module header): the
