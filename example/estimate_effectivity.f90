@@ -46,7 +46,7 @@
 !! where it is not made), for studying estimate formulas.
 !! The references are read from output/bench/estimate_references.txt if it exists (they do
 !! not depend on the estimator); a case without any is computed (about 3 s a case) and
-!! appended. The whole study (52 cases) with stored references takes about 35 s on two cores.
+!! appended. The whole study (64 cases) with stored references takes about 50 s on two cores.
 program estimate_effectivity
     use kinds, only: dp
     use errors, only: error_t

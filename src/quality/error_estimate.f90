@@ -322,8 +322,8 @@ contains
     !! the meshes N_e/4 to 2 N_e can show a sequence that stalls before it falls further
     !! (a stiff beam in full contact whose slip zone at one end grows from one node on N_e
     !! = 20 to two on 40 and four on 80: differential settlement 3.6467, 3.6440, 3.6419,
-    !! then 3.6088 e-2 on N_e = 10 to 80, converged 3.5966; the estimate on 20 was a ninth
-    !! of the error); the solve on 4 N_e sees the fall.
+    !! then 3.6088 e-2 on N_e = 10 to 80, converged 3.5966; the meshes up to 2 N_e alone
+    !! estimate a ninth of the error on 20); the solve on 4 N_e sees the fall.
     pure subroutine twice_refined_floor(e, e4f)
         type(entry_t), intent(inout) :: e(:)       !! key results with their estimates
         type(entry_t), intent(in) :: e4f(:)        !! the same keys on 4 N_e elements
