@@ -17,7 +17,7 @@ module html_record
     use case_scales, only: units_t, case_units
     use design_summary, only: summary_t
     use design_checks, only: design_check_t, evaluate_design_checks
-    use method_notes, only: error_method_text
+    use method_notes, only: error_method_text, no_estimate_reason
     use run_identity, only: program_name, program_version, run_time
     use base64_encoding, only: base64_encoded
     use html_text, only: escaped, html_number, html_unit, cell, head_cell, table_row, &
@@ -239,9 +239,8 @@ contains
             write (u, '(a)') '<p class="small">'// &
                 escaped(error_method_text(.false.))//'</p>'
         else
-            write (u, '(a)') '<p class="small">No error estimate: it needs N_e &#8805; 16 '// &
-                '(two coarser meshes of at least 4 elements) and coarse solves that '// &
-                'converge, and is not made with --no-estimates.</p>'
+            write (u, '(a)') '<p class="small">No error estimate: '// &
+                escaped(no_estimate_reason())//', and is not made with --no-estimates.</p>'
         end if
         if (any(e%singular .and. e%defined)) write (u, '(a)') '<p class="small">Singular: '// &
             'unbounded in the model where it is taken (an edge in contact, a concentrated '// &

@@ -28,7 +28,8 @@ module report_writer
                                 line_length
     use summary_table, only: entry_t
     use adaptive_solve, only: adaptation_t
-    use method_notes, only: simplification_text, error_method_text, adaptation_lines
+    use method_notes, only: simplification_text, error_method_text, adaptation_lines, &
+                            no_estimate_reason
     use ground_text, only: layered, ground_model_words, write_layer_table, ground_csv_line, &
                            ground_json, write_ground_figure_settings, gp_number
     use run_identity, only: program_name, program_version, run_time, run_stamp
@@ -1109,8 +1110,7 @@ contains
         if (any(e%has_error)) then
             call write_wrapped(u, '   (*) '//error_method_text(adapted))
         else
-            write (u, '(3x,a)') '(*) no error estimate: it needs N_e >= 16 (two coarser meshes '// &
-                'of at least 4 elements) and coarse solves that converge'
+            call write_wrapped(u, '   (*) no error estimate: '//no_estimate_reason())
         end if
         call write_intervals(u, m, s%intervals, s%slip_intervals)
         call write_pressure_note(u)

@@ -22,10 +22,10 @@
 !! concentrated load lies inside the base, the estimate is at least half the change to the
 !! meshes of N_e - 1 and N_e + 1 elements of the same grading (neighbour_floor): nested
 !! meshes keep the load's place in its element, and an error tied to that place does not
-!! show in them. Where the case's mesh has at most 20 elements, it is also solved on the
+!! show in them. Where the case's mesh has at most 64 elements, it is also solved on the
 !! mesh cut in two twice (4 N_e), and each estimate is at least the key's change to it
-!! (twice_refined_floor): on the coarsest meshes N_e/4 to 2 N_e can stall before the values
-!! fall further. Measured on 64 cases, 11335 results (output/bench/estimate_effectivity.md):
+!! (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall before the values fall
+!! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements). Measured on 64 cases, 11335 results (output/bench/estimate_effectivity.md):
 !! 92.9 % within 0.5 to 5 times the true error, none below 0.2; the estimates from coarser
 !! meshes only gave 0.3 to 50 times the error (10th to 90th percentile).
 !!
@@ -66,15 +66,19 @@ module error_estimate
         'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim', &
         'pressure_centre', 'shear_force_max']
     integer, parameter :: min_coarse_elements = 4
+    !> the smallest case mesh that gets an estimate: its mesh coarsened twice (N_e/4, the
+    !! pre-asymptotic check) has min_coarse_elements; measured on 10 elements the estimates
+    !! fell to 0.025 of the error (output/bench/estimate_effectivity_other_meshes.md)
+    integer, parameter, public :: min_estimate_elements = 4*min_coarse_elements
     !> the observed order credited lies in [p_low, p_high] (and at most the formal order)
     real(dp), parameter :: p_low = 1.0_dp, p_high = 2.0_dp
     !> the coarse difference's share of the estimate's floor, |Q_c - Q_1| / coarse_share
     real(dp), parameter :: coarse_share = 4.0_dp
     !> Roache's factor of safety on a Richardson estimate with an observed order
     real(dp), parameter :: safety = 1.25_dp
-    !> the largest case mesh also solved on 4 N_e elements (twice_refined_entries): an
-    !! N_e = 80 solve costs a few milliseconds
-    integer, parameter :: twice_refined_max = 20
+    !> the largest case mesh also solved on 4 N_e elements (twice_refined_entries): a solve
+    !! on 256 elements costs about 15 ms (output/bench/estimate_cost.md)
+    integer, parameter :: twice_refined_max = 64
 
     !> The key results on a mesh of the case's grading that is not nested in the case's.
     type, public :: neighbour_t
@@ -112,7 +116,8 @@ contains
     !! known: the solutions on the nested coarser meshes of the Newton start
     !! (solution_t%coarse); one whose mesh is the coarse mesh is not solved again.
     !! edge_in_contact: an end of the base is in contact (summary_t), which limits a
-    !! uniform mesh to first order (formal_order).
+    !! uniform mesh to first order (formal_order). A mesh of fewer than min_estimate_elements
+    !! elements gets no estimate.
     subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution, design)
         type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
@@ -129,6 +134,7 @@ contains
         type(station_table_t), intent(in), optional :: design
         type(estimate_family_t) :: fam
         logical :: edge, floored
+        if (d%msh%ne < min_estimate_elements) return
         edge = .false.
         if (present(edge_in_contact)) edge = edge_in_contact
         call estimate_family(m, d, edge, fam, known, cache, solution)
@@ -316,10 +322,10 @@ contains
 
     !> The error of a key result on N_e elements is at least its change to the mesh cut in
     !! two twice (4 N_e; twice_refined_entries, on meshes of up to twice_refined_max
-    !! elements). Where the error converges at an order p >= 1 from N_e on, that change is
-    !! 1 - 4^-p >= 0.75 of the error and at most 1.25 of it, so the floor neither overstates
-    !! a converging error nor lets the estimate fall far below it. On the coarsest meshes
-    !! the meshes N_e/4 to 2 N_e can show a sequence that stalls before it falls further
+    !! elements). Where the error converges monotonically at an order p >= 1 from N_e on,
+    !! that change is 1 - 4^-p, 0.75 to 1 times the error, so the floor neither overstates a
+    !! converging error nor lets the estimate fall far below it. On coarse meshes the meshes
+    !! N_e/4 to 2 N_e can show a sequence that stalls before it falls further
     !! (a stiff beam in full contact whose slip zone at one end grows from one node on N_e
     !! = 20 to two on 40 and four on 80: differential settlement 3.6467, 3.6440, 3.6419,
     !! then 3.6088 e-2 on N_e = 10 to 80, converged 3.5966; the meshes up to 2 N_e alone
