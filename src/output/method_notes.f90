@@ -88,7 +88,7 @@ contains
                'alike); on a mesh of at most 64 elements, E >= the change to the mesh cut '// &
                'in two twice (4 N_e). Where the refined case does not fit in memory: the '// &
                'coarse meshes N_e/2, N_e/4 with Roache''s GCI. Measured: 0.5 to 5 times the '// &
-               'true error for 92.9 % of 11335 results, none below 0.2 times (doc/OUTPUT.md)'
+               'true error for 93.3 % of 11335 results, none below 0.2 times (doc/OUTPUT.md)'
     end function error_method_text
 
     !> Why a case has no error estimate (report and HTML record): its mesh is too coarse

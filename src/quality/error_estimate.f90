@@ -25,9 +25,12 @@
 !! show in them. Where the case's mesh has at most 64 elements, it is also solved on the
 !! mesh cut in two twice (4 N_e), and each estimate is at least the key's change to it
 !! (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall before the values fall
-!! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements). Measured on 64 cases, 11335 results (output/bench/estimate_effectivity.md):
-!! 92.9 % within 0.5 to 5 times the true error, none below 0.2; the estimates from coarser
-!! meshes only gave 0.3 to 50 times the error (10th to 90th percentile).
+!! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements).
+!! Measured on 64 cases, 11335 results on 20, 40 and 80 elements
+!! (output/bench/estimate_effectivity.md): 93.3 % within 0.5 to 5 times the true error, none
+!! below 0.2; on 12 to 100 elements none below 0.2 but on 70 (8 of 3587; above 64 elements
+!! there is no solve on 4 N_e; estimate_effectivity_other_meshes.md); the estimates from
+!! coarser meshes only gave 0.3 to 50 times the error (10th to 90th percentile).
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
 !! start) and costs 2 to 4 times the case, the two neighbours about one case each, the solve
