@@ -61,7 +61,6 @@ contains
                  new_unittest('pre_asymptotic_coarse_meshes_widen', test_pre_asymptotic), &
                  new_unittest('neighbour_floor_half_difference', test_neighbour_floor), &
                  new_unittest('neighbours_load_by_load', test_same_load_nodes), &
-                 new_unittest('neighbour_floor_named_keys_only', test_neighbour_floor_keys), &
                  new_unittest('neighbours_see_moment_load_place', test_neighbours_moment_load), &
                  new_unittest('twice_refined_floor_whole_change', test_twice_refined_floor), &
                  new_unittest('twice_refined_sees_slip_zone', test_twice_refined_slip_zone), &
@@ -565,27 +564,6 @@ contains
         call neighbour_floor(e, en(2:2))
         call check(err, e(1)%error == 2.5e-6_dp, 'another key at the same place is not compared')
     end subroutine test_neighbour_floor
-
-    !> The neighbours' floor restricted to named keys (error_estimate, neighbour_floor with
-    !! keys; arithmetic): with the pressures at d from the ends named, the pressure 1.0151 +-
-    !! 1e-5 against 1.0149 on a neighbour becomes +- 1e-4 (half of 2e-4) and the sagging
-    !! moment, whose neighbour differs by 0.02, keeps its 1e-5.
-    subroutine test_neighbour_floor_keys(err)
-        type(error_t), allocatable, intent(out) :: err
-        type(entry_t) :: e(2)
-        type(neighbour_t) :: en(1)
-        e = [entry_t(key='pressure_near_right_end', value=1.0151_dp, has_error=.true., &
-                     error=1.0e-5_dp, defined=.true.), &
-             entry_t(key='moment_sagging', value=-0.05_dp, has_error=.true., error=1.0e-5_dp, &
-                     defined=.true.)]
-        en(1)%e = [entry_t(key='pressure_near_right_end', value=1.0149_dp, defined=.true.), &
-                   entry_t(key='moment_sagging', value=-0.03_dp, defined=.true.)]
-        call neighbour_floor(e, en, [character(len=32) :: 'pressure_near_left_end', &
-                                     'pressure_near_right_end'])
-        call check(err, abs(e(1)%error - 1.0e-4_dp) <= 1.0e-12_dp, 'the pressure: half of 2e-4')
-        if (allocated(err)) return
-        call check(err, e(2)%error == 1.0e-5_dp, 'the sagging moment is not named: kept')
-    end subroutine test_neighbour_floor_keys
 
     !> Which neighbouring meshes are compared (error_estimate, same_load_nodes; counted by
     !! hand): on [-0.5, 0.5] with 40 uniform elements (nodes at multiples of 0.025) a load at 0

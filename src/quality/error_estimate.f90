@@ -77,9 +77,6 @@ module error_estimate
     real(dp), parameter :: p_low = 1.0_dp, p_high = 2.0_dp
     !> the coarse difference's share of the estimate's floor, |Q_c - Q_1| / coarse_share
     real(dp), parameter :: coarse_share = 4.0_dp
-    !> the pressures at d from the ends, read between stations (neighbour_entries)
-    character(len=*), parameter :: edge_pressure_keys(3) = [character(len=32) :: &
-        'pressure_near_left_end', 'pressure_near_right_end', 'pressure_near_rim']
     !> Roache's factor of safety on a Richardson estimate with an observed order
     real(dp), parameter :: safety = 1.25_dp
     !> the largest case mesh also solved on 4 N_e elements (twice_refined_entries): a solve
@@ -106,9 +103,6 @@ module error_estimate
         !! grading whose concentrated loads lie on nodes exactly where the case's do (0, 1 or 2
         !! of them; neighbour_floor)
         type(neighbour_t), allocatable :: en(:)
-        !> en was solved for the pressures at d from the ends alone (no concentrated load
-        !! inside the base, N_e > twice_refined_max): only those keys are compared
-        logical :: edge_pressures_only = .false.
         !> refined, N_e <= twice_refined_max: the keys on the mesh cut in two twice (4 N_e),
         !! where it could be solved (twice_refined_floor)
         type(entry_t), allocatable :: e4f(:)
@@ -163,13 +157,7 @@ contains
         ! the neighbours raise above its size is not widened further
         floored = allocated(fam%e4f)
         if (allocated(fam%en)) floored = floored .or. size(fam%en) > 0
-        if (allocated(fam%en)) then
-            if (fam%edge_pressures_only) then
-                call neighbour_floor(e, fam%en, edge_pressure_keys)
-            else
-                call neighbour_floor(e, fam%en)
-            end if
-        end if
+        if (allocated(fam%en)) call neighbour_floor(e, fam%en)
         if (allocated(fam%e4f)) call twice_refined_floor(e, fam%e4f)
         if (floored) call liftoff_estimates(m, e)
     end subroutine estimate_errors
@@ -259,14 +247,11 @@ contains
 
     !> fam%en: the keys on the meshes of N_e - 1 and N_e + 1 elements of the case's grading
     !! (MESH card), each where its concentrated loads lie on nodes exactly where the case's
-    !! do and it could be solved. Solved where a concentrated load (POINT, RING, MOMENT) lies
-    !! inside the base, or, on a mesh of more than twice_refined_max elements (no solve on
-    !! 4 N_e), for the pressures at d from the ends alone (fam%edge_pressures_only): they are
-    !! read between stations, and the nested meshes keep the point d inside one parent
-    !! element. None where the case's mesh is not the grading's own mesh of N_e elements (a
-    !! mesh refined for friction), where N_e - 1 < min_coarse_elements, or, without a
-    !! concentrated load inside, where d is not inside the base (a sweep of small cases of
-    !! patch loads pays nothing).
+    !! do and it could be solved; none where no concentrated load (POINT, RING, MOMENT) lies
+    !! inside the base (patches only, or a point load on a plate's axis: nothing whose place
+    !! in its element the neighbours could move; a sweep of patch loads pays nothing), where
+    !! the case's mesh is not the grading's own mesh of N_e elements (a mesh refined for
+    !! friction) or N_e - 1 < min_coarse_elements.
     subroutine neighbour_entries(m, msh, fam, cache)
         type(model_t), intent(in) :: m
         type(mesh_t), intent(in) :: msh              !! the case's mesh
@@ -282,12 +267,8 @@ contains
         allocate (fam%en(0))
         if (msh%ne - 1 < min_coarse_elements) return
         call interface_ends(m%structure, x_left, x_right)
-        fam%edge_pressures_only = .not. any(m%loads%kind /= LOAD_PATCH .and. &
-                                            m%loads%x1 > x_left .and. m%loads%x1 < x_right)
-        if (fam%edge_pressures_only) then
-            if (msh%ne <= twice_refined_max) return
-            if (m%structure%h >= x_right - x_left) return
-        end if
+        if (.not. any(m%loads%kind /= LOAD_PATCH .and. m%loads%x1 > x_left .and. &
+                      m%loads%x1 < x_right)) return
         call card_mesh(m, msh%ne, own, err)
         if (allocated(err)) return
         if (.not. same_nodes(own%x, msh%x)) return
@@ -327,20 +308,13 @@ contains
     !! e-5 on 20, 40, 80; 3.5, 5.4, 2.3, 3.3, 4.5 e-5 on 38 to 42). The neighbours move the
     !! load within its element; a neighbour whose loads lie on nodes where the case's do not
     !! (or the reverse) converges at another order and is not compared (neighbour_entries).
-    !! Where the neighbours were solved for the pressures at d from the ends alone, only
-    !! those keys are compared (keys).
-    pure subroutine neighbour_floor(e, en, keys)
+    pure subroutine neighbour_floor(e, en)
         type(entry_t), intent(inout) :: e(:)       !! key results with their estimates
         type(neighbour_t), intent(in) :: en(:)     !! the same keys on the neighbours
-        !> only these keys (default: every estimated key)
-        character(len=*), intent(in), optional :: keys(:)
         integer :: i, k
         do k = 1, size(en)
             do i = 1, min(size(e), size(en(k)%e))
                 if (.not. (is_estimated(e(i)%key) .and. e(i)%has_error)) cycle
-                if (present(keys)) then
-                    if (.not. any(keys == e(i)%key)) cycle
-                end if
                 if (.not. en(k)%e(i)%defined) cycle
                 if (trim(en(k)%e(i)%key) /= trim(e(i)%key)) cycle
                 e(i)%error = max(e(i)%error, &
