@@ -28,9 +28,10 @@
 !! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements).
 !! Measured on 64 cases, 11335 results on 20, 40 and 80 elements
 !! (output/bench/estimate_effectivity.md): 93.3 % within 0.5 to 5 times the true error, none
-!! below 0.2; on 12 to 100 elements none below 0.2 but on 70 (8 of 3587; above 64 elements
-!! there is no solve on 4 N_e; estimate_effectivity_other_meshes.md); the estimates from
-!! coarser meshes only gave 0.3 to 50 times the error (10th to 90th percentile).
+!! below 0.2; none below 0.2 on 12 to 66, 80 and 100 elements, 12 of 13585 on 70, 76, 90
+!! and 120 (above 64 elements there is no solve on 4 N_e;
+!! estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
+!! to 50 times the error (10th to 90th percentile).
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
 !! start) and costs 2 to 4 times the case, the two neighbours about one case each, the solve
