@@ -22,7 +22,7 @@
 !! concentrated load lies inside the base, the estimate is at least half the change to the
 !! meshes of N_e - 1 and N_e + 1 elements of the same grading (neighbour_floor): nested
 !! meshes keep the load's place in its element, and an error tied to that place does not
-!! show in them. Where the case's mesh has at most 64 elements, it is also solved on the
+!! show in them. Where the case's mesh has at most 128 elements, it is also solved on the
 !! mesh cut in two twice (4 N_e), and each estimate is at least the key's change to it
 !! (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall before the values fall
 !! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements).
@@ -81,8 +81,8 @@ module error_estimate
     !> Roache's factor of safety on a Richardson estimate with an observed order
     real(dp), parameter :: safety = 1.25_dp
     !> the largest case mesh also solved on 4 N_e elements (twice_refined_entries): a solve
-    !! on 256 elements costs about 15 ms (output/bench/estimate_cost.md)
-    integer, parameter :: twice_refined_max = 64
+    !! on 512 elements costs about 0.1 s (output/bench/estimate_cost.md)
+    integer, parameter :: twice_refined_max = 128
 
     !> The key results on a mesh of the case's grading that is not nested in the case's.
     type, public :: neighbour_t
