@@ -20,7 +20,7 @@ program bench_estimate_cost
     use summary_table, only: entry_t
     use error_estimate, only: estimate_errors
     implicit none
-    integer, parameter :: ne_list(8) = [10, 20, 40, 50, 64, 100, 200, 400], reps = 5
+    integer, parameter :: ne_list(9) = [10, 20, 40, 50, 64, 100, 128, 200, 400], reps = 5
     character(len=*), parameter :: case_names(3) = [character(len=24) :: 'plate', 'beam', &
                                                      'beam, load at 0.137 l']
     character(len=256) :: out_file

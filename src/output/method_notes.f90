@@ -85,10 +85,10 @@ contains
                'node; where N_e/4 shows the meshes short of the asymptotic range, E >= |Q_c '// &
                '- Q|; where a concentrated load lies inside the base, E >= half the change to '// &
                'the meshes of N_e - 1 and N_e + 1 elements (same grading, the loads on nodes '// &
-               'alike); on a mesh of at most 64 elements, E >= the change to the mesh cut '// &
+               'alike); on a mesh of at most 128 elements, E >= the change to the mesh cut '// &
                'in two twice (4 N_e). Where the refined case does not fit in memory: the '// &
                'coarse meshes N_e/2, N_e/4 with Roache''s GCI. Measured: 0.5 to 5 times the '// &
-               'true error for 93.3 % of 11335 results, none below 0.2 times (doc/OUTPUT.md)'
+               'true error for 93.4 % of 11335 results, none below 0.2 times (doc/OUTPUT.md)'
     end function error_method_text
 
     !> Why a case has no error estimate (report and HTML record): its mesh is too coarse

@@ -27,15 +27,14 @@
 !! (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall before the values fall
 !! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements).
 !! Measured on 64 cases, 11335 results on 20, 40 and 80 elements
-!! (output/bench/estimate_effectivity.md): 93.3 % within 0.5 to 5 times the true error, none
-!! below 0.2; none below 0.2 on 12 to 66, 80 and 100 elements, 12 of 13585 on 70, 76, 90
-!! and 120 (above 64 elements there is no solve on 4 N_e;
-!! estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
+!! (output/bench/estimate_effectivity.md): 93.4 % within 0.5 to 5 times the true error, none
+!! below 0.2; none below 0.2 on any of 21 mesh sizes from 12 to 120 elements
+!! (estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
 !! to 50 times the error (10th to 90th percentile).
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
 !! start) and costs 2 to 4 times the case, the two neighbours about one case each, the solve
-!! on 4 N_e about three (output/bench/estimate_cost.md). Where
+!! on 4 N_e three to six (output/bench/estimate_cost.md). Where
 !! the refined case would not fit in memory (resource_limits), the estimate falls back to the
 !! coarse family alone: N_e/2 and N_e/4 (every other node removed, twice) with Roache's grid
 !! convergence index, E = 1.25 |Q_2 - Q_1| / (2^p - 1), p observed and capped by
