@@ -16,7 +16,8 @@
 module test_adaptive
     use kinds, only: dp
     use harness, only: unittest_t, new_unittest, error_t, check
-    use model, only: model_t, load_t, MODEL_BEAM, LOAD_PATCH, LOAD_POINT, LOAD_MOMENT, &
+    use model, only: model_t, load_t, MODEL_BEAM, MODEL_PLATE, LOAD_PATCH, LOAD_POINT, &
+                     LOAD_MOMENT, &
                      complete_model
     use mesh, only: mesh_t, new_mesh
     use mesh_refinement, only: bisected, balance_marks, snap_node, coarsened, pinned_nodes
@@ -39,6 +40,7 @@ module test_adaptive
     use solved_case, only: case_t, solve_case
     use contact_test_support, only: nondim_plate
     use design_summary, only: summary_t, summarise
+    use case_quality, only: adapt_interpolation_warnings
     implicit none
     private
     public :: collect_adaptive
@@ -65,6 +67,7 @@ contains
                  new_unittest('twice_refined_floor_whole_change', test_twice_refined_floor), &
                  new_unittest('twice_refined_sees_slip_zone', test_twice_refined_slip_zone), &
                  new_unittest('no_estimate_below_16_elements', test_no_estimate_coarse), &
+                 new_unittest('adapt_p1_plate_warned', test_adapt_p1_warning), &
                  new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
@@ -752,6 +755,29 @@ contains
             if (allocated(err)) return
         end do
     end subroutine test_no_estimate_coarse
+
+    !> The warning for ADAPT with P1 deflection or rotation on a plate (case_quality; the
+    !! rule, from output/bench/adapt_pays.md): given for a plate with ADAPT and P1 w, not
+    !! with S2 w and psi, not for a beam, not without ADAPT.
+    subroutine test_adapt_p1_warning(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        m%structure%kind = MODEL_PLATE
+        m%mesh%adapt_tol = 1.0e-3_dp
+        m%mesh%interp = INTERP_P1
+        call check(err, size(adapt_interpolation_warnings(m)) == 1, 'plate, ADAPT, P1: warned')
+        if (allocated(err)) return
+        m%mesh%interp(2:3) = INTERP_S2
+        call check(err, size(adapt_interpolation_warnings(m)) == 0, 'S2 w and psi: no warning')
+        if (allocated(err)) return
+        m%mesh%interp = INTERP_P1
+        m%structure%kind = MODEL_BEAM
+        call check(err, size(adapt_interpolation_warnings(m)) == 0, 'a beam: no warning')
+        if (allocated(err)) return
+        m%structure%kind = MODEL_PLATE
+        m%mesh%adapt_tol = 0.0_dp
+        call check(err, size(adapt_interpolation_warnings(m)) == 0, 'no ADAPT: no warning')
+    end subroutine test_adapt_p1_warning
 
     !> An extreme moment that is not established (estimate >= its size), smaller than the
     !! opposite extreme whose estimate is at least half that extreme, is estimated as at least

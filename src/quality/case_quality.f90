@@ -13,7 +13,8 @@
 module case_quality
     use kinds, only: dp
     use errors, only: error_t
-    use model, only: model_t
+    use model, only: model_t, MODEL_PLATE, FIELD_W, FIELD_PSI
+    use shape_functions, only: INTERP_P1
     use discretization, only: discretization_t, new_discretization, loads_on_nodes
     use contact_solver, only: solution_t
     use solved_case, only: case_t, solve_case, finish_case, failed_case
@@ -25,7 +26,7 @@ module case_quality
     implicit none
     private
 
-    public :: solve_to_quality
+    public :: solve_to_quality, adapt_interpolation_warnings
 
 contains
 
@@ -57,6 +58,8 @@ contains
                                      c%summary%n_tension_lifted, c%stations%n, &
                                      c%stations%most_tensile, c%stations%tension_tol)]
         if (adaptation%adapted) then
+            warnings = [character(len=warning_length) :: warnings, &
+                        adapt_interpolation_warnings(m)]
             call take_adapted_estimates(adaptation, c, warnings)
             return
         end if
@@ -70,6 +73,25 @@ contains
                                             c%summary%edge_in_contact, cache, c%sol, &
                                             c%design)
     end subroutine solve_to_quality
+
+    !> Warning for an ADAPT deck that keeps P1 deflection or rotation on a plate: its centre
+    !! pressure converges at first order on any mesh (error_estimate, formal_order), so the
+    !! adaptation refines far. Measured on the work-precision plate
+    !! (output/bench/adapt_pays.md): P1-ADAPT took 0.189 s to tol 1e-3 and 2.36 s to 1e-4,
+    !! ADAPT with S2 w and psi (its default when the MESH card gives no interpolation) 0.0132
+    !! and 0.229 s. On the beam P1-ADAPT was the faster of the two: no warning there.
+    pure function adapt_interpolation_warnings(m) result(w)
+        type(model_t), intent(in) :: m         !! the model (an ADAPT deck)
+        character(len=warning_length), allocatable :: w(:)
+        allocate (w(0))
+        if (.not. m%mesh%adapt_tol > 0.0_dp) return
+        if (m%structure%kind /= MODEL_PLATE) return
+        if (m%mesh%interp(FIELD_W) /= INTERP_P1 .and. m%mesh%interp(FIELD_PSI) /= INTERP_P1) &
+            return
+        w = [character(len=warning_length) :: 'ADAPT with P1 w or psi on a plate: its '// &
+             'centre pressure converges at first order on any mesh; S2 w and psi (ADAPT''s '// &
+             'default) reached the same tol 10 to 14 times sooner (output/bench/adapt_pays.md)']
+    end function adapt_interpolation_warnings
 
     !> The ADAPT policy: adaptive refinement from the MESH card's mesh, then the case's
     !! results on the final mesh.
