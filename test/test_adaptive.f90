@@ -26,7 +26,8 @@ module test_adaptive
     use adaptive_solve, only: adaptation_t, solve_adaptive, relative_errors
     use error_estimate, only: formal_order, extent_floors, pre_asymptotic, neighbour_floor, &
                               neighbour_t, estimate_errors, same_load_nodes, &
-                              twice_refined_floor, min_estimate_elements
+                              twice_refined_floor, min_estimate_elements, &
+                              computed_digits_floor
     use extreme_estimates, only: parabola_excess, tent_height, add_sampling_errors, &
                                  widen_unresolved_moments
     use station_results, only: station_table_t
@@ -68,6 +69,7 @@ contains
                  new_unittest('twice_refined_sees_slip_zone', test_twice_refined_slip_zone), &
                  new_unittest('no_estimate_below_16_elements', test_no_estimate_coarse), &
                  new_unittest('adapt_p1_plate_warned', test_adapt_p1_warning), &
+                 new_unittest('estimate_at_least_1e-6_of_value', test_digits_floor), &
                  new_unittest('refined_solve_from_known_start', test_known_start), &
                  new_unittest('refined_until_friction_resolved', test_auto_refinement), &
                  new_unittest('adapted_case_files', test_adapted_files)]
@@ -778,6 +780,31 @@ contains
         m%mesh%adapt_tol = 0.0_dp
         call check(err, size(adapt_interpolation_warnings(m)) == 0, 'no ADAPT: no warning')
     end subroutine test_adapt_p1_warning
+
+    !> No estimate below a millionth of its value (error_estimate, computed_digits_floor;
+    !! arithmetic): a settlement 3.4964e-3 +- 1.3e-9 becomes +- 3.4964e-9; an estimate of
+    !! 1e-5 is kept; a shear force of -2.0 (compared by its size) +- 0 becomes +- 2e-6; a key
+    !! without an estimate is left alone.
+    subroutine test_digits_floor(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(entry_t) :: e(4)
+        e = [entry_t(key='settlement_max', value=3.4964e-3_dp, has_error=.true., &
+                     error=1.3e-9_dp, defined=.true.), &
+             entry_t(key='differential_settlement', value=1.0e-3_dp, has_error=.true., &
+                     error=1.0e-5_dp, defined=.true.), &
+             entry_t(key='shear_force_max', value=-2.0_dp, has_error=.true., error=0.0_dp, &
+                     defined=.true.), &
+             entry_t(key='moment_sagging', value=-5.0_dp, defined=.true.)]
+        call computed_digits_floor(e)
+        call check(err, abs(e(1)%error - 3.4964e-9_dp) <= 1.0e-20_dp, '1e-6 of 3.4964e-3')
+        if (allocated(err)) return
+        call check(err, e(2)%error == 1.0e-5_dp, 'a larger estimate is kept')
+        if (allocated(err)) return
+        call check(err, abs(e(3)%error - 2.0e-6_dp) <= 1.0e-18_dp, '1e-6 of |-2|')
+        if (allocated(err)) return
+        call check(err, .not. e(4)%has_error .and. e(4)%error == 0.0_dp, &
+                   'a key without an estimate is left alone')
+    end subroutine test_digits_floor
 
     !> An extreme moment that is not established (estimate >= its size), smaller than the
     !! opposite extreme whose estimate is at least half that extreme, is estimated as at least
