@@ -42,8 +42,8 @@
 !! the order cap (formal_order), the floor, the estimate, whether the friction is resolved
 !! pointwise, the key on the mesh coarsened twice and on the meshes of N_e - 1 and N_e + 1
 !! elements (not nested), whether every concentrated load is on a node of the case's mesh and
-!! the key on 4 N_e elements (the eighth revision's solve on meshes of up to 20 elements; -1
-!! where it is not made), for studying estimate formulas.
+!! the key on 4 N_e elements (error_estimate's solve on meshes of up to twice_refined_max
+!! elements; -1 where it is not made), for studying estimate formulas.
 !! The references are read from output/bench/estimate_references.txt if it exists (they do
 !! not depend on the estimator); a case without any is computed (about 3 s a case) and
 !! appended. The whole study (64 cases) with stored references takes about 50 s on two cores.

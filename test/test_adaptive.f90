@@ -693,17 +693,7 @@ contains
         type(case_t) :: c
         real(dp) :: q, e_est, true_error
         integer :: i
-        m%nondim = .true.
-        m%structure%kind = MODEL_BEAM
-        m%groups%rho = 0.8_dp
-        m%groups%zeta = 0.1_dp
-        m%groups%beta = 0.05_dp
-        m%interface%f = 0.3_dp
-        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.15_dp, x1=-0.5_dp, x2=0.5_dp)]
-        m%mesh%ne = 20
-        m%mesh%grading = 'UNIFORM'
-        m%mesh%interp = INTERP_P1
-        call complete_model(m)
+        m = stiff_slipping_beam(20)
         call solve_case(m, c, err)
         if (allocated(err)) return
         call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
@@ -737,17 +727,7 @@ contains
         call check(err, min_estimate_elements == 16, 'the smallest mesh estimated is 16')
         if (allocated(err)) return
         do ne = 15, 16
-            m = model_t()
-            m%nondim = .true.
-            m%structure%kind = MODEL_BEAM
-            m%groups%rho = 0.8_dp
-            m%groups%zeta = 0.1_dp
-            m%groups%beta = 0.05_dp
-            m%interface%f = 0.3_dp
-            m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.15_dp, x1=-0.5_dp, x2=0.5_dp)]
-            m%mesh%ne = ne
-            m%mesh%interp = INTERP_P1
-            call complete_model(m)
+            m = stiff_slipping_beam(ne)
             call solve_case(m, c, err)
             if (allocated(err)) return
             call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
@@ -805,6 +785,25 @@ contains
         call check(err, .not. e(4)%has_error .and. e(4)%error == 0.0_dp, &
                    'a key without an estimate is left alone')
     end subroutine test_digits_floor
+
+    !> Case 41 of the effectivity study on ne uniform P1 elements: a stiff beam (rho 0.8, zeta
+    !! 0.1, beta 0.05) in full contact under a uniform load with H = 0.15 V, f = 0.3, whose
+    !! slip zone at one end spans one to a few elements.
+    function stiff_slipping_beam(ne) result(m)
+        integer, intent(in) :: ne   !! elements
+        type(model_t) :: m
+        m%nondim = .true.
+        m%structure%kind = MODEL_BEAM
+        m%groups%rho = 0.8_dp
+        m%groups%zeta = 0.1_dp
+        m%groups%beta = 0.05_dp
+        m%interface%f = 0.3_dp
+        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.15_dp, x1=-0.5_dp, x2=0.5_dp)]
+        m%mesh%ne = ne
+        m%mesh%grading = 'UNIFORM'
+        m%mesh%interp = INTERP_P1
+        call complete_model(m)
+    end function stiff_slipping_beam
 
     !> An extreme moment that is not established (estimate >= its size), smaller than the
     !! opposite extreme whose estimate is at least half that extreme, is estimated as at least

@@ -240,7 +240,7 @@ contains
                 escaped(error_method_text(.false.))//'</p>'
         else
             write (u, '(a)') '<p class="small">No error estimate: '// &
-                escaped(no_estimate_reason())//', and is not made with --no-estimates.</p>'
+                escaped(no_estimate_reason())//'.</p>'
         end if
         if (any(e%singular .and. e%defined)) write (u, '(a)') '<p class="small">Singular: '// &
             'unbounded in the model where it is taken (an edge in contact, a concentrated '// &

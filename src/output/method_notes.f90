@@ -93,13 +93,15 @@ contains
     end function error_method_text
 
     !> Why a case has no error estimate (report and HTML record): its mesh is too coarse
-    !! (error_estimate, min_estimate_elements) or a coarse or refined solve failed.
+    !! (error_estimate, min_estimate_elements), a coarse or refined solve failed, or the run
+    !! has --no-estimates.
     pure function no_estimate_reason() result(text)
         character(len=:), allocatable :: text
         character(len=8) :: n
         write (n, '(i0)') min_estimate_elements
         text = 'it needs N_e >= '//trim(n)//' (on coarser meshes the estimates were measured '// &
-               'down to 0.03 of the error) and coarse and refined solves that converge'
+               'down to 0.03 of the error) and coarse and refined solves that converge, and is '// &
+               'not made with --no-estimates'
     end function no_estimate_reason
 
     !> The report's lines on the adaptation.

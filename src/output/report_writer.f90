@@ -278,7 +278,8 @@ contains
 
     !> "errors": the estimated absolute error of each estimated key (same unit as the
     !! result), "error_orders": the observed order (null where first order was assumed),
-    !! "error_method": how the estimate was obtained (module error_estimate).
+    !! "error_method": how the estimate was obtained (module error_estimate), or why there is
+    !! none.
     subroutine write_json_errors(u, e, adapted)
         integer, intent(in) :: u
         type(entry_t), intent(in) :: e(:)
@@ -305,7 +306,12 @@ contains
             end block first
             write (u, '(a)') '},'
         end do
-        write (u, '(a)') '  "error_method": '//json_string(error_method_text(adapted))//','
+        if (any(e%has_error)) then
+            write (u, '(a)') '  "error_method": '//json_string(error_method_text(adapted))//','
+        else
+            write (u, '(a)') '  "error_method": '// &
+                json_string('no error estimate: '//no_estimate_reason())//','
+        end if
     end subroutine write_json_errors
 
     !> "adaptation": the ADAPT settings, the cycles, the final N_e and estimate, whether the

@@ -46,7 +46,7 @@ module adaptive_solve
     use summary_table, only: entry_t
     use solved_case, only: case_t, finish_case
     use flexibility_cache, only: flexibility_cache_t
-    use error_estimate, only: coarse_case, attach_estimates, is_estimated
+    use error_estimate, only: coarse_case, attach_estimates, is_estimated, min_estimate_elements
     implicit none
     private
 
@@ -286,8 +286,9 @@ contains
     end subroutine assess
 
     !> Estimates attached to a%e from the coarsened meshes (ok false if they could not be
-    !! made or solved); tab2: the first coarse solution at its nodes. The coarse solves
-    !! start from sol (solve_contact, start) instead of their own nested coarser meshes.
+    !! made or solved, or the mesh has fewer than min_estimate_elements); tab2: the first
+    !! coarse solution at its nodes. The coarse solves start from sol (solve_contact, start)
+    !! instead of their own nested coarser meshes.
     subroutine coarse_estimates(m, d, sol, a, e2, e4, tab2, ok, cache)
         type(model_t), intent(in) :: m
         type(discretization_t), intent(in) :: d
@@ -303,6 +304,8 @@ contains
         logical, allocatable :: p2(:), p4(:)
         real(dp) :: ratio
         ok = .false.
+        ! no estimate on fewer elements than a MESH case gets one on (error_estimate)
+        if (d%msh%ne < min_estimate_elements) return
         call coarsened(d%msh, pins(m%loads, d%msh, a%boundary), c2, p2)
         call coarsened(c2, p2, c4, p4)
         if (c4%ne < min_coarse .or. c2%ne >= d%msh%ne .or. c4%ne >= c2%ne) return

@@ -23,10 +23,10 @@
 !! meshes of N_e - 1 and N_e + 1 elements of the same grading (neighbour_floor): nested
 !! meshes keep the load's place in its element, and an error tied to that place does not
 !! show in them. Where the case's mesh has at most 128 elements, it is also solved on the
-!! mesh cut in two twice (4 N_e), and each estimate is at least the key's change to it
-!! (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall before the values fall
-!! further. A mesh of fewer than 16 elements gets no estimate (min_estimate_elements).
-!! Measured on 64 cases, 11335 results on 20, 40 and 80 elements
+!! mesh cut in two twice (4 N_e, where that fits in memory), and each estimate is at least
+!! the key's change to it (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall
+!! before the values fall further. A mesh of fewer than 16 elements gets no estimate
+!! (min_estimate_elements). Measured on 64 cases, 11335 results on 20, 40 and 80 elements
 !! (output/bench/estimate_effectivity.md): 93.4 % within 0.5 to 5 times the true error, none
 !! below 0.2; none below 0.2 on any of 21 mesh sizes from 12 to 120 elements
 !! (estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
@@ -34,7 +34,7 @@
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
 !! start) and costs 2 to 4 times the case, the two neighbours about one case each, the solve
-!! on 4 N_e three to six (output/bench/estimate_cost.md). Where
+!! on 4 N_e two to eight (output/bench/estimate_cost.md). Where
 !! the refined case would not fit in memory (resource_limits), the estimate falls back to the
 !! coarse family alone: N_e/2 and N_e/4 (every other node removed, twice) with Roache's grid
 !! convergence index, E = 1.25 |Q_2 - Q_1| / (2^p - 1), p observed and capped by
@@ -84,8 +84,9 @@ module error_estimate
     !! with friction (doc/CHOICES.md, "Error estimates, twelfth revision"), so an estimate
     !! below a millionth of the value would claim digits the computation does not hold
     real(dp), parameter :: relative_floor = 1.0e-6_dp
-    !> the largest case mesh also solved on 4 N_e elements (twice_refined_entries): a solve
-    !! on 512 elements costs about 0.1 s (output/bench/estimate_cost.md)
+    !> the largest case mesh also solved on 4 N_e elements (twice_refined_entries, where it
+    !! fits in memory): at 128 elements that solve adds about 30 ms to the estimate
+    !! (output/bench/estimate_cost.md)
     integer, parameter :: twice_refined_max = 128
 
     !> The key results on a mesh of the case's grading that is not nested in the case's.
@@ -207,7 +208,7 @@ contains
         call mesh_entries(m, c2, reuse, fam%ec, fam%ok, cache)
         if (.not. fam%ok) return
         fam%on_nodes = loads_on_nodes(m%loads, d%msh) .and. loads_on_nodes(m%loads, c2)
-        fam%refined = refined_fits(m)
+        fam%refined = refined_fits(m, 2)
         if (fam%refined) then
             allocate (own(0))
             if (present(solution)) own = [coarse_solution_t(x=d%msh%x, z=solution%z, &
@@ -217,8 +218,9 @@ contains
             call mesh_entries(m, f2, reuse, fam%ef, fam%ok, cache, own, fine)
             if (fam%ok) call twice_coarsened_entries(m, c2, p2, reuse, fam, cache)
             if (fam%ok) call neighbour_entries(m, d%msh, fam, cache)
-            if (fam%ok .and. d%msh%ne <= twice_refined_max) &
-                call twice_refined_entries(m, f2, fine, fam, cache)
+            if (fam%ok .and. d%msh%ne <= twice_refined_max) then
+                if (refined_fits(m, 4)) call twice_refined_entries(m, f2, fine, fam, cache)
+            end if
             return
         end if
         fam%ok = .false.
@@ -364,13 +366,14 @@ contains
         end do
     end subroutine twice_refined_floor
 
-    !> Whether the case on twice its elements fits in the memory available.
-    logical function refined_fits(m)
+    !> Whether the case on times its elements fits in the memory available.
+    logical function refined_fits(m, times)
         type(model_t), intent(in) :: m
+        integer, intent(in) :: times   !! the refined mesh's elements per element of m's
         type(model_t) :: mf
         type(error_t), allocatable :: err
         mf = m
-        mf%mesh%ne = 2*m%mesh%ne
+        mf%mesh%ne = times*m%mesh%ne
         call check_memory(mf, 1, memory_available(), err)
         refined_fits = .not. allocated(err)
     end function refined_fits
