@@ -607,9 +607,7 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), parameter :: converged = 5.96413e-2_dp
         type(model_t) :: m
-        type(case_t) :: c
         real(dp) :: q, e_est, true_error
-        integer :: i
         m%nondim = .true.
         m%structure%kind = MODEL_BEAM
         m%groups%rho = 1.0e-2_dp
@@ -622,17 +620,8 @@ contains
         m%mesh%grading = 'UNIFORM'
         m%mesh%interp = INTERP_P2
         call complete_model(m)
-        call solve_case(m, c, err)
+        call estimated_key(m, 'moment_hogging', q, e_est, err)
         if (allocated(err)) return
-        call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
-                             c%summary%edge_in_contact, solution=c%sol, design=c%design)
-        q = -1.0_dp
-        e_est = -1.0_dp
-        do i = 1, size(c%entries)
-            if (trim(c%entries(i)%key) /= 'moment_hogging') cycle
-            q = c%entries(i)%value
-            if (c%entries(i)%has_error) e_est = c%entries(i)%error
-        end do
         true_error = abs(q - converged)
         print '(a,es10.3,a,es10.3,a,es10.3)', '    hogging moment ', q, ', error ', &
             true_error, ', estimate ', e_est
@@ -690,21 +679,10 @@ contains
         type(error_t), allocatable, intent(out) :: err
         real(dp), parameter :: converged = 3.596579e-2_dp
         type(model_t) :: m
-        type(case_t) :: c
         real(dp) :: q, e_est, true_error
-        integer :: i
         m = stiff_slipping_beam(20)
-        call solve_case(m, c, err)
+        call estimated_key(m, 'differential_settlement', q, e_est, err)
         if (allocated(err)) return
-        call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
-                             c%summary%edge_in_contact, solution=c%sol, design=c%design)
-        q = -1.0_dp
-        e_est = -1.0_dp
-        do i = 1, size(c%entries)
-            if (trim(c%entries(i)%key) /= 'differential_settlement') cycle
-            q = c%entries(i)%value
-            if (c%entries(i)%has_error) e_est = c%entries(i)%error
-        end do
         true_error = abs(q - converged)
         print '(a,es10.3,a,es10.3,a,es10.3)', '    differential settlement ', q, ', error ', &
             true_error, ', estimate ', e_est
@@ -785,6 +763,28 @@ contains
         call check(err, .not. e(4)%has_error .and. e(4)%error == 0.0_dp, &
                    'a key without an estimate is left alone')
     end subroutine test_digits_floor
+
+    !> The case m solved and estimated as the program does (solve_case, then
+    !! estimate_errors): the value of key and its estimate (-1 where it has none).
+    subroutine estimated_key(m, key, q, e_est, err)
+        type(model_t), intent(in) :: m                  !! the case
+        character(len=*), intent(in) :: key             !! a key of summary_table
+        real(dp), intent(out) :: q, e_est               !! its value and estimate
+        type(error_t), allocatable, intent(out) :: err  !! the solve failed
+        type(case_t) :: c
+        integer :: i
+        q = -1.0_dp
+        e_est = -1.0_dp
+        call solve_case(m, c, err)
+        if (allocated(err)) return
+        call estimate_errors(c%model, c%d, c%entries, c%sol%coarse, &
+                             c%summary%edge_in_contact, solution=c%sol, design=c%design)
+        do i = 1, size(c%entries)
+            if (trim(c%entries(i)%key) /= key) cycle
+            q = c%entries(i)%value
+            if (c%entries(i)%has_error) e_est = c%entries(i)%error
+        end do
+    end subroutine estimated_key
 
     !> Case 41 of the effectivity study on ne uniform P1 elements: a stiff beam (rho 0.8, zeta
     !! 0.1, beta 0.05) in full contact under a uniform load with H = 0.15 V, f = 0.3, whose
