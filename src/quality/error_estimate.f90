@@ -106,8 +106,8 @@ module error_estimate
         !! solved (pre_asymptotic)
         type(entry_t), allocatable :: e4(:)
         !> refined: the keys on the meshes of N_e - 1 and N_e + 1 elements of the case's
-        !! grading whose concentrated loads lie on nodes exactly where the case's do (0, 1 or 2
-        !! of them; neighbour_floor)
+        !! grading whose concentrated loads lie on nodes exactly where the case's do (1 or 2
+        !! of them; neighbour_floor), unallocated where none was solved
         type(neighbour_t), allocatable :: en(:)
         !> refined, N_e <= twice_refined_max: the keys on the mesh cut in two twice (4 N_e),
         !! where it could be solved (twice_refined_floor)
@@ -142,7 +142,7 @@ contains
         !! (extreme_estimates)
         type(station_table_t), intent(in), optional :: design
         type(estimate_family_t) :: fam
-        logical :: edge, floored
+        logical :: edge
         if (d%msh%ne < min_estimate_elements) return
         edge = .false.
         if (present(edge_in_contact)) edge = edge_in_contact
@@ -161,11 +161,9 @@ contains
         call widen_unresolved_moments(e)
         ! after the moment rule, as measured (output/bench/estimate_effectivity.md): a moment
         ! the neighbours raise above its size is not widened further
-        floored = allocated(fam%e4f)
-        if (allocated(fam%en)) floored = floored .or. size(fam%en) > 0
         if (allocated(fam%en)) call neighbour_floor(e, fam%en)
         if (allocated(fam%e4f)) call twice_refined_floor(e, fam%e4f)
-        if (floored) call liftoff_estimates(m, e)
+        if (allocated(fam%en) .or. allocated(fam%e4f)) call liftoff_estimates(m, e)
         call computed_digits_floor(e)
     end subroutine estimate_errors
 
@@ -272,7 +270,7 @@ contains
     !! inside the base (patches only, or a point load on a plate's axis: nothing whose place
     !! in its element the neighbours could move; a sweep of patch loads pays nothing), where
     !! the case's mesh is not the grading's own mesh of N_e elements (a mesh refined for
-    !! friction) or N_e - 1 < min_coarse_elements.
+    !! friction) or N_e - 1 < min_coarse_elements (fam%en then stays unallocated).
     subroutine neighbour_entries(m, msh, fam, cache)
         type(model_t), intent(in) :: m
         type(mesh_t), intent(in) :: msh              !! the case's mesh
@@ -282,10 +280,10 @@ contains
         type(error_t), allocatable :: err
         type(coarse_solution_t) :: none(0)
         type(entry_t), allocatable :: en(:)
+        type(neighbour_t), allocatable :: solved(:)
         real(dp) :: x_left, x_right
         logical :: ok
         integer :: step
-        allocate (fam%en(0))
         if (msh%ne - 1 < min_coarse_elements) return
         call interface_ends(m%structure, x_left, x_right)
         if (.not. any(m%loads%kind /= LOAD_PATCH .and. m%loads%x1 > x_left .and. &
@@ -293,13 +291,15 @@ contains
         call card_mesh(m, msh%ne, own, err)
         if (allocated(err)) return
         if (.not. same_nodes(own%x, msh%x)) return
+        allocate (solved(0))
         do step = -1, 1, 2
             call card_mesh(m, msh%ne + step, other, err)
             if (allocated(err)) cycle
             if (.not. same_load_nodes(m, other, msh)) cycle
             call mesh_entries(m, other, none, en, ok, cache)
-            if (ok) fam%en = [fam%en, neighbour_t(en)]
+            if (ok) solved = [solved, neighbour_t(en)]
         end do
+        if (size(solved) > 0) call move_alloc(solved, fam%en)
     end subroutine neighbour_entries
 
     !> Whether every concentrated load is on a node of mesh a exactly where it is on a node of
@@ -332,15 +332,9 @@ contains
     pure subroutine neighbour_floor(e, en)
         type(entry_t), intent(inout) :: e(:)       !! key results with their estimates
         type(neighbour_t), intent(in) :: en(:)     !! the same keys on the neighbours
-        integer :: i, k
+        integer :: k
         do k = 1, size(en)
-            do i = 1, min(size(e), size(en(k)%e))
-                if (.not. (is_estimated(e(i)%key) .and. e(i)%has_error)) cycle
-                if (.not. en(k)%e(i)%defined) cycle
-                if (trim(en(k)%e(i)%key) /= trim(e(i)%key)) cycle
-                e(i)%error = max(e(i)%error, &
-                                 0.5_dp*abs(compared(en(k)%e(i)) - compared(e(i))))
-            end do
+            call change_floor(e, en(k)%e, 0.5_dp)
         end do
     end subroutine neighbour_floor
 
@@ -357,14 +351,23 @@ contains
     pure subroutine twice_refined_floor(e, e4f)
         type(entry_t), intent(inout) :: e(:)       !! key results with their estimates
         type(entry_t), intent(in) :: e4f(:)        !! the same keys on 4 N_e elements
-        integer :: i
-        do i = 1, min(size(e), size(e4f))
-            if (.not. (is_estimated(e(i)%key) .and. e(i)%has_error)) cycle
-            if (.not. e4f(i)%defined) cycle
-            if (trim(e4f(i)%key) /= trim(e(i)%key)) cycle
-            e(i)%error = max(e(i)%error, abs(compared(e4f(i)) - compared(e(i))))
-        end do
+        call change_floor(e, e4f, 1.0_dp)
     end subroutine twice_refined_floor
+
+    !> Each estimated key's estimate is at least share times its change to the same key on
+    !! another mesh (other; matched by name, skipped where undefined there).
+    pure subroutine change_floor(e, other, share)
+        type(entry_t), intent(inout) :: e(:)       !! key results with their estimates
+        type(entry_t), intent(in) :: other(:)      !! the same keys on another mesh
+        real(dp), intent(in) :: share              !! the share of the change
+        integer :: i
+        do i = 1, min(size(e), size(other))
+            if (.not. (is_estimated(e(i)%key) .and. e(i)%has_error)) cycle
+            if (.not. other(i)%defined) cycle
+            if (trim(other(i)%key) /= trim(e(i)%key)) cycle
+            e(i)%error = max(e(i)%error, share*abs(compared(other(i)) - compared(e(i))))
+        end do
+    end subroutine change_floor
 
     !> Whether the case on times its elements fits in the memory available.
     logical function refined_fits(m, times)
