@@ -31,7 +31,7 @@ module test_adaptive
     use extreme_estimates, only: parabola_excess, tent_height, add_sampling_errors, &
                                  widen_unresolved_moments
     use station_results, only: station_table_t
-    use station_columns, only: Q_X, Q_W, Q_M, n_quantities
+    use station_columns, only: Q_X, Q_W, Q_M, Q_Q, n_quantities
     use case_scales, only: scales_t, case_scale_factors
     use summary_table, only: entry_t
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
@@ -59,6 +59,9 @@ contains
                  new_unittest('extent_floors_half_element', test_extent_floors), &
                  new_unittest('parabola_excess_closed_form', test_parabola_excess), &
                  new_unittest('peak_between_stations', test_sampling_errors), &
+                 new_unittest('shear_peak_between_stations', test_shear_sampling), &
+                 new_unittest('shear_peak_of_a_slipping_beam', test_shear_peak_case), &
+                 new_unittest('neighbours_above_128_elements', test_neighbours_pressure_at_d), &
                  new_unittest('unresolved_moment_widened', test_unresolved_moments), &
                  new_unittest('tent_at_load_inside_element', test_tent), &
                  new_unittest('pre_asymptotic_coarse_meshes_widen', test_pre_asymptotic), &
@@ -447,6 +450,58 @@ contains
         call check(err, e(1)%error == 0.001_dp, 'point load at the station: nothing added')
     end subroutine test_sampling_errors
 
+    !> The largest shear force between stations (extreme_estimates): Q = -(1 - (x - 0.1)^2)
+    !! on the stations -0.5 to 0.5 (step 0.25) has its largest |Q|, 0.99, at 0, and the
+    !! parabola through -0.25, 0, 0.25 is |Q| itself, whose vertex is 1: 0.01 is added to the
+    !! estimate 0.001 (times the unit factor of the shear forces). A patch edge is a kink of
+    !! Q (its slope q - p jumps there): at the station 0, or at 0.125 between the parabola's
+    !! stations, nothing is added to the shear force, while the largest settlement of the
+    !! same field, smooth at a patch edge, still gets its 0.01 (closed form of a parabola).
+    subroutine test_shear_sampling(err)
+        type(error_t), allocatable, intent(out) :: err
+        type(model_t) :: m
+        type(station_table_t) :: tab
+        type(entry_t) :: e(4)
+        type(scales_t) :: k
+        real(dp), parameter :: x(5) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.25_dp, 0.5_dp]
+        real(dp), parameter :: patch_ends(2) = [0.0_dp, 0.125_dp]
+        integer :: i
+        m%structure%kind = MODEL_BEAM
+        m%structure%length = 1.0_dp
+        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, x2=0.5_dp)]
+        k = case_scale_factors(m)
+        tab%n = 5
+        allocate (tab%val(n_quantities, 5), source=0.0_dp)
+        allocate (tab%side(5), tab%state(5), tab%flag(5), source=0)
+        tab%val(Q_X, :) = x
+        tab%val(Q_Q, :) = -(1.0_dp - (x - 0.1_dp)**2)
+        tab%val(Q_W, :) = 1.0_dp - (x - 0.1_dp)**2
+        call fresh_entries(e)
+        call add_sampling_errors(m, tab, e, e)
+        call check(err, abs(e(1)%error - (0.001_dp + 0.01_dp*k%shear)) <= 1.0e-14_dp, &
+                   'parabola excess 0.01 added to the shear force')
+        if (allocated(err)) return
+        do i = 1, 2
+            m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, x2=patch_ends(i))]
+            call fresh_entries(e)
+            call add_sampling_errors(m, tab, e, e)
+            call check(err, e(1)%error == 0.001_dp, 'patch edge at or beside the station: '// &
+                       'nothing added to the shear force')
+            if (allocated(err)) return
+            call check(err, abs(e(3)%error - (0.001_dp + 0.01_dp*k%disp)) <= 1.0e-14_dp, &
+                       'the settlement is smooth at a patch edge: 0.01 added')
+            if (allocated(err)) return
+        end do
+    contains
+        subroutine fresh_entries(e)
+            type(entry_t), intent(out) :: e(4)
+            e = [entry_t(key='shear_force_max', value=-0.99_dp*k%shear, has_error=.true., &
+                         error=0.001_dp), entry_t(key='shear_force_max_x', value=0.0_dp), &
+                 entry_t(key='settlement_max', value=0.99_dp*k%disp, has_error=.true., &
+                         error=0.001_dp), entry_t(key='settlement_max_x', value=0.0_dp)]
+        end subroutine fresh_entries
+    end subroutine test_shear_sampling
+
     !> The settlement at a POINT load inside an element (extreme_estimates): W = 1 - |x - 0.1|
     !! (a kink at the load, straight on each side) on the nodes -0.5, -0.25, 0, 0.25, 0.5 is
     !! 0.4, 0.65, 0.9, 0.85, 0.6, and the loaded element [0, 0.25] reads 0.88 at the load (its
@@ -680,6 +735,46 @@ contains
                                [4.0e-4_dp, 5.5e-4_dp])
     end subroutine test_twice_refined_slip_zone
 
+    !> Above 128 elements (no solve on 4 N_e) the meshes of N_e - 1 and N_e + 1 elements are
+    !! solved for every case (error_estimate, neighbour_entries): case 41 of the effectivity
+    !! study on 200 EDGES elements, P1, whose pressure at d from the left end stays inside one
+    !! parent element on the nested meshes (9.459023e-1, bisected 9.459206e-1; the neighbours
+    !! 199 and 201 move it by 3e-5 and 1.2e-4). Converged 9.460690e-1: the study's reference
+    !! (extrapolated from LOADS meshes of up to 1280 P1 and 640 P2 elements,
+    !! output/bench/estimate_references.txt); the estimate was 0.18 of the error before.
+    subroutine test_neighbours_pressure_at_d(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), parameter :: converged = 9.460690e-1_dp
+        real(dp) :: q, e_est
+        call estimated_key(stiff_slipping_beam(200, 'EDGES'), 'pressure_near_left_end', q, &
+                           e_est, err)
+        if (allocated(err)) return
+        call check_effectivity(err, 'pressure at d', q, e_est, converged, [1.5e-4_dp, 1.9e-4_dp])
+    end subroutine test_neighbours_pressure_at_d
+
+    !> The largest shear force between stations (extreme_estimates, the shear force's
+    !! parabola): case 59 of the effectivity study (a stiff beam, rho 0.6, zeta 0.15, f 0.25,
+    !! under a uniform load with H = 0.2 V: a slip zone at one end) on 200 EDGES elements,
+    !! P2: 5.71919e-2 on N_e and 2 N_e, converged 5.719337e-2 (the study's reference, as
+    !! above); the estimate was 0.11 of the error before.
+    subroutine test_shear_peak_case(err)
+        type(error_t), allocatable, intent(out) :: err
+        real(dp), parameter :: converged = 5.719337e-2_dp
+        type(model_t) :: m
+        real(dp) :: q, e_est
+        m = stiff_slipping_beam(200, 'EDGES')
+        m%groups%rho = 0.6_dp
+        m%groups%zeta = 0.15_dp
+        m%interface%f = 0.25_dp
+        m%loads(1)%fx = 0.2_dp
+        m%mesh%interp = INTERP_P2
+        call complete_model(m)
+        call estimated_key(m, 'shear_force_max', q, e_est, err)
+        if (allocated(err)) return
+        call check_effectivity(err, 'largest shear force', abs(q), e_est, converged, &
+                               [1.2e-6_dp, 1.8e-6_dp])
+    end subroutine test_shear_peak_case
+
     !> The error of q against the converged value lies in the reference study's range, and
     !! the estimate e_est is within [0.2, 5] times it (issue 23's band).
     subroutine check_effectivity(err, what, q, e_est, converged, error_range)
@@ -791,11 +886,12 @@ contains
         end do
     end subroutine estimated_key
 
-    !> Case 41 of the effectivity study on ne uniform P1 elements: a stiff beam (rho 0.8, zeta
-    !! 0.1, beta 0.05) in full contact under a uniform load with H = 0.15 V, f = 0.3, whose
-    !! slip zone at one end spans one to a few elements.
-    function stiff_slipping_beam(ne) result(m)
+    !> Case 41 of the effectivity study on ne P1 elements (UNIFORM, or grading): a stiff beam
+    !! (rho 0.8, zeta 0.1, beta 0.05) in full contact under a uniform load with H = 0.15 V,
+    !! f = 0.3, whose slip zone at one end spans one to a few elements.
+    function stiff_slipping_beam(ne, grading) result(m)
         integer, intent(in) :: ne   !! elements
+        character(len=*), intent(in), optional :: grading   !! MESH grading (UNIFORM)
         type(model_t) :: m
         m%nondim = .true.
         m%structure%kind = MODEL_BEAM
@@ -806,6 +902,7 @@ contains
         m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, fx=0.15_dp, x1=-0.5_dp, x2=0.5_dp)]
         m%mesh%ne = ne
         m%mesh%grading = 'UNIFORM'
+        if (present(grading)) m%mesh%grading = grading
         m%mesh%interp = INTERP_P1
         call complete_model(m)
     end function stiff_slipping_beam

@@ -14,15 +14,17 @@
 !! estimate from collapsing where the fine pair happens to agree (a boundary that stays in one
 !! element). The contact extent moves by whole nodes: its estimate is at least half the
 !! element beyond the last node in contact (at an end of the base, the end element). The
-!! keys that are extremes of a station field then get three additions (extreme_estimates,
-!! both estimates): the shortfall of an extreme lying between two stations, the settlement
-!! at a load inside an element, and a wider estimate for an extreme moment the meshes do not
-!! resolve. Where the mesh coarsened twice shows the coarse meshes short of the asymptotic
-!! range, the estimate is at least the coarse difference (pre_asymptotic). Where a
-!! concentrated load lies inside the base, the estimate is at least half the change to the
-!! meshes of N_e - 1 and N_e + 1 elements of the same grading (neighbour_floor): nested
-!! meshes keep the load's place in its element, and an error tied to that place does not
-!! show in them. Where the case's mesh has at most 128 elements, it is also solved on the
+!! keys that are extremes of a station field then get three additions
+!! (extreme_estimates, both estimates): the shortfall of an extreme lying between two
+!! stations (the shear force's too), the settlement at a load inside an element, and a
+!! wider estimate for an extreme moment the meshes do not resolve. Where the mesh coarsened
+!! twice shows the coarse meshes short of the asymptotic range, the estimate is at least the
+!! coarse difference (pre_asymptotic). Where a
+!! concentrated load lies inside the base, or the mesh has more than 128 elements, the
+!! estimate is at least half the change to the meshes of N_e - 1 and N_e + 1 elements of the
+!! same grading (neighbour_floor): nested meshes keep the load's place in its element (and
+!! the point d's, a peak's or a lift-off boundary's), and an error tied to that place does
+!! not show in them. Where the case's mesh has at most 128 elements, it is also solved on the
 !! mesh cut in two twice (4 N_e, where that fits in memory), and each estimate is at least
 !! the key's change to it (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall
 !! before the values fall further. A mesh of fewer than 16 elements gets no estimate
@@ -266,11 +268,19 @@ contains
 
     !> fam%en: the keys on the meshes of N_e - 1 and N_e + 1 elements of the case's grading
     !! (MESH card), each where its concentrated loads lie on nodes exactly where the case's
-    !! do and it could be solved; none where no concentrated load (POINT, RING, MOMENT) lies
-    !! inside the base (patches only, or a point load on a plate's axis: nothing whose place
-    !! in its element the neighbours could move; a sweep of patch loads pays nothing), where
+    !! do and it could be solved. Solved where a concentrated load (POINT, RING, MOMENT) lies
+    !! inside the base, and on every mesh of more than twice_refined_max elements: there is
+    !! no solve on 4 N_e there, and the nested meshes keep the place in its parent element of
+    !! whatever the error follows: the point d of the pressures near the ends, a peak between
+    !! stations, a lift-off boundary (on 200 elements the hogging moment of a soft plate with
+    !! lift-off, P2 on LOADS meshes, is 4.70339, 4.70209, 4.70187 e-3 on N_e/2, N_e, 2 N_e,
+    !! converged 4.70444 e-3; 4.69643 and 4.70381 e-3 on 199 and 201 elements). None where
     !! the case's mesh is not the grading's own mesh of N_e elements (a mesh refined for
-    !! friction) or N_e - 1 < min_coarse_elements (fam%en then stays unallocated).
+    !! friction), where N_e - 1 < min_coarse_elements, or on up to twice_refined_max elements
+    !! without a concentrated load inside the base (patches only, or a point load on a
+    !! plate's axis: nothing whose place in its element the neighbours could move that the
+    !! solve on 4 N_e does not see; a sweep of small cases of patch loads pays nothing);
+    !! fam%en then stays unallocated.
     subroutine neighbour_entries(m, msh, fam, cache)
         type(model_t), intent(in) :: m
         type(mesh_t), intent(in) :: msh              !! the case's mesh
@@ -286,8 +296,8 @@ contains
         integer :: step
         if (msh%ne - 1 < min_coarse_elements) return
         call interface_ends(m%structure, x_left, x_right)
-        if (.not. any(m%loads%kind /= LOAD_PATCH .and. m%loads%x1 > x_left .and. &
-                      m%loads%x1 < x_right)) return
+        if (msh%ne <= twice_refined_max .and. .not. any(m%loads%kind /= LOAD_PATCH .and. &
+            m%loads%x1 > x_left .and. m%loads%x1 < x_right)) return
         call card_mesh(m, msh%ne, own, err)
         if (allocated(err)) return
         if (.not. same_nodes(own%x, msh%x)) return
