@@ -422,16 +422,7 @@ contains
         type(station_table_t) :: tab
         type(entry_t) :: e(2), ef(2)
         type(scales_t) :: k
-        real(dp), parameter :: x(5) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.25_dp, 0.5_dp]
-        m%structure%kind = MODEL_BEAM
-        m%structure%length = 1.0_dp
-        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, x2=0.5_dp)]
-        k = case_scale_factors(m)
-        tab%n = 5
-        allocate (tab%val(n_quantities, 5), source=0.0_dp)
-        allocate (tab%side(5), tab%state(5), tab%flag(5), source=0)
-        tab%val(Q_X, :) = x
-        tab%val(Q_W, :) = 1.0_dp - (x - 0.1_dp)**2
+        call parabola_stations(m, tab, k)
         e = [entry_t(key='settlement_max', value=0.99_dp*k%disp, has_error=.true., &
                      error=0.001_dp), entry_t(key='settlement_max_x', value=0.0_dp)]
         ef = e
@@ -463,19 +454,9 @@ contains
         type(station_table_t) :: tab
         type(entry_t) :: e(4)
         type(scales_t) :: k
-        real(dp), parameter :: x(5) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.25_dp, 0.5_dp]
         real(dp), parameter :: patch_ends(2) = [0.0_dp, 0.125_dp]
         integer :: i
-        m%structure%kind = MODEL_BEAM
-        m%structure%length = 1.0_dp
-        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, x2=0.5_dp)]
-        k = case_scale_factors(m)
-        tab%n = 5
-        allocate (tab%val(n_quantities, 5), source=0.0_dp)
-        allocate (tab%side(5), tab%state(5), tab%flag(5), source=0)
-        tab%val(Q_X, :) = x
-        tab%val(Q_Q, :) = -(1.0_dp - (x - 0.1_dp)**2)
-        tab%val(Q_W, :) = 1.0_dp - (x - 0.1_dp)**2
+        call parabola_stations(m, tab, k)
         call fresh_entries(e)
         call add_sampling_errors(m, tab, e, e)
         call check(err, abs(e(1)%error - (0.001_dp + 0.01_dp*k%shear)) <= 1.0e-14_dp, &
@@ -501,6 +482,26 @@ contains
                          error=0.001_dp), entry_t(key='settlement_max_x', value=0.0_dp)]
         end subroutine fresh_entries
     end subroutine test_shear_sampling
+
+    !> A beam of length 1 under a patch over its whole base (m, its unit factors k) and a
+    !! design table tab of the stations -0.5 to 0.5 (step 0.25) with W = 1 - (x - 0.1)^2 and
+    !! Q = -W: largest W and |Q| 0.99 at the station 0, 1 at x = 0.1.
+    subroutine parabola_stations(m, tab, k)
+        type(model_t), intent(out) :: m
+        type(station_table_t), intent(out) :: tab
+        type(scales_t), intent(out) :: k
+        real(dp), parameter :: x(5) = [-0.5_dp, -0.25_dp, 0.0_dp, 0.25_dp, 0.5_dp]
+        m%structure%kind = MODEL_BEAM
+        m%structure%length = 1.0_dp
+        m%loads = [load_t(kind=LOAD_PATCH, fz=1.0_dp, x1=-0.5_dp, x2=0.5_dp)]
+        k = case_scale_factors(m)
+        tab%n = 5
+        allocate (tab%val(n_quantities, 5), source=0.0_dp)
+        allocate (tab%side(5), tab%state(5), tab%flag(5), source=0)
+        tab%val(Q_X, :) = x
+        tab%val(Q_W, :) = 1.0_dp - (x - 0.1_dp)**2
+        tab%val(Q_Q, :) = -tab%val(Q_W, :)
+    end subroutine parabola_stations
 
     !> The settlement at a POINT load inside an element (extreme_estimates): W = 1 - |x - 0.1|
     !! (a kink at the load, straight on each side) on the nodes -0.5, -0.25, 0, 0.25, 0.5 is
