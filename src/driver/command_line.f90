@@ -162,8 +162,9 @@ contains
             '      --no-html     no calculation record (CASE.html) per case', &
             '      --no-estimates  no error estimates (they re-solve each case on 2 N_e, '// &
                 'N_e/2, N_e/4,', &
-            '                    4 N_e where N_e <= 128 and, with a concentrated load inside '// &
-                'the base, N_e +- 1)', &
+            '                    4 N_e where N_e <= 128, N_e +- 1 where N_e > 128 or a '// &
+                'concentrated', &
+            '                    load lies inside the base)', &
             '      --full-model  no simplifications (half beam, no sigma_x at f = 0, settled '// &
             'lift-off', &
             '                    decoupled in the factorisation): the full model', &

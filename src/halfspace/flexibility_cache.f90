@@ -28,7 +28,8 @@ module flexibility_cache
     public :: flexibility_of, new_flexibility_cache, flexibility_cache_hits
 
     !> a case's mesh and its estimate's meshes (N_e/2, N_e/4, 2 N_e, N_e - 1 and N_e + 1 with
-    !! a concentrated load inside the base, and 4 N_e where 16 <= N_e <= 128: up to seven),
+    !! a concentrated load inside the base or above 128 elements, and 4 N_e where 16 <= N_e <=
+    !! 128: up to seven),
     !! for up to four grounds (or beam widths) of a sweep: a sweep over two grounds, such as
     !! the 1000-case benchmark, needs six to fourteen, and four entries evicted each before
     !! its next use. At most 28 T of 600^2 numbers: 81 MB (a T of more than max_unknowns

@@ -83,7 +83,8 @@ contains
                'moment that is not established at least |M_opposite| + E_opposite, the '// &
                'settlement at a load inside an element its continuation from the nearer '// &
                'node; where N_e/4 shows the meshes short of the asymptotic range, E >= |Q_c '// &
-               '- Q|; where a concentrated load lies inside the base, E >= half the change to '// &
+               '- Q|; where a concentrated load lies inside the base or the mesh has more '// &
+               'than 128 elements, E >= half the change to '// &
                'the meshes of N_e - 1 and N_e + 1 elements (same grading, the loads on nodes '// &
                'alike); on a mesh of at most 128 elements, E >= the change to the mesh cut '// &
                'in two twice (4 N_e); E >= 1e-6 |Q| (the digits the solution holds). Where '// &

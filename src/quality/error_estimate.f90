@@ -30,7 +30,7 @@
 !! before the values fall further. A mesh of fewer than 16 elements gets no estimate
 !! (min_estimate_elements). Measured on 64 cases, 11335 results on 20, 40 and 80 elements
 !! (output/bench/estimate_effectivity.md): 93.4 % within 0.5 to 5 times the true error, none
-!! below 0.2; none below 0.2 on 23 mesh sizes from 12 to 176 elements, 9 of 2509 on 200
+!! below 0.2; none below 0.2 on 25 mesh sizes from 12 to 230 elements, 1 of 2262 on 260
 !! (estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
 !! to 50 times the error (10th to 90th percentile).
 !!
