@@ -36,7 +36,9 @@
 !! [FIRST LAST [NE]]]]
 !! FIRST, LAST: measure only cases FIRST to LAST (RAW '-': no raw file). NE: measure only
 !! meshes of NE elements (default 20, 40 and 80; the table's sets and figures are then
-!! those of that mesh alone).
+!! those of that mesh alone). NE given as ADAPT=TOL (e.g. ADAPT=1e-3): every case is solved
+!! with ADAPT to TOL from its UNIFORM mesh of 20 elements of each interpolation (as the
+!! program runs an ADAPT deck, max_elements 1000), and ADAPT's estimates are measured.
 !! RAW: a file for one line per result with the values the estimate is made from (the key on
 !! the case's mesh, on the nested coarser and on the bisected mesh), its reference and bar,
 !! the order cap (formal_order), the floor, the estimate, whether the friction is resolved
@@ -60,6 +62,9 @@ program estimate_effectivity
     use mesh_refinement, only: coarsened, pinned_nodes
     use applied_loads, only: load_positions
     use discretization, only: discretization_t, discretise_mesh, loads_on_nodes
+    use case_quality, only: solve_to_quality
+    use adaptive_solve, only: adaptation_t
+    use plausibility, only: warning_length
     use error_estimate, only: estimate_errors, is_estimated, estimate_family, &
                               estimate_family_t, formal_order, extent_floors
     implicit none
@@ -91,6 +96,11 @@ program estimate_effectivity
     real(dp), allocatable :: eff(:)
     integer, allocatable :: group(:)        !! 1 tuning, 2-4 the held-out sets (group_of)
     integer :: first_case = 1, last_case = n_cases   !! the cases measured
+    !> NE given as ADAPT=tol: each case solved with ADAPT to tol from its UNIFORM MESH card's
+    !! mesh of adapt_start_ne elements (max_elements 1000, the deck default), its estimates
+    !! ADAPT's (0: the MESH cases)
+    real(dp) :: adapt_tol = 0.0_dp
+    integer, parameter :: adapt_start_ne = 20
     character(len=16) :: arg
     character(len=200), allocatable :: rows(:)
     integer :: u
@@ -109,7 +119,12 @@ program estimate_effectivity
     if (command_argument_count() >= 6) then
         call get_command_argument(6, arg)
         ne_tested = [0]
-        read (arg, *) ne_tested(1)
+        if (arg(1:6) == 'ADAPT=') then
+            read (arg(7:), *) adapt_tol
+            ne_tested(1) = adapt_start_ne
+        else
+            read (arg, *) ne_tested(1)
+        end if
     end if
     if (command_argument_count() >= 3) call get_command_argument(3, dump_file)
     if (command_argument_count() >= 3 .and. trim(dump_file) /= '-') then
@@ -745,10 +760,16 @@ contains
         allocate (eff(0), group(0), rows(0))
         do i = first_case, last_case
             do a = 1, 3
-                do g = 1, 3
+                do g = 1, merge(1, 3, adapt_tol > 0.0_dp)   ! ADAPT: from UNIFORM meshes
                     do n = 1, size(ne_tested)
-                        call key_values(discretised(i, interps(a), gradings(g), ne_tested(n)), &
-                                        .true., q, est, def, sing, has_est, ok, raw)
+                        if (adapt_tol > 0.0_dp) then
+                            call adapted_values(discretised(i, interps(a), gradings(g), &
+                                                ne_tested(n)), q, est, has_est, ok)
+                            raw = -1.0_dp
+                        else
+                            call key_values(discretised(i, interps(a), gradings(g), &
+                                ne_tested(n)), .true., q, est, def, sing, has_est, ok, raw)
+                        end if
                         if (.not. ok) cycle
                         if (dumping) call neighbour_values(i, a, g, ne_tested(n), qn, on_n)
                         do k = 1, n_keys
@@ -777,6 +798,39 @@ contains
             end do
         end do
     end subroutine measure_all
+
+    !> The key results of m solved with ADAPT to adapt_tol (max_elements 1000) and ADAPT's own
+    !! estimates of them (case_quality::solve_to_quality, as the program runs an ADAPT deck);
+    !! ok false where it failed.
+    subroutine adapted_values(m, q, err_est, has_est, ok)
+        type(model_t), intent(in) :: m
+        real(dp), intent(out) :: q(n_keys), err_est(n_keys)
+        logical, intent(out) :: has_est(n_keys), ok
+        type(model_t) :: ma
+        type(case_t) :: c
+        type(adaptation_t) :: adaptation
+        character(len=warning_length), allocatable :: warnings(:)
+        type(error_t), allocatable :: err
+        integer :: i, k
+        q = 0.0_dp
+        err_est = 0.0_dp
+        has_est = .false.
+        ma = m
+        ma%mesh%adapt_tol = adapt_tol
+        ma%mesh%adapt_max_ne = 1000
+        call solve_to_quality(ma, .true., -1, c, adaptation, warnings, err)
+        ok = .not. allocated(err)
+        if (.not. ok) return
+        do i = 1, size(c%entries)
+            do k = 1, n_keys
+                if (trim(c%entries(i)%key) /= trim(keys(k))) cycle
+                q(k) = c%entries(i)%value
+                if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))
+                has_est(k) = c%entries(i)%has_error .and. .not. c%entries(i)%singular
+                err_est(k) = c%entries(i)%error
+            end do
+        end do
+    end subroutine adapted_values
 
     !> The key results of case i on the meshes of N_e - 1 and N_e + 1 elements of the same
     !! interpolation and grading (not nested in the case's; 0 where a solve failed).
