@@ -66,11 +66,12 @@ contains
             if (adapted) text = 'ADAPT refines where the adapted mesh coarsened twice (every '// &
                 'other node removed, the ends, loads and located boundaries kept) differs '// &
                 'most, and stops when the estimate from those meshes and the one below, made '// &
-                'on the adapted mesh as on a MESH case, are within tol; '
+                'on the adapted mesh as on a MESH case (the contact extent at least its '// &
+                'distance from the located boundary), are within tol; '
         end if
-        text = text//'estimated error: the case re-solved on its mesh with every element cut in two '// &
-               '(Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - Q_f| 2^p/(2^p '// &
-               '- 1), |Q_c - Q|/4) with the order p observed from the three, in [1, 2] and at '// &
+        text = text//'estimated error: the case re-solved on its mesh with every element cut '// &
+               'in two (Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - '// &
+               'Q_f| 2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, in [1, 2] and at '// &
                'most the formal order (1 on a uniform mesh with an edge in contact), p* where '// &
                'p = 1 is assumed; contact extent at least half the element beyond it (at an '// &
                'end of the base, the end element); an extreme between two stations adds the '// &
