@@ -71,8 +71,8 @@ contains
         end if
         text = text//'estimated error: the case re-solved on its mesh with every element cut '// &
                'in two (Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - '// &
-               'Q_f| 2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, in [1, 2] and at '// &
-               'most the formal order (1 on a uniform mesh with an edge in contact), p* where '// &
+               'Q_f| 2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, '// &
+               'in [1, 2] and at most the formal order (1 on a uniform mesh with an edge in contact), p* where '// &
                'p = 1 is assumed; contact extent at least half the element beyond it (at an '// &
                'end of the base, the end element); an extreme between two stations adds the '// &
                'excess of the parabola through its station and their neighbours, an extreme '// &
