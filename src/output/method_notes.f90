@@ -70,23 +70,22 @@ contains
                 'distance from the located boundary), are within tol; '
         end if
         text = text//'estimated error: the case re-solved on its mesh with every element cut '// &
-               'in two (Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - '// &
-               'Q_f| 2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, '// &
-               'in [1, 2] and at most the formal order (1 on a uniform mesh with an edge in contact), p* where '// &
-               'p = 1 is assumed; contact extent at least half the element beyond it (at an '// &
-               'end of the base, the end element); an extreme between two stations adds the '// &
-               'excess of the parabola through its station and their neighbours, an extreme '// &
-               'moment that is not established at least |M_opposite| + E_opposite, the '// &
-               'settlement at a load inside an element its continuation from the nearer '// &
-               'node; where N_e/4 shows the meshes short of the asymptotic range, E >= |Q_c '// &
-               '- Q|; where a concentrated load lies inside the base or the mesh has more '// &
-               'than 128 elements, E >= half the change to '// &
-               'the meshes of N_e - 1 and N_e + 1 elements (same grading, the loads on nodes '// &
-               'alike); on a mesh of at most 128 elements, E >= the change to the mesh cut '// &
-               'in two twice (4 N_e); E >= 1e-6 |Q| (the digits the solution holds). Where '// &
-               'the refined case does not fit in memory: the '// &
-               'coarse meshes N_e/2, N_e/4 with Roache''s GCI. Measured: 0.5 to 5 times the '// &
-               'true error for 93.4 % of 11335 results, none below 0.2 times (doc/OUTPUT.md)'
+               'in two (Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - Q_f| '// &
+               '2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, in [1, '// &
+               '2] and at most the formal order (1 on a uniform mesh with an edge in contact), '// &
+               'p* where p = 1 is assumed; contact extent at least half the element beyond it '// &
+               '(at an end of the base, the end element); an extreme between two stations adds '// &
+               'the excess of the parabola through its station and their neighbours, an '// &
+               'extreme moment that is not established at least |M_opposite| + E_opposite, the '// &
+               'settlement at a load inside an element its continuation from the nearer node; '// &
+               'where N_e/4 shows the meshes short of the asymptotic range, E >= |Q_c - Q|; '// &
+               'where a concentrated load lies inside the base or the mesh has more than 128 '// &
+               'elements, E >= half the change to the meshes of N_e - 1 and N_e + 1 elements '// &
+               '(same grading, the loads on nodes alike); on a mesh of at most 128 elements, E '// &
+               '>= the change to the mesh cut in two twice (4 N_e); E >= 1e-6 |Q| (the digits '// &
+               'the solution holds). Where the refined case does not fit in memory: the coarse '// &
+               'meshes N_e/2, N_e/4 with Roache''s GCI. Measured: 0.5 to 5 times the true '// &
+               'error for 93.4 % of 11335 results, none below 0.2 times (doc/OUTPUT.md)'
     end function error_method_text
 
     !> Why a case has no error estimate (report and HTML record): its mesh is too coarse
