@@ -61,15 +61,21 @@ contains
     pure function error_method_text(adapted) result(text)
         logical, intent(in), optional :: adapted   !! the estimate is on an adapted mesh
         character(len=:), allocatable :: text
-        text = ''
         if (present(adapted)) then
-            if (adapted) text = 'ADAPT refines where the adapted mesh coarsened twice (every '// &
-                'other node removed, the ends, loads and located boundaries kept) differs '// &
-                'most, and stops when the estimate from those meshes and the one below, made '// &
-                'on the adapted mesh as on a MESH case (the contact extent at least its '// &
-                'distance from the located boundary), are within tol; '
+            if (adapted) then
+                text = 'estimated error: the adapted mesh (N_e elements) coarsened twice by '// &
+                    'removing every other node, keeping the ends, the load positions and the '// &
+                    'snapped contact and slip boundaries (N2, N4 elements, r = N_e/N2); E = '// &
+                    '1.25 |Q(N2) - Q(N_e)| / (r^p - 1) with the observed order p, or (p*) '// &
+                    '3 max(|Q(N2) - Q(N_e)|, |Q(N4) - Q(N2)|/r)/(r - 1) where convergence is '// &
+                    'not yet regular; contact extent at least the distance of its node from '// &
+                    'the located boundary. Measured with ADAPT to tol 1e-3: 0.5 to 5 times '// &
+                    'the true error for 62 % of 534 results, 11 % below 0.2 times (doc/'// &
+                    'OUTPUT.md): an indication, not a bound'
+                return
+            end if
         end if
-        text = text//'estimated error: the case re-solved on its mesh with every element cut '// &
+        text = 'estimated error: the case re-solved on its mesh with every element cut '// &
                'in two (Q_f) and with every other node removed (Q_c); E = max(1.25 |Q - Q_f| '// &
                '2^p/(2^p - 1), |Q_c - Q|/4) with the order p observed from the three, in [1, '// &
                '2] and at most the formal order (1 on a uniform mesh with an edge in contact), '// &

@@ -46,8 +46,7 @@ module adaptive_solve
     use summary_table, only: entry_t
     use solved_case, only: case_t, finish_case
     use flexibility_cache, only: flexibility_cache_t
-    use error_estimate, only: coarse_case, attach_estimates, is_estimated, min_estimate_elements, &
-                              estimate_errors
+    use error_estimate, only: coarse_case, attach_estimates, is_estimated, min_estimate_elements
     implicit none
     private
 
@@ -121,9 +120,8 @@ contains
         character(len=200) :: text
         integer :: k, ne_estimated
         real(dp) :: last_estimate
-        logical :: short, checked
+        logical :: short
         call start_record(m%mesh, info)
-        checked = .false.
         d_try = d
         ne_estimated = 0
         last_estimate = huge(1.0_dp)
@@ -146,7 +144,6 @@ contains
             end if
             d = d_try
             sol = sol_try
-            checked = .false.
             if (estimate_due(m%mesh, d%msh%ne, ne_estimated, last_estimate)) then
                 call assess(m, d, sol, a, prev_nodes, cache=cache)
                 ne_estimated = d%msh%ne
@@ -156,14 +153,7 @@ contains
                 call assess(m, d, sol, a, prev_nodes, a_prev, cache)
             end if
             call record_cycle(info, d%msh%ne, a)
-            if (info%reached) then
-                ! the coarse meshes' estimate is confirmed by the MESH case's estimate
-                call refined_check(m, d, sol, a, cache)
-                call revise_last_cycle(info, a)
-                checked = .true.
-                last_estimate = a%estimate
-                if (info%reached) exit cycles
-            end if
+            if (info%reached) exit cycles
             call next_mesh(m, d, a, next, short)
             if (same_mesh(next, d%msh)) then
                 if (short) then
@@ -181,54 +171,7 @@ contains
             call assess(m, d, sol, a, prev_nodes, cache=cache)
             call record_final(info, a)
         end if
-        if (.not. checked) then
-            call refined_check(m, d, sol, a, cache)
-            call revise_last_cycle(info, a)
-            if (.not. info%reached .and. len(info%note) == 0) &
-                info%note = 'the refined estimate of the final mesh is above tol'
-        end if
     end subroutine solve_adaptive
-
-    !> The estimates of a (the assessment of sol on d) replaced by those a MESH case on d's
-    !! mesh gets (error_estimate::estimate_errors: the mesh cut in two, N_e/2 and N_e/4, the
-    !! mesh cut in two twice up to 128 elements, the floors), where it gives one: ADAPT's own
-    !! estimate from the coarsened meshes alone, good enough to steer the refinement, was
-    !! measured at 0.06 to 50 times the true error on the effectivity study's cases
-    !! (output/bench/estimate_effectivity_adapt.md), the MESH estimate within 0.5 to 5 times
-    !! for 93 % of them and not below 0.2 (estimate_effectivity.md). The contact extent's
-    !! least estimate is ADAPT's (extent_floors: its node's distance from the located
-    !! boundary, which a node was moved onto), not half the element beyond the node: on the
-    !! work-precision plate that floor alone kept ADAPT refining from 99 to 299 elements at
-    !! tol 1e-3 (output/bench/adapt_pays.md). a%rel, a%estimate and a%targets follow.
-    !! Nothing changes where the case cannot be tabulated or estimated (fewer than
-    !! min_estimate_elements).
-    subroutine refined_check(m, d, sol, a, cache)
-        type(model_t), intent(in) :: m
-        type(discretization_t), intent(in) :: d
-        type(solution_t), intent(in) :: sol
-        type(assessment_t), intent(inout) :: a
-        type(flexibility_cache_t), intent(inout), optional :: cache  !! the run's cache of T
-        type(case_t) :: c
-        type(error_t), allocatable :: err
-        real(dp), allocatable :: floors(:)
-        integer :: i
-        call finish_case(m, d, sol, c, err)
-        if (allocated(err)) return
-        floors = extent_floors(m%structure, c%entries, pack(a%boundary, a%liftoff))
-        call estimate_errors(m, d, c%entries, edge_in_contact=c%summary%edge_in_contact, &
-                             cache=cache, solution=sol, design=c%design, located_floors=floors)
-        do i = 1, min(size(a%e), size(c%entries))
-            if (.not. c%entries(i)%has_error) cycle
-            if (trim(c%entries(i)%key) /= trim(a%e(i)%key)) cycle
-            a%e(i)%has_error = .true.
-            a%e(i)%error = c%entries(i)%error
-            a%e(i)%order = c%entries(i)%order
-        end do
-        a%rel = relative_errors(a%e)
-        a%estimate = huge(1.0_dp)
-        if (all(a%rel >= 0.0_dp .or. .not. estimated_and_defined(a%e))) a%estimate = maxval(a%rel)
-        a%targets = target_positions(m%mesh, d, c%summary, a)
-    end subroutine refined_check
 
     !> Whether this cycle's mesh (ne elements) gets the estimate's two coarse solves: the
     !! first mesh, a mesh at least twice the last estimated one (ne_last), or one on which
@@ -283,18 +226,6 @@ contains
             info%worst = trim(a%e(i)%key)
         end if
     end subroutine record_cycle
-
-    !> The last cycle's record with a revised estimate (refined_check).
-    subroutine revise_last_cycle(info, a)
-        type(adaptation_t), intent(inout) :: info
-        type(assessment_t), intent(in) :: a
-        integer :: n
-        n = size(info%history_ne)
-        info%cycles = info%cycles - 1
-        info%history_estimate = info%history_estimate(:n - 1)
-        info%history_ne = info%history_ne(:n - 1)
-        call record_cycle(info, info%ne, a)
-    end subroutine revise_last_cycle
 
     !> The estimate of the final mesh when its cycle skipped it (the history keeps -1 for
     !! that cycle).

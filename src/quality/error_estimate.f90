@@ -30,7 +30,7 @@
 !! before the values fall further. A mesh of fewer than 16 elements gets no estimate
 !! (min_estimate_elements). Measured on 64 cases, 11335 results on 20, 40 and 80 elements
 !! (output/bench/estimate_effectivity.md): 93.4 % within 0.5 to 5 times the true error, none
-!! below 0.2; none below 0.2 on 25 mesh sizes from 12 to 230 elements, 1 of 2262 on 260
+!! below 0.2; none below 0.2 on 26 mesh sizes from 12 to 400 elements, 1 of 2262 on 260
 !! (estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
 !! to 50 times the error (10th to 90th percentile).
 !!
@@ -129,8 +129,7 @@ contains
     !! edge_in_contact: an end of the base is in contact (summary_t), which limits a
     !! uniform mesh to first order (formal_order). A mesh of fewer than min_estimate_elements
     !! elements gets no estimate.
-    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution, design, &
-                               located_floors)
+    subroutine estimate_errors(m, d, e, known, edge_in_contact, cache, solution, design)
         type(model_t), intent(in) :: m            !! the model
         type(discretization_t), intent(in) :: d   !! the case's own discretisation
         type(entry_t), intent(inout) :: e(:)      !! the key results, updated
@@ -144,26 +143,21 @@ contains
         !> the case's design table: the shortfall of its station extremes is added
         !! (extreme_estimates)
         type(station_table_t), intent(in), optional :: design
-        !> per entry, the least estimate of a contact extent where its boundary was located
-        !! and a node moved onto it (ADAPT: the node's distance from the located boundary),
-        !! instead of half the element beyond the node (extent_floors)
-        real(dp), intent(in), optional :: located_floors(:)
         type(estimate_family_t) :: fam
-        real(dp), allocatable :: floors(:)
         logical :: edge
         if (d%msh%ne < min_estimate_elements) return
         edge = .false.
         if (present(edge_in_contact)) edge = edge_in_contact
         call estimate_family(m, d, edge, fam, known, cache, solution)
         if (.not. fam%ok) return
-        floors = extent_floors(m, d%msh, e)
-        if (present(located_floors)) floors = located_floors
         if (fam%refined) then
-            call refined_estimate(m, e, fam%ec, fam%ef, floors, fam%on_nodes, fam%edge)
+            call refined_estimate(m, e, fam%ec, fam%ef, extent_floors(m, d%msh, e), &
+                                  fam%on_nodes, fam%edge)
             if (allocated(fam%e4)) call pre_asymptotic(m, e, fam%ec, fam%e4, fam%on_nodes, &
                                                        fam%edge)
         else
-            call attach_estimates(m, e, fam%ec, fam%ef, 2.0_dp, floors, fam%on_nodes, fam%edge)
+            call attach_estimates(m, e, fam%ec, fam%ef, 2.0_dp, extent_floors(m, d%msh, e), &
+                                  fam%on_nodes, fam%edge)
         end if
         if (present(design)) call add_sampling_errors(m, design, e, fam%ef, d%msh%x)
         call widen_unresolved_moments(e)
