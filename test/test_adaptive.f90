@@ -32,6 +32,7 @@ module test_adaptive
                                  widen_unresolved_moments
     use station_results, only: station_table_t
     use station_columns, only: Q_X, Q_W, Q_M, Q_Q, n_quantities
+    use test_report_writer, only: file_text
     use case_scales, only: scales_t, case_scale_factors
     use summary_table, only: entry_t
     use shape_functions, only: INTERP_P1, INTERP_P2, INTERP_S2
@@ -1108,6 +1109,12 @@ contains
         call check(err, json_has(dir//'/adapt.txt', 'mesh adapted (ADAPT tol  5.00E-02, '// &
                                  'max_elements 64): ', -1, ' cycles, final N_e = '), &
                    'ADAPT deck: the report does not state the adaptation')
+        if (allocated(err)) return
+        ! the record describes ADAPT's own estimate, not the MESH estimate it does not have
+        call check(err, index(file_text(dir//'/adapt.html'), 'estimated error: the adapted '// &
+                   'mesh (N_e elements) coarsened twice') > 0 .and. index(file_text(dir// &
+                   '/adapt.html'), 'the case re-solved on its mesh with every element') == 0, &
+                   'ADAPT deck: the HTML record names the wrong estimate method')
         call execute_command_line('rm -rf '//dir)
     end subroutine test_adapted_files
 

@@ -17,7 +17,7 @@ module test_report_writer
     use blas_threads, only: set_blas_threads, blas_thread_count
     implicit none
     private
-    public :: collect_report_writer
+    public :: collect_report_writer, file_text
 
     character(len=*), parameter :: dir = 'build/test_output'
 

@@ -200,7 +200,7 @@ contains
         end do
         write (u, '(a)') '</tbody>'
         write (u, '(a)') '</table>'
-        call write_result_notes(u, e, estimated)
+        call write_result_notes(u, e, estimated, m%mesh%adapt_tol > 0.0_dp)
         call write_intervals(u, m, s)
         write (u, '(a)') '</section>'
     end subroutine write_results
@@ -231,13 +231,14 @@ contains
                        cell(html_unit(v%unit), 'key')//cell(where, 'num')//cell(error))
     end function result_row
 
-    subroutine write_result_notes(u, e, estimated)
+    subroutine write_result_notes(u, e, estimated, adapted)
         integer, intent(in) :: u
         type(entry_t), intent(in) :: e(:)
         logical, intent(in) :: estimated
+        logical, intent(in) :: adapted   !! the mesh was adapted (ADAPT): its own estimate
         if (estimated) then
             write (u, '(a)') '<p class="small">'// &
-                escaped(error_method_text(.false.))//'</p>'
+                escaped(error_method_text(adapted))//'</p>'
         else
             write (u, '(a)') '<p class="small">No error estimate: '// &
                 escaped(no_estimate_reason())//'.</p>'
