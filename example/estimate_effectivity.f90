@@ -122,6 +122,9 @@ program estimate_effectivity
         if (arg(1:6) == 'ADAPT=') then
             read (arg(7:), *) adapt_tol
             ne_tested(1) = adapt_start_ne
+            if (command_argument_count() >= 3) call get_command_argument(3, dump_file)
+            if (trim(dump_file) /= '-') error stop 'estimate_effectivity: ADAPT=TOL '// &
+                'takes no raw file (give - as RAW)'
         else
             read (arg, *) ne_tested(1)
         end if
@@ -623,15 +626,25 @@ contains
                         if (trim(keys(k)) == 'shear_force_max') raw(9, k) = abs(raw(9, k))
                     end if
                 end if
-                q(k) = c%entries(i)%value
-                if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))
+                call take_key(c%entries(i), k, q, err_est, has_est)
                 defined(k) = c%entries(i)%defined
                 singular(k) = c%entries(i)%singular
-                has_est(k) = c%entries(i)%has_error
-                err_est(k) = c%entries(i)%error
             end do
         end do
     end subroutine key_values
+
+    !> Entry e as key k of the study: its value (the largest shear force by its magnitude),
+    !! its estimate and whether it has one.
+    subroutine take_key(e, k, q, err_est, has_est)
+        type(entry_t), intent(in) :: e
+        integer, intent(in) :: k
+        real(dp), intent(inout) :: q(n_keys), err_est(n_keys)
+        logical, intent(inout) :: has_est(n_keys)
+        q(k) = e%value
+        if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))
+        has_est(k) = e%has_error
+        err_est(k) = e%error
+    end subroutine take_key
 
     !> The key results on the case's mesh coarsened twice (every other node removed, the ends
     !! and the load positions kept; 0 where undefined or not solved).
@@ -824,10 +837,7 @@ contains
         do i = 1, size(c%entries)
             do k = 1, n_keys
                 if (trim(c%entries(i)%key) /= trim(keys(k))) cycle
-                q(k) = c%entries(i)%value
-                if (trim(keys(k)) == 'shear_force_max') q(k) = abs(q(k))
-                has_est(k) = c%entries(i)%has_error .and. .not. c%entries(i)%singular
-                err_est(k) = c%entries(i)%error
+                call take_key(c%entries(i), k, q, err_est, has_est)
             end do
         end do
     end subroutine adapted_values

@@ -20,7 +20,7 @@ module applied_loads
         integer :: line = 0            !! deck line of the card (for messages)
     end type load_t
 
-    public :: total_vertical_load, has_concentrated_load, load_positions
+    public :: total_vertical_load, has_concentrated_load, load_positions, point_like_positions
 
 contains
 
@@ -54,4 +54,16 @@ contains
             if (loads(i)%kind == LOAD_PATCH) x = [x, loads(i)%x2]
         end do
     end function load_positions
+
+    !> Positions of the loads that act at a point of the base (POINT, RING, MOMENT: a kink or
+    !! a jump of the fields there) [L], in card order.
+    pure function point_like_positions(loads) result(x)
+        type(load_t), intent(in) :: loads(:)   !! the LOAD cards
+        real(dp), allocatable :: x(:)
+        integer :: i
+        allocate (x(0))
+        do i = 1, size(loads)
+            if (loads(i)%kind /= LOAD_PATCH) x = [x, loads(i)%x1]
+        end do
+    end function point_like_positions
 end module applied_loads

@@ -9,30 +9,27 @@
 !! (where the three converge monotonically), limited to [1, 2] and to the key's formal order
 !! (formal_order), the error of Q_1 is estimated as
 !!     E = max(1.25 |Q_1 - Q_f| 2^p / (2^p - 1), |Q_c - Q_1| / 4).
-!! The first term is the Richardson error of Q_1 from the finer pair with Roache's factor of
-!! safety 1.25; the second keeps the
-!! estimate from collapsing where the fine pair happens to agree (a boundary that stays in one
-!! element). The contact extent moves by whole nodes: its estimate is at least half the
-!! element beyond the last node in contact (at an end of the base, the end element). The
-!! keys that are extremes of a station field then get three additions
-!! (extreme_estimates, both estimates): the shortfall of an extreme lying between two
-!! stations (the shear force's too), the settlement at a load inside an element, and a
-!! wider estimate for an extreme moment the meshes do not resolve. Where the mesh coarsened
-!! twice shows the coarse meshes short of the asymptotic range, the estimate is at least the
-!! coarse difference (pre_asymptotic). Where a
-!! concentrated load lies inside the base, or the mesh has more than 128 elements, the
-!! estimate is at least half the change to the meshes of N_e - 1 and N_e + 1 elements of the
-!! same grading (neighbour_floor): nested meshes keep the load's place in its element (and
-!! the point d's, a peak's or a lift-off boundary's), and an error tied to that place does
-!! not show in them. Where the case's mesh has at most 128 elements, it is also solved on the
-!! mesh cut in two twice (4 N_e, where that fits in memory), and each estimate is at least
-!! the key's change to it (twice_refined_floor): on coarse meshes N_e/4 to 2 N_e can stall
-!! before the values fall further. A mesh of fewer than 16 elements gets no estimate
-!! (min_estimate_elements). Measured on 64 cases, 11335 results on 20, 40 and 80 elements
-!! (output/bench/estimate_effectivity.md): 93.4 % within 0.5 to 5 times the true error, none
-!! below 0.2; none below 0.2 on 26 mesh sizes from 12 to 400 elements, 1 of 2262 on 260
-!! (estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3
-!! to 50 times the error (10th to 90th percentile).
+!! The first term is the Richardson error of Q_1 from the finer pair with Roache's factor of safety
+!! 1.25; the second keeps the estimate from collapsing where the fine pair happens to agree (a
+!! boundary that stays in one element). The contact extent moves by whole nodes: its estimate is at
+!! least half the element beyond the last node in contact (at an end of the base, the end element).
+!! The keys that are extremes of a station field then get three additions (extreme_estimates, both
+!! estimates): the shortfall of an extreme lying between two stations (the shear force's too), the
+!! settlement at a load inside an element, and a wider estimate for an extreme moment the meshes do
+!! not resolve. Where the mesh coarsened twice shows the coarse meshes short of the asymptotic
+!! range, the estimate is at least the coarse difference (pre_asymptotic). Where a concentrated load
+!! lies inside the base, or the mesh has more than 128 elements, the estimate is at least half the
+!! change to the meshes of N_e - 1 and N_e + 1 elements of the same grading (neighbour_floor):
+!! nested meshes keep the load's place in its element (and the point d's, a peak's or a lift-off
+!! boundary's), and an error tied to that place does not show in them. Where the case's mesh has at
+!! most 128 elements, it is also solved on the mesh cut in two twice (4 N_e, where that fits in
+!! memory), and each estimate is at least the key's change to it (twice_refined_floor): on coarse
+!! meshes N_e/4 to 2 N_e can stall before the values fall further. A mesh of fewer than 16 elements
+!! gets no estimate (min_estimate_elements). Measured on 64 cases, 11335 results on 20, 40 and 80
+!! elements (output/bench/estimate_effectivity.md): 93.4 % within 0.5 to 5 times the true error,
+!! none below 0.2; none below 0.2 on 26 mesh sizes from 12 to 400 elements, 1 of 2262 on 260
+!! (estimate_effectivity_other_meshes.md); the estimates from coarser meshes only gave 0.3 to 50
+!! times the error (10th to 90th percentile).
 !!
 !! The refined solve starts its Newton method from the case's solution (solve_contact,
 !! start) and costs 2 to 4 times the case, the two neighbours about one case each, the solve

@@ -44,8 +44,8 @@
 !!    |M_opposite| + E_opposite.
 module extreme_estimates
     use kinds, only: dp
-    use model, only: model_t, LOAD_POINT, LOAD_RING, LOAD_MOMENT
-    use applied_loads, only: load_positions
+    use model, only: model_t, LOAD_POINT, LOAD_RING
+    use applied_loads, only: load_positions, point_like_positions
     use station_columns, only: Q_X, Q_W, Q_M, Q_Q
     use station_results, only: station_table_t
     use summary_table, only: entry_t, entry_index
@@ -119,18 +119,11 @@ contains
         type(model_t), intent(in) :: m
         logical, intent(in) :: shear
         real(dp), allocatable :: x(:)
-        integer :: i
         if (shear) then
             x = load_positions(m%loads)
-            return
+        else
+            x = point_like_positions(m%loads)
         end if
-        allocate (x(0))
-        do i = 1, size(m%loads)
-            select case (m%loads(i)%kind)
-            case (LOAD_POINT, LOAD_RING, LOAD_MOMENT)
-                x = [x, m%loads(i)%x1]
-            end select
-        end do
     end function kink_positions
 
     !> The field at a load xp inside the element [x(2), x(3)] continued from the node nearer
