@@ -20,7 +20,7 @@ module applied_loads
         integer :: line = 0            !! deck line of the card (for messages)
     end type load_t
 
-    public :: total_vertical_load, has_concentrated_load, load_positions, point_like_positions
+    public :: total_vertical_load, has_concentrated_load, load_positions
 
 contains
 
@@ -43,27 +43,23 @@ contains
     end function total_vertical_load
 
     !> Positions of point loads, rings, moments and patch edges (attractors of LOADS grading)
-    !! [L], in card order.
-    pure function load_positions(loads) result(x)
+    !! [L], in card order; without the patch edges where patches is false (the POINT, RING and
+    !! MOMENT loads alone: a kink or a jump of the fields there).
+    pure function load_positions(loads, patches) result(x)
         type(load_t), intent(in) :: loads(:)   !! the LOAD cards
+        logical, intent(in), optional :: patches   !! with the patch edges (default true)
         real(dp), allocatable :: x(:)
+        logical :: with_patches
         integer :: i
+        with_patches = .true.
+        if (present(patches)) with_patches = patches
         allocate (x(0))
         do i = 1, size(loads)
-            x = [x, loads(i)%x1]
-            if (loads(i)%kind == LOAD_PATCH) x = [x, loads(i)%x2]
+            if (loads(i)%kind /= LOAD_PATCH) then
+                x = [x, loads(i)%x1]
+            else if (with_patches) then
+                x = [x, loads(i)%x1, loads(i)%x2]
+            end if
         end do
     end function load_positions
-
-    !> Positions of the loads that act at a point of the base (POINT, RING, MOMENT: a kink or
-    !! a jump of the fields there) [L], in card order.
-    pure function point_like_positions(loads) result(x)
-        type(load_t), intent(in) :: loads(:)   !! the LOAD cards
-        real(dp), allocatable :: x(:)
-        integer :: i
-        allocate (x(0))
-        do i = 1, size(loads)
-            if (loads(i)%kind /= LOAD_PATCH) x = [x, loads(i)%x1]
-        end do
-    end function point_like_positions
 end module applied_loads

@@ -45,7 +45,7 @@
 module extreme_estimates
     use kinds, only: dp
     use model, only: model_t, LOAD_POINT, LOAD_RING
-    use applied_loads, only: load_positions, point_like_positions
+    use applied_loads, only: load_positions
     use station_columns, only: Q_X, Q_W, Q_M, Q_Q
     use station_results, only: station_table_t
     use summary_table, only: entry_t, entry_index
@@ -119,11 +119,7 @@ contains
         type(model_t), intent(in) :: m
         logical, intent(in) :: shear
         real(dp), allocatable :: x(:)
-        if (shear) then
-            x = load_positions(m%loads)
-        else
-            x = point_like_positions(m%loads)
-        end if
+        x = load_positions(m%loads, patches=shear)
     end function kink_positions
 
     !> The field at a load xp inside the element [x(2), x(3)] continued from the node nearer
